@@ -1,0 +1,83 @@
+#pragma once
+// *CURVE and *FUNCTION: tabulated curves and compiled expressions, looked up by id.
+// Expression syntax (IMPETUS reference, §8): + - * / ^, && || == != < <= > >=, parentheses,
+// numbers in E-notation, built-in values, math intrinsics (trig in degrees, *r variants in
+// radians), crv(cid, x), fcn(fid) and fcn(fid, x).
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "abut/core/error.hpp"
+
+namespace abut {
+
+// The values an expression may read. A use site fills what it knows (e.g. the contact fills
+// pres and vtang); everything else stays 0.
+struct Variables {
+  double t = 0.0;      // time
+  double dt = 0.0;     // time step
+  double term = 0.0;   // termination time
+  double x = 0.0, y = 0.0, z = 0.0;  // current coordinates
+  double X = 0.0, Y = 0.0, Z = 0.0;  // initial coordinates
+  double vx = 0.0, vy = 0.0, vz = 0.0;
+  double xnorm = 0.0, ynorm = 0.0, znorm = 0.0;  // surface normal
+  double pres = 0.0;   // contact pressure
+  double vtang = 0.0;  // tangential sliding speed
+  double T = 0.0;      // temperature
+  double epsp = 0.0, sigy0 = 0.0, dmg = 0.0, eint = 0.0;
+  double wi = 0.0, we = 0.0, wk = 0.0;  // internal, external, kinetic energy
+};
+
+// A tabulated curve y(x): linear interpolation, constant beyond the first and last points.
+struct Curve {
+  std::vector<double> x, y;  // abscissas strictly increasing, scale factors already applied
+  double value(double at) const;
+};
+
+// Opaque handle to a curve or function in a FunctionTable (cheap to copy, fast to evaluate).
+struct FunctionRef {
+  std::int32_t index = -1;
+  bool valid() const { return index >= 0; }
+};
+
+class FunctionTable {
+ public:
+  FunctionTable();
+  ~FunctionTable();
+  FunctionTable(FunctionTable&&) noexcept;
+  FunctionTable& operator=(FunctionTable&&) noexcept;
+
+  // Registration while reading the deck. A duplicate id (curve and function share one id
+  // space) is an InputError at `where`. Expressions are compiled here: a syntax error or an
+  // unsupported name is an InputError at `where`.
+  void add_curve(std::int64_t id, Curve curve, const SourceLocation& where);
+  void add_function(std::int64_t id, const std::string& expression, const SourceLocation& where);
+
+  // Checks that every crv()/fcn() reference exists and that functions do not call themselves
+  // recursively; errors name the function's own location.
+  void resolve();
+
+  bool contains(std::int64_t id) const;
+  // The handle for an id; InputError at `where` if there is none.
+  FunctionRef find(std::int64_t id, const SourceLocation& where) const;
+  bool is_curve(FunctionRef ref) const;
+  // Does the expression read this variable name (e.g. "pres")? False for curves.
+  bool uses(FunctionRef ref, const std::string& variable) const;
+
+  // A curve is evaluated at `abscissa`; a function evaluates its expression with `vars`
+  // (its own abscissa being t, x or whichever variable it names).
+  double value(FunctionRef ref, double abscissa, const Variables& vars) const;
+  // Convenience for time-dependent use: curves at vars.t.
+  double value(FunctionRef ref, const Variables& vars) const { return value(ref, vars.t, vars); }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Evaluates a constant expression (no variables), used for `[expression]` in decks and
+// *PARAMETER. Throws InputError (without location; the caller adds it) on any error.
+double evaluate_constant_expression(const std::string& expression);
+
+}  // namespace abut

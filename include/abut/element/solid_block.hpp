@@ -1,0 +1,68 @@
+#pragma once
+// A block of 8-node hexahedra of one part and one deformable material: one-point integration
+// with Flanagan-Belytschko hourglass control and an objective stress update.
+//
+// Time stepping contract (central difference): at step n the solver passes coordinates x^n and
+// velocities v^{n-1/2}; update() advances the stress from t^{n-1} to t^n with the velocity
+// gradient of v^{n-1/2} (over dt = t^n - t^{n-1}) and computes element nodal forces from the
+// stress at x^n. Forces are stored per element (24 values: node a, direction i at e*24+a*3+i)
+// and are the forces acting ON the nodes (i.e. minus the internal force vector), so that the
+// solver can assemble them node by node in a fixed order (bitwise identical for any thread count).
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "abut/material/material.hpp"
+#include "abut/mesh/mesh.hpp"
+
+namespace abut {
+
+struct NodalState {
+  const double* x;  // current coordinates x^n
+  const double* y;
+  const double* z;
+  const double* vx;  // velocities v^{n-1/2}
+  const double* vy;
+  const double* vz;
+};
+
+struct BlockStep {
+  double internal_energy = 0.0;   // cumulative strain energy of the block (work of stresses)
+  double hourglass_energy = 0.0;  // cumulative work of the hourglass forces
+  double stable_step = 0.0;       // smallest element stable time step at x^n (no scale factor)
+};
+
+class SolidBlock {
+ public:
+  // `reference` holds the initial coordinates (needed by total-Lagrangian hyperelasticity).
+  SolidBlock(std::int64_t part_id, const MaterialParams& material, std::vector<Hex8> hexes,
+             const Nodes& reference);
+  ~SolidBlock();
+  SolidBlock(SolidBlock&&) noexcept;
+  SolidBlock& operator=(SolidBlock&&) noexcept;
+
+  std::int64_t part_id() const;
+  const std::vector<Hex8>& hexes() const;
+  std::size_t size() const;
+
+  // Adds the lumped mass (rho * V0 / 8 to each node) of every element to nodal_mass.
+  void add_lumped_mass(std::vector<double>& nodal_mass) const;
+  // Stable time step at the initial configuration (no scale factor).
+  double initial_stable_step(const Nodes& reference) const;
+
+  // One step, see the contract above. dt == 0 (the first call) computes forces without
+  // advancing the stress. Throws InstabilityError naming the element id source index when an
+  // element inverts (volume <= 0) or produces a non-finite value.
+  BlockStep update(const NodalState& state, double dt);
+  const std::vector<double>& element_forces() const;
+
+  // Per-element results at the last update (for output).
+  void von_mises_stress(std::vector<double>& out) const;  // resized to size()
+  void pressure(std::vector<double>& out) const;          // p = -trace(sigma)/3
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace abut

@@ -1,0 +1,48 @@
+#pragma once
+// Material parameters as read from the deck (plain values, deck units).
+#include <array>
+#include <cstdint>
+#include <variant>
+
+namespace abut {
+
+// *MAT_ELASTIC: isotropic linear elasticity (objective rate form for large rotations).
+struct ElasticParams {
+  double density = 0.0;
+  double young = 0.0;
+  double poisson = 0.0;
+};
+
+// *MAT_MOONEY_RIVLIN (IMPETUS form): deviatoric Mooney-Rivlin on the eigenvalues of dev C,
+// pressure p = -K*eps_v, plus up to four viscous terms
+//   sigma_v = sum_k (2 alpha_k / beta_k) int_0^t dev(eps_dot)(tau) exp((tau - t)/beta_k) dtau.
+// A term with alpha_k > 0 and beta_k == 0 is the limit beta -> 0: sigma_v = 2 alpha_k dev(eps_dot).
+struct MooneyRivlinParams {
+  double density = 0.0;
+  double bulk = 0.0;
+  double c1 = 0.0;
+  double c2 = 0.0;
+  std::array<double, 4> alpha{};
+  std::array<double, 4> beta{};
+};
+
+// *MAT_RIGID: the part moves as one rigid body; only the density matters.
+struct RigidParams {
+  double density = 0.0;
+};
+
+using MaterialParams = std::variant<ElasticParams, MooneyRivlinParams, RigidParams>;
+
+inline double density_of(const MaterialParams& m) {
+  return std::visit([](const auto& p) { return p.density; }, m);
+}
+inline bool is_rigid(const MaterialParams& m) { return std::holds_alternative<RigidParams>(m); }
+
+// Initial linear bulk and shear moduli (for wave speeds, time step and contact stiffness).
+struct ElasticModuli {
+  double bulk = 0.0;
+  double shear = 0.0;
+};
+ElasticModuli initial_moduli(const MaterialParams& m);
+
+}  // namespace abut

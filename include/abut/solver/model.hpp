@@ -1,0 +1,165 @@
+#pragma once
+// The model: everything a deck describes, resolved to plain data (deck units). The deck reader
+// (src/io) builds it; the solver runs it. Ids are the user's ids; node references are indices.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "abut/core/error.hpp"
+#include "abut/core/functions.hpp"
+#include "abut/core/units.hpp"
+#include "abut/material/material.hpp"
+#include "abut/mesh/geometry.hpp"
+#include "abut/mesh/mesh.hpp"
+
+namespace abut {
+
+// *TIME
+struct TimeControl {
+  double end_time = 0.0;         // t_term
+  double step_scale = 0.9;       // sf_dt
+  double min_step = 0.0;         // dt_min: the run stops if the stable step falls below it
+  double max_step = 1e10;        // dt_max
+  double start_time = 0.0;       // t_start
+};
+
+// *OUTPUT (0 = the reference default: t_term/100 for states, t_term/1000 for histories)
+struct OutputControl {
+  double state_interval = 0.0;
+  double history_interval = 0.0;
+};
+
+struct Material {
+  std::int64_t id = 0;
+  MaterialParams params;
+  SourceLocation where;
+};
+
+struct Part {
+  std::int64_t id = 0;
+  std::string title;
+  std::int64_t material_id = 0;
+  SourceLocation where;
+};
+
+struct NodeSet {
+  std::int64_t id = 0;
+  std::vector<std::int32_t> nodes;  // node indices
+};
+
+struct PartSet {
+  std::int64_t id = 0;
+  std::vector<std::int64_t> parts;  // part ids
+};
+
+// An `entype, enid` pair of the deck.
+enum class EntityType { Node, NodeSet, Part, PartSet, All, Geometry };
+struct EntityRef {
+  EntityType type = EntityType::All;
+  std::int64_t id = 0;
+  SourceLocation where;
+};
+
+// One `pmeth, direc, cid, sf, fid` line of *BC_MOTION.
+struct PrescribedMotion {
+  enum class Kind { Acceleration, Velocity, Displacement } kind = Kind::Velocity;
+  int direction = 0;   // 0..2 = X, Y, Z; 3..5 = RX, RY, RZ (rigid parts only)
+  FunctionRef curve;   // value as a function of time
+  double scale = 1.0;
+  FunctionRef activation;  // optional: motion acts while this is > 0
+  SourceLocation where;
+};
+
+// *BC_MOTION
+struct MotionBoundary {
+  std::int64_t id = 0;
+  EntityRef entity;
+  std::uint8_t fixed_translation = 0;  // DofMask bits
+  std::uint8_t fixed_rotation = 0;     // DofMask bits (x, y, z rotations), rigid parts only
+  double begin_time = 0.0;
+  double end_time = 1e10;
+  std::vector<PrescribedMotion> motions;
+  SourceLocation where;
+};
+
+// *LOAD_GRAVITY: the curve gives the acceleration component along `direction` (0..2).
+struct Gravity {
+  int direction = 2;
+  FunctionRef curve;
+  double scale = 1.0;
+  SourceLocation where;
+};
+
+// *CONTACT, field by field (seed 000; keyword reference §6). Optional fields are empty when
+// the deck leaves them out, so that the contact code applies the documented defaults.
+struct ContactSpec {
+  std::int64_t id = 0;
+  std::string title;
+  int accuracy_level = 2;
+  bool accuracy_edge = false;
+  EntityRef surface1, surface2;
+  double friction = 0.0;                   // used when friction_function is invalid
+  FunctionRef friction_function;           // mu = fcn(fid)
+  std::optional<double> penalty;           // pfac; automatic when empty
+  double begin_time = 0.0;
+  double end_time = 1e20;
+  bool merge = false;
+  double damping = 0.1;                    // fraction of critical damping
+  std::optional<std::int64_t> initial_geometry;  // gid_0
+  std::optional<std::int64_t> moving_geometry;   // gid_1
+  double initial_offset = 0.0;             // delta0_offset
+  std::optional<double> initial_max;       // delta0_max (default 4% of element thickness)
+  double edge_tolerance = 0.0;             // delta_edge
+  FunctionRef wear1, wear2, thermal;       // fid_wear1, fid_wear2, fid_thermal
+  double edge_angle = 20.0;                // alpha_edge [degrees]
+  bool one_way = false;
+  bool no_internal = false;
+  std::optional<double> stick_stress;      // sigma_stick
+  bool friction_heat = false;
+  SourceLocation where;
+};
+
+// A geometry of *GEOMETRY_* with its id.
+struct GeometryEntry {
+  std::int64_t id = 0;
+  Geometry geometry;
+  SourceLocation where;
+};
+
+struct Model {
+  std::string title;
+  std::string deck_path;
+  std::optional<UnitSystem> units;  // set by *UNIT_SYSTEM
+  TimeControl time;
+  OutputControl output;
+
+  Mesh mesh;
+  std::vector<Material> materials;
+  std::vector<Part> parts;
+  std::vector<NodeSet> node_sets;
+  std::vector<PartSet> part_sets;
+  std::vector<GeometryEntry> geometries;
+  FunctionTable functions;
+
+  // Initial nodal velocities (*INITIAL_VELOCITY already applied), one entry per node.
+  std::vector<double> vx0, vy0, vz0;
+
+  std::vector<MotionBoundary> motions;
+  std::vector<Gravity> gravity;
+  std::vector<ContactSpec> contacts;
+
+  // Look-ups by user id; nullptr when absent.
+  const Part* find_part(std::int64_t id) const;
+  const Material* find_material(std::int64_t id) const;
+  const GeometryEntry* find_geometry(std::int64_t id) const;
+  const MaterialParams& material_of_part(std::int64_t part_id) const;
+
+  // Node indices of an entity (sorted, unique); InputError at the entity's location if the
+  // id does not exist.
+  std::vector<std::int32_t> nodes_of(const EntityRef& entity) const;
+  // Part ids of an entity of type Part, PartSet or All.
+  std::vector<std::int64_t> parts_of(const EntityRef& entity) const;
+};
+
+}  // namespace abut
