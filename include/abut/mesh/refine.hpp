@@ -1,0 +1,35 @@
+#pragma once
+// *CHANGE_P-ORDER and *SMOOTH_MESH. Until true higher-order elements exist, raising the order
+// of a hex to p splits it into p x p x p hexes (the nodal resolution of an order-p element).
+// New nodes on the exterior follow the exact shape of generated components and, where
+// *SMOOTH_MESH applies, a smooth surface through the original exterior nodes.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "abut/mesh/geometry.hpp"
+#include "abut/mesh/mesh.hpp"
+
+namespace abut {
+
+struct OrderChange {          // one line of *CHANGE_P-ORDER, resolved
+  std::vector<std::int64_t> parts;
+  int order = 1;              // 1, 2 or 3
+  std::optional<Geometry> region;  // gid: only hexes whose centroid is inside
+};
+
+struct SurfaceSmoothing {     // *SMOOTH_MESH, or the alpha_max of *PART, resolved
+  std::vector<std::int64_t> parts;
+  double max_angle = 0.0;     // degrees: smooth across edges whose face normals differ less
+  bool internal = false;
+  std::optional<Geometry> region;
+};
+
+// Applies all smoothing and order changes of the deck to the mesh (node and hex ids of new
+// entities continue after the largest existing ones). Returns one plain-English note per
+// action for the user (e.g. "part 1: 189 hexes split 3x3x3 into 5103 (order 3 ...)").
+std::vector<std::string> refine_and_smooth(Mesh& mesh, const std::vector<OrderChange>& orders,
+                                           const std::vector<SurfaceSmoothing>& smoothing);
+
+}  // namespace abut
