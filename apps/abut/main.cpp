@@ -1,10 +1,94 @@
-// abut command-line program (placeholder until the solver lands).
+// abut: the command-line program. Thin: reads the deck, runs or describes the model.
+// Exit codes: 0 success, 2 input error (message names file and line), 3 unstable run.
 #include <CLI/CLI.hpp>
-#include <cstdio>
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <iostream>
+
+#include "abut/core/error.hpp"
+#include "abut/io/deck.hpp"
+#include "abut/io/run.hpp"
+#include "abut/solver/simulation.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path default_output_dir(const fs::path& deck) {
+  return deck.parent_path() / (deck.stem().string() + "_out");
+}
+
+void print_info(const abut::Model& model, std::ostream& out) {
+  const abut::Simulation sim(model);
+  out << fmt::format("deck:       {}\n", model.deck_path);
+  if (!model.title.empty()) out << fmt::format("title:      {}\n", model.title);
+  out << fmt::format("units:      {}\n", model.units ? std::string(abut::unit_system_name(*model.units))
+                                                     : std::string("not stated (*UNIT_SYSTEM)"));
+  out << fmt::format("mesh:       {} nodes, {} hexahedra\n", model.mesh.nodes.size(), model.mesh.hex_count());
+  out << fmt::format("time:       end {:.6g}, step scale {}, initial stable step {:.4g} ({})\n",
+                     model.time.end_time, model.time.step_scale, sim.initial_time_step(), sim.time_step_limit());
+  out << "parts:\n";
+  for (const abut::PartState& p : sim.part_states())
+    out << fmt::format("  {:>6}  {:<20} {:>8} elements  mass {:.6g}{}\n", p.part_id,
+                       p.title.empty() ? "-" : p.title, p.element_count, p.mass, p.rigid ? "  (rigid)" : "");
+  out << fmt::format("contacts:   {}\n", model.contacts.size());
+  for (const abut::ContactSpec& c : model.contacts)
+    out << fmt::format("  {:>6}  {}\n", c.id, c.title.empty() ? "-" : c.title);
+  out << fmt::format("boundary motions: {}, gravity loads: {}\n", model.motions.size(), model.gravity.size());
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"abut: contact-centred explicit finite-element solver"};
-  app.set_version_flag("--version", ABUT_VERSION);
+  CLI::App app{"abut: explicit finite-element solver built around contact"};
+  app.set_version_flag("--version", std::string("abut ") + ABUT_VERSION);
+  app.require_subcommand(1);
+
+  std::string deck;
+  std::string output;
+  int threads = 0;
+  bool quiet = false;
+  CLI::App* run = app.add_subcommand("run", "Run a deck; writes a ParaView series and time histories");
+  run->add_option("deck", deck, "Input deck (IMPETUS keyword syntax)")->required()->check(CLI::ExistingFile);
+  run->add_option("-o,--output", output, "Output directory (default: <deck stem>_out beside the deck)");
+  run->add_option("--threads", threads, "Number of threads (default: all cores)")->check(CLI::PositiveNumber);
+  run->add_flag("-q,--quiet", quiet, "No progress output");
+  CLI::App* check = app.add_subcommand("check", "Parse and validate a deck; every error with file:line");
+  check->add_option("deck", deck, "Input deck")->required()->check(CLI::ExistingFile);
+  CLI::App* info = app.add_subcommand("info", "Model summary: parts, masses, contacts, stable time step");
+  info->add_option("deck", deck, "Input deck")->required()->check(CLI::ExistingFile);
   CLI11_PARSE(app, argc, argv);
-  return 0;
+
+  try {
+    abut::DeckResult result = abut::read_deck_with_notes(deck);
+    for (const std::string& note : result.notes) std::cerr << "note: " << note << "\n";
+    const abut::Model& model = result.model;
+    if (*check) {
+      const abut::Simulation sim(model);
+      std::cout << fmt::format("{}: OK ({} nodes, {} hexahedra, {} parts, initial stable step {:.4g})\n", deck,
+                               model.mesh.nodes.size(), model.mesh.hex_count(), model.parts.size(),
+                               sim.initial_time_step());
+      return 0;
+    }
+    if (*info) {
+      print_info(model, std::cout);
+      return 0;
+    }
+    abut::RunOptions options;
+    options.output_dir = output.empty() ? default_output_dir(deck) : fs::path(output);
+    options.threads = threads;
+    options.progress = !quiet;
+    const abut::RunReport report = abut::run_simulation(model, options, std::cout);
+    return report.stable ? 0 : 3;
+  } catch (const abut::InputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  } catch (const abut::InstabilityError& e) {
+    std::cerr << "error: unstable: " << e.what() << "\n";
+    return 3;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  }
 }

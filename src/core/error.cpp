@@ -3,16 +3,21 @@
 namespace abut {
 namespace {
 std::string format_location(const SourceLocation& w, const std::string& message) {
+  // Built with append(): GCC 12 warns falsely (-Wrestrict, PR 105329) on chained operator+.
   std::string s;
   if (!w.file.empty()) {
-    s += w.file;
-    if (w.line > 0) s += ":" + std::to_string(w.line);
-    s += ": ";
+    s.append(w.file);
+    if (w.line > 0) s.append(":").append(std::to_string(w.line));
+    s.append(": ");
   }
-  if (!w.keyword.empty()) s += w.keyword;
-  if (!w.field.empty()) s += (w.keyword.empty() ? "" : ", ") + std::string("field '") + w.field + "'";
-  if (!w.keyword.empty() || !w.field.empty()) s += ": ";
-  return s + message;
+  s.append(w.keyword);
+  if (!w.field.empty()) {
+    if (!w.keyword.empty()) s.append(", ");
+    s.append("field '").append(w.field).append("'");
+  }
+  if (!w.keyword.empty() || !w.field.empty()) s.append(": ");
+  s.append(message);
+  return s;
 }
 }  // namespace
 

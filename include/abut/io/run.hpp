@@ -1,0 +1,35 @@
+#pragma once
+// Runs a model to its end time and writes what a user opens afterwards:
+//   results.pvd + states/state_NNNN.vtu  (ParaView series; the final state always included)
+//   energy.csv, parts.csv                (time histories)
+//   summary.json                         (cycles, times, speed, final energies, parts)
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+
+#include "abut/solver/model.hpp"
+
+namespace abut {
+
+struct RunOptions {
+  std::filesystem::path output_dir;  // created if missing
+  int threads = 0;                   // 0: OpenMP default
+  bool progress = true;              // progress bar / lines on stderr
+};
+
+struct RunReport {
+  bool stable = true;         // false: the run went unstable and stopped early
+  std::string message;        // the instability message when !stable
+  double end_time = 0.0;
+  long long cycles = 0;
+  double wall_seconds = 0.0;
+  double ns_per_element_cycle = 0.0;
+  double energy_balance_error = 0.0;
+  std::filesystem::path pvd;  // results.pvd
+};
+
+// Throws InputError for models the solver cannot run; an instability is reported, not thrown,
+// after the last good state has been written.
+RunReport run_simulation(const Model& model, const RunOptions& options, std::ostream& log);
+
+}  // namespace abut

@@ -1,0 +1,93 @@
+#pragma once
+// Explicit central-difference time integration of a Model: lumped mass, deformable hex blocks,
+// rigid parts, boundary motions, gravity, energy bookkeeping.
+//
+// Cycle n (Belytschko, Liu & Moran, "Nonlinear Finite Elements for Continua and Structures",
+// 2000, box 6.1): forces f^n at x^n; kick v^{n+1/2} = v^{n-1/2} + dt^n a^n with
+// dt^n = (dt^{n-1/2} + dt^{n+1/2})/2; boundary motions on v^{n+1/2}; drift x^{n+1} = x^n +
+// dt^{n+1/2} v^{n+1/2}. After construction and after every advance() the state at t^n is
+// complete (positions, forces, the velocity v^n = (v^{n-1/2}+v^{n+1/2})/2, energies at t^n).
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "abut/core/vec3.hpp"
+#include "abut/solver/model.hpp"
+
+namespace abut {
+
+struct Energies {
+  double kinetic = 0.0;
+  double internal = 0.0;
+  double hourglass = 0.0;
+  double contact = 0.0;
+  double friction = 0.0;
+  double external_work = 0.0;
+  // total = kinetic + internal + hourglass + contact + friction
+  double total() const { return kinetic + internal + hourglass + contact + friction; }
+};
+
+struct PartState {
+  std::int64_t part_id = 0;
+  std::string title;
+  bool rigid = false;
+  std::size_t element_count = 0;
+  double mass = 0.0;
+  Vec3 centre_of_mass;
+  Vec3 velocity;  // of the centre of mass
+  double kinetic = 0.0;
+  double internal = 0.0;
+};
+
+class Simulation {
+ public:
+  explicit Simulation(const Model& model);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  // Advances one cycle to t^{n+1}. Throws InstabilityError when the run goes unstable; the
+  // last complete state is then still available through last_good_*().
+  void advance();
+  bool finished() const;
+
+  double time() const;
+  double end_time() const;
+  std::int64_t cycle() const;
+  double time_step() const;           // dt^{n+1/2} that the next advance() uses
+  double initial_time_step() const;   // scaled stable step at t = 0
+  std::string time_step_limit() const;  // what limits the step now (e.g. "part 2 element 17")
+
+  const Model& model() const;
+  std::size_t node_count() const;
+  // Nodal state at t^n (structure of arrays).
+  const std::vector<double>& x() const;
+  const std::vector<double>& y() const;
+  const std::vector<double>& z() const;
+  const std::vector<double>& vx() const;  // v^n
+  const std::vector<double>& vy() const;
+  const std::vector<double>& vz() const;
+  const std::vector<double>& nodal_mass() const;
+
+  // Per-hex results in Model mesh order (rigid hexes: 0).
+  void von_mises_stress(std::vector<double>& out) const;
+  void pressure(std::vector<double>& out) const;
+
+  Energies energies() const;
+  // Relative energy balance error: (total - total_0 - external_work) / max(total, total_0, |W|).
+  double energy_balance_error() const;
+  std::vector<PartState> part_states() const;
+
+  // The state saved before the step that failed (positions and velocities), for output.
+  const std::vector<double>& last_good_x() const;
+  const std::vector<double>& last_good_y() const;
+  const std::vector<double>& last_good_z() const;
+  double last_good_time() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace abut

@@ -1,0 +1,216 @@
+#include "abut/io/run.hpp"
+
+#include <omp.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fmt/format.h>
+#include <ostream>
+#include <vector>
+
+#include "abut/core/error.hpp"
+#include "abut/io/csv_history.hpp"
+#include "abut/io/json_writer.hpp"
+#include "abut/io/progress.hpp"
+#include "abut/io/vtu_writer.hpp"
+#include "abut/solver/simulation.hpp"
+
+namespace abut {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Writes one ParaView state of the simulation. `failed` marks the last good state of an
+// unstable run: positions from before the failing step, stresses left out.
+class StateWriter {
+ public:
+  StateWriter(const fs::path& dir, const Model& model)
+      : dir_(dir), model_(model), series_(dir / "results.pvd") {
+    fs::create_directories(dir / "states");
+    part_id_.reserve(model.mesh.hex_count());
+    for (const std::int64_t p : model.mesh.hex_part) part_id_.push_back(static_cast<double>(p));
+  }
+
+  void write(const Simulation& sim, bool failed) {
+    const std::vector<double>& x = failed ? sim.last_good_x() : sim.x();
+    const std::vector<double>& y = failed ? sim.last_good_y() : sim.y();
+    const std::vector<double>& z = failed ? sim.last_good_z() : sim.z();
+    const double time = failed ? sim.last_good_time() : sim.time();
+    if (x.empty()) return;  // failed before the first step: the initial state is on disk
+    if (series_.size() > 0 && time <= last_time_) return;
+    const Nodes& ref = model_.mesh.nodes;
+    const std::size_t n = ref.size();
+    displacement_.resize(3 * n);
+    velocity_.resize(3 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+      displacement_[3 * i] = x[i] - ref.x[i];
+      displacement_[3 * i + 1] = y[i] - ref.y[i];
+      displacement_[3 * i + 2] = z[i] - ref.z[i];
+      velocity_[3 * i] = sim.vx()[i];
+      velocity_[3 * i + 1] = sim.vy()[i];
+      velocity_[3 * i + 2] = sim.vz()[i];
+    }
+    std::vector<FieldView> point_fields{{"displacement", 3, displacement_}, {"velocity", 3, velocity_}};
+    std::vector<FieldView> cell_fields{{"part_id", 1, part_id_}};
+    if (!failed) {
+      sim.von_mises_stress(von_mises_);
+      sim.pressure(pressure_);
+      cell_fields.push_back({"von_mises_stress", 1, von_mises_});
+      cell_fields.push_back({"pressure", 1, pressure_});
+    }
+    const std::string name = fmt::format("states/state_{:04d}.vtu", series_.size());
+    const HexGridView grid{x, y, z, model_.mesh.hexes};
+    write_vtu(dir_ / name, grid, point_fields, cell_fields);
+    series_.add(time, name);
+    last_time_ = time;
+  }
+
+  const fs::path& pvd() const { return series_.path(); }
+  std::size_t count() const { return series_.size(); }
+
+ private:
+  fs::path dir_;
+  const Model& model_;
+  PvdSeries series_;
+  double last_time_ = 0.0;
+  std::vector<double> displacement_, velocity_, part_id_, von_mises_, pressure_;
+};
+
+class HistoryWriter {
+ public:
+  explicit HistoryWriter(const fs::path& dir)
+      : energy_(dir / "energy.csv", {"kinetic", "internal", "hourglass", "contact", "friction",
+                                     "external_work", "total", "balance_error"}),
+        parts_(dir / "parts.csv", {"part", "mass", "x", "y", "z", "vx", "vy", "vz", "kinetic", "internal"}) {}
+
+  void write(const Simulation& sim) {
+    if (written_ && sim.time() <= last_time_) return;
+    written_ = true;
+    last_time_ = sim.time();
+    const Energies e = sim.energies();
+    energy_.write_row(sim.time(), {e.kinetic, e.internal, e.hourglass, e.contact, e.friction, e.external_work,
+                                   e.total(), sim.energy_balance_error()});
+    for (const PartState& p : sim.part_states())
+      parts_.write_row(sim.time(), {static_cast<std::int64_t>(p.part_id), p.mass, p.centre_of_mass.x,
+                                    p.centre_of_mass.y, p.centre_of_mass.z, p.velocity.x, p.velocity.y,
+                                    p.velocity.z, p.kinetic, p.internal});
+  }
+
+ private:
+  CsvHistory energy_, parts_;
+  bool written_ = false;
+  double last_time_ = 0.0;
+};
+
+// Output times t_start + k * interval; due() is true once the simulation has reached the next.
+class Schedule {
+ public:
+  Schedule(double start, double interval) : next_(start), interval_(interval) {}
+  bool due(double t) {
+    if (t < next_ - 1e-9 * interval_) return false;
+    while (next_ <= t + 1e-9 * interval_) next_ += interval_;
+    return true;
+  }
+
+ private:
+  double next_, interval_;
+};
+
+void write_summary(const fs::path& path, const Simulation& sim, const RunReport& report,
+                   const Model& model, int threads) {
+  JsonWriter json;
+  json.begin_object();
+  json.member("deck", model.deck_path);
+  json.member("status", report.stable ? "completed" : "unstable");
+  if (!report.stable) json.member("message", report.message);
+  json.member("cycles", report.cycles);
+  json.member("end_time", report.end_time);
+  json.member("wall_seconds", report.wall_seconds);
+  json.member("threads", threads);
+  json.member("nodes", static_cast<std::int64_t>(model.mesh.nodes.size()));
+  json.member("elements", static_cast<std::int64_t>(model.mesh.hex_count()));
+  json.member("ns_per_element_cycle", report.ns_per_element_cycle);
+  json.member("initial_time_step", sim.initial_time_step());
+  json.member("time_step_limited_by", sim.time_step_limit());
+  const Energies e = sim.energies();
+  json.key("final_energies").begin_object();
+  json.member("kinetic", e.kinetic).member("internal", e.internal).member("hourglass", e.hourglass);
+  json.member("contact", e.contact).member("friction", e.friction).member("external_work", e.external_work);
+  json.member("total", e.total()).member("balance_error", sim.energy_balance_error());
+  json.end_object();
+  json.key("parts").begin_array();
+  for (const PartState& p : sim.part_states()) {
+    json.begin_object();
+    json.member("id", p.part_id).member("title", p.title).member("rigid", p.rigid);
+    json.member("elements", static_cast<std::int64_t>(p.element_count)).member("mass", p.mass);
+    json.end_object();
+  }
+  json.end_array();
+  json.end_object();
+  json.write_file(path);
+}
+
+}  // namespace
+
+RunReport run_simulation(const Model& model, const RunOptions& options, std::ostream& log) {
+  if (options.threads > 0) omp_set_num_threads(options.threads);
+  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+  fs::create_directories(options.output_dir);
+
+  Simulation sim(model);
+  const double t_end = model.time.end_time;
+  const double span = t_end - model.time.start_time;
+  const double state_interval = model.output.state_interval > 0 ? model.output.state_interval : span / 100.0;
+  const double history_interval = model.output.history_interval > 0 ? model.output.history_interval : span / 1000.0;
+  log << fmt::format("abut: {} nodes, {} hexahedra, {} parts; end time {:.4g}, initial time step {:.4g} ({})\n",
+                     model.mesh.nodes.size(), model.mesh.hex_count(), model.parts.size(), t_end,
+                     sim.initial_time_step(), sim.time_step_limit());
+  log << "abut: writing results to " << options.output_dir.string() << "\n";
+
+  StateWriter states(options.output_dir, model);
+  HistoryWriter histories(options.output_dir);
+  Schedule state_schedule(model.time.start_time, state_interval);
+  Schedule history_schedule(model.time.start_time, history_interval);
+  ProgressReporter progress = ProgressReporter::to_stderr(model.time.start_time, t_end);
+
+  RunReport report;
+  const auto wall_start = std::chrono::steady_clock::now();
+  try {
+    for (;;) {
+      if (history_schedule.due(sim.time())) histories.write(sim);
+      if (state_schedule.due(sim.time())) states.write(sim, false);
+      if (sim.finished()) break;
+      sim.advance();
+      if (options.progress) progress.update(sim.time(), sim.cycle());
+    }
+    histories.write(sim);  // the final time, unless it was just written
+    states.write(sim, false);
+  } catch (const InstabilityError& e) {
+    report.stable = false;
+    report.message = e.what();
+    states.write(sim, true);
+  }
+  if (options.progress) progress.finish(sim.time(), sim.cycle());
+  report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  report.end_time = sim.time();
+  report.cycles = sim.cycle();
+  const double element_cycles = static_cast<double>(model.mesh.hex_count()) * static_cast<double>(report.cycles);
+  report.ns_per_element_cycle = element_cycles > 0 ? 1e9 * report.wall_seconds / element_cycles : 0.0;
+  report.energy_balance_error = sim.energy_balance_error();
+  report.pvd = states.pvd();
+  write_summary(options.output_dir / "summary.json", sim, report, model, threads);
+
+  if (report.stable) {
+    log << fmt::format("abut: completed {} cycles to t = {:.6g} in {:.2f} s ({:.1f} ns per element-cycle, {} threads)\n",
+                       report.cycles, report.end_time, report.wall_seconds, report.ns_per_element_cycle, threads);
+    log << fmt::format("abut: energy balance error {:.3f}%\n", 100.0 * report.energy_balance_error);
+  } else {
+    log << "abut: the run went UNSTABLE and stopped: " << report.message << "\n"
+        << fmt::format("abut: the last good state (t = {:.6g}) is in the ParaView series\n", sim.last_good_time());
+  }
+  log << "abut: ParaView series: " << report.pvd.string() << " (" << states.count() << " states)\n";
+  return report;
+}
+
+}  // namespace abut

@@ -1,0 +1,32 @@
+#pragma once
+// A rigid part (*MAT_RIGID): its nodes move as one body, translation of the centre of mass
+// plus rotation. Nodal forces are reduced to a force and a moment about the centre of mass;
+// angular momentum is integrated in the spatial frame with the current inertia R I0 R^T and
+// the orientation updated by the exponential map (Rodrigues), which keeps R orthogonal.
+#include <cstdint>
+#include <vector>
+
+#include "abut/core/mat3.hpp"
+#include "abut/core/vec3.hpp"
+
+namespace abut {
+
+struct RigidBody {
+  std::int64_t part_id = 0;
+  std::vector<std::int32_t> nodes;
+  std::vector<Vec3> arm0;  // reference position of each node relative to the centre of mass
+  double mass = 0.0;
+  Mat3 inertia0;           // about the centre of mass, reference orientation
+  Vec3 centre0;            // reference centre of mass
+  Vec3 centre;             // current centre of mass
+  Vec3 velocity;           // of the centre of mass, at the half step
+  Vec3 angular_velocity;   // spatial, at the half step
+  Mat3 rotation = Mat3::identity();
+
+  // Builds the body from its nodes' reference positions and lumped masses.
+  void initialise(const std::vector<double>& x, const std::vector<double>& y,
+                  const std::vector<double>& z, const std::vector<double>& nodal_mass);
+  Mat3 spatial_inertia() const;
+};
+
+}  // namespace abut
