@@ -28,10 +28,9 @@ void append_name(std::string& line, std::string_view name) {
 
 void append_number(std::string& line, double value, bool exact) {
   std::array<char, 32> buffer{};
-  const auto result =
-      exact ? std::to_chars(buffer.data(), buffer.data() + buffer.size(), value)
-            : std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
-                            std::chars_format::general, kSignificantDigits);
+  const auto result = exact ? std::to_chars(buffer.data(), buffer.data() + buffer.size(), value)
+                            : std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
+                                            std::chars_format::general, kSignificantDigits);
   line.append(buffer.data(), result.ptr);
 }
 

@@ -43,8 +43,7 @@ ProgressReporter ProgressReporter::to_stderr(double start_time, double end_time)
 }
 
 double ProgressReporter::steady_seconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 double ProgressReporter::fraction(double time) const {
@@ -54,8 +53,8 @@ double ProgressReporter::fraction(double time) const {
 std::string ProgressReporter::status(double time, std::int64_t cycle, bool final) const {
   const double f = fraction(time);
   const double elapsed = clock_() - wall_start_;
-  std::string line = fmt::format("{:4}%  t={:.2e}  cycle {}", static_cast<int>(f * 100.0), time,
-                                 cycle);
+  std::string line =
+      fmt::format("{:4}%  t={:.2e}  cycle {}", static_cast<int>(f * 100.0), time, cycle);
   if (final) {
     line += "  wall " + clock_text(elapsed);
   } else if (f > kRoundingSlack) {

@@ -1,13 +1,12 @@
 // Base64, CSV history, JSON and progress output.
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
-#include <limits>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -144,17 +143,17 @@ TEST(JsonWriter, RealsReadBackExactly) {
 TEST(JsonWriter, RejectsMalformedUse) {
   JsonWriter a;
   a.begin_object();
-  EXPECT_THROW(a.value(1), std::logic_error);       // no key
-  EXPECT_THROW(a.end_array(), std::logic_error);    // wrong bracket
+  EXPECT_THROW(a.value(1), std::logic_error);                   // no key
+  EXPECT_THROW(a.end_array(), std::logic_error);                // wrong bracket
   EXPECT_THROW(static_cast<void>(a.text()), std::logic_error);  // not complete
   a.key("k");
-  EXPECT_THROW(a.end_object(), std::logic_error);   // key without value
+  EXPECT_THROW(a.end_object(), std::logic_error);  // key without value
   JsonWriter b;
   b.begin_array();
-  EXPECT_THROW(b.key("k"), std::logic_error);       // key in an array
+  EXPECT_THROW(b.key("k"), std::logic_error);  // key in an array
   JsonWriter c;
   c.value(1);
-  EXPECT_THROW(c.value(2), std::logic_error);       // second top-level value
+  EXPECT_THROW(c.value(2), std::logic_error);  // second top-level value
 }
 
 TEST(JsonWriter, WritesFileAtomically) {
@@ -198,7 +197,7 @@ TEST(ProgressReporter, PrintsOneLineWhenAStepCrossesSeveralTenths) {
   progress.update(1.05, 1);  // below 10 %: nothing
   progress.update(1.35, 2);  // 35 %: one line
   wall = 7300.0;
-  progress.update(1.5, 3);   // stops early: final line from finish
+  progress.update(1.5, 3);  // stops early: final line from finish
   progress.finish(1.5, 3);
   EXPECT_EQ(out.str(),
             "  35%  t=1.35e+00  cycle 2  ETA 3:42:51\n"

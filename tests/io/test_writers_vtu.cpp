@@ -28,8 +28,7 @@ std::string file_text(const std::filesystem::path& path) {
 
 // Test-side decoder (RFC 4648, section 4), independent of the writer's encoder.
 std::vector<unsigned char> base64_decode(const std::string& text) {
-  const std::string alphabet =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::vector<unsigned char> bytes;
   unsigned bits = 0;
   int nbits = 0;
@@ -73,7 +72,7 @@ std::vector<T> data_array(const std::string& vtu, const std::string& name) {
 struct TwoHexes {
   std::vector<double> x, y, z;
   std::vector<Hex8> hexes;
-  TwoHexes(double shear) {
+  explicit TwoHexes(double shear) {
     for (int k = 0; k < 2; ++k) {
       for (int j = 0; j < 2; ++j) {
         for (int i = 0; i < 3; ++i) {
@@ -83,7 +82,9 @@ struct TwoHexes {
         }
       }
     }
-    const auto n = [](int i, int j, int k) { return static_cast<std::int32_t>(i + 3 * (j + 2 * k)); };
+    const auto n = [](int i, int j, int k) {
+      return static_cast<std::int32_t>(i + 3 * (j + 2 * k));
+    };
     for (int i = 0; i < 2; ++i) {  // VTK_HEXAHEDRON order: bottom face counter-clockwise, then top
       hexes.push_back({n(i, 0, 0), n(i + 1, 0, 0), n(i + 1, 1, 0), n(i, 1, 0), n(i, 0, 1),
                        n(i + 1, 0, 1), n(i + 1, 1, 1), n(i, 1, 1)});
@@ -94,9 +95,9 @@ struct TwoHexes {
 
 std::filesystem::path output_dir() {
   const char* from_env = std::getenv("ABUT_TEST_OUTPUT_DIR");
-  const std::filesystem::path dir =
-      from_env != nullptr && *from_env != '\0' ? std::filesystem::path(from_env)
-                                               : std::filesystem::current_path() / "test_io_output";
+  const std::filesystem::path dir = from_env != nullptr && *from_env != '\0'
+                                        ? std::filesystem::path(from_env)
+                                        : std::filesystem::current_path() / "test_io_output";
   std::filesystem::create_directories(dir);
   return dir;
 }
@@ -168,8 +169,8 @@ TEST(VtuWriter, WritesTwoHexSeriesForParaView) {
 }
 
 TEST(VtuWriter, RejectsInconsistentInput) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("abut_test_vtu_" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("abut_test_vtu_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   TwoHexes mesh(0.0);
   const std::vector<double> too_short(35, 0.0);
@@ -186,9 +187,26 @@ TEST(VtuWriter, RejectsInconsistentInput) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(VtuWriter, WritesAMeshInItsReferenceConfiguration) {
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("abut_test_mesh_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const TwoHexes two(0.0);
+  Mesh mesh;
+  for (std::size_t i = 0; i < two.x.size(); ++i) {
+    mesh.nodes.add(static_cast<std::int64_t>(100 + i), {two.x[i], two.y[i], two.z[i]});
+  }
+  mesh.hexes = two.hexes;
+  write_vtu(dir / "mesh.vtu", hex_grid(mesh), {}, {});
+  const std::string vtu = file_text(dir / "mesh.vtu");
+  EXPECT_EQ(data_array<double>(vtu, "Points")[3 * 7], two.x[7]);
+  EXPECT_EQ(data_array<std::int64_t>(vtu, "connectivity")[15], two.hexes[1][7]);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(PvdSeries, RequiresIncreasingTimes) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("abut_test_pvd_" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("abut_test_pvd_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   PvdSeries series(dir / "results.pvd");
   series.add(0.5, "a.vtu");

@@ -28,6 +28,11 @@ struct HexGridView {
   std::span<const Hex8> hexes;
 };
 
+// The mesh in its reference configuration.
+inline HexGridView hex_grid(const Mesh& mesh) {
+  return {mesh.nodes.x, mesh.nodes.y, mesh.nodes.z, mesh.hexes};
+}
+
 // One named output field: `components` values per point (or per cell), interleaved, so a vector
 // field is x0 y0 z0 x1 y1 z1 ... and values.size() == count * components.
 struct FieldView {
