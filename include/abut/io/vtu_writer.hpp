@@ -1,0 +1,73 @@
+#pragma once
+// ParaView output: one VTK XML UnstructuredGrid file (.vtu) of 8-node hexahedra per state, and a
+// ParaView data collection (.pvd) that lists the states with their times.
+//
+// Format: VTK XML file format version 1.0 (docs.vtk.org, "VTK File Formats", XML section), every
+// DataArray inline with format="binary": base64 (RFC 4648) of a UInt64 byte count, followed by
+// base64 of the raw little/big-endian values (native byte order, declared in the file).
+// Points and fields are Float64, connectivity and offsets Int64, cell types UInt8.
+#include <cstddef>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "abut/mesh/mesh.hpp"
+
+namespace abut {
+
+// VTK's cell type id of the 8-node hexahedron (vtkCellType.h: VTK_HEXAHEDRON = 12).
+inline constexpr unsigned char kVtkHexahedron = 12;
+
+// Base64 encoding with the standard alphabet and '=' padding (RFC 4648, section 4).
+std::string base64_encode(std::span<const std::byte> bytes);
+
+// Points (structure of arrays, as abut::Nodes) and hexahedra by node index.
+struct HexGridView {
+  std::span<const double> x, y, z;
+  std::span<const Hex8> hexes;
+};
+
+// The mesh in its reference configuration.
+inline HexGridView hex_grid(const Mesh& mesh) {
+  return {mesh.nodes.x, mesh.nodes.y, mesh.nodes.z, mesh.hexes};
+}
+
+// One named output field: `components` values per point (or per cell), interleaved, so a vector
+// field is x0 y0 z0 x1 y1 z1 ... and values.size() == count * components.
+struct FieldView {
+  std::string name;
+  int components = 1;
+  std::span<const double> values;
+};
+
+// Writes `grid` with its point and cell fields to `path` (normally *.vtu). The file is written
+// under a temporary name and renamed, so an interrupted run never leaves a half file.
+// Throws std::invalid_argument for inconsistent sizes or node indices out of range, and
+// std::runtime_error when the file cannot be written.
+void write_vtu(const std::filesystem::path& path, const HexGridView& grid,
+               std::span<const FieldView> point_fields, std::span<const FieldView> cell_fields);
+
+// A time series of states for ParaView. After every add() the .pvd file is rewritten (atomically)
+// so the series on disk is complete up to the last state, even if the run stops.
+class PvdSeries {
+ public:
+  explicit PvdSeries(std::filesystem::path pvd_path);
+
+  // Appends the state at `time` stored in `vtu_file`, a path relative to the .pvd's directory.
+  // Times must increase strictly (ParaView would show only one of two equal times).
+  void add(double time, const std::string& vtu_file);
+
+  const std::filesystem::path& path() const { return path_; }
+  std::size_t size() const { return states_.size(); }
+
+ private:
+  struct State {
+    double time;
+    std::string file;
+  };
+  std::filesystem::path path_;
+  std::vector<State> states_;
+};
+
+}  // namespace abut
