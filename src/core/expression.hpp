@@ -15,7 +15,7 @@ namespace abut::expression {
 // The values of Variables an expression can load, by name (case-sensitive: x current, X initial).
 struct VariableField {
   std::string_view name;
-  double Variables::* member;
+  double Variables::*member;
 };
 inline constexpr VariableField kVariableFields[] = {
     {"t", &Variables::t},         {"dt", &Variables::dt},       {"term", &Variables::term},
@@ -29,12 +29,13 @@ inline constexpr VariableField kVariableFields[] = {
     {"wk", &Variables::wk},
 };
 
+// clang-format off
 enum class Op : std::uint8_t {
   // operands
-  Constant,  // push value
-  Load,      // push vars.*kVariableFields[slot].member
-  LoadR,     // push sqrt(x^2 + y^2)
-  LoadTheta, // push atan2(y, x) in degrees
+  Constant,   // push value
+  Load,       // push vars.*kVariableFields[slot].member
+  LoadR,      // push sqrt(x^2 + y^2)
+  LoadTheta,  // push atan2(y, x) in degrees
   // operators
   Negate, Add, Subtract, Multiply, Divide, Power,
   Equal, NotEqual, Less, LessEqual, Greater, GreaterEqual, And, Or,
@@ -49,12 +50,13 @@ enum class Op : std::uint8_t {
   Function,    // fcn(fid): pops nothing
   FunctionAt,  // fcn(fid, a): pops a, evaluates with t = a
 };
+// clang-format on
 
 struct Instruction {
   Op op = Op::Constant;
-  std::uint8_t argc = 0;   // Min, Max
-  std::int32_t slot = 0;   // Load: index into kVariableFields; Curve/Function*: into references
-  double value = 0.0;      // Constant
+  std::uint8_t argc = 0;  // Min, Max
+  std::int32_t slot = 0;  // Load: index into kVariableFields; Curve/Function*: into references
+  double value = 0.0;     // Constant
 };
 
 // A crv()/fcn() call; `target` is the FunctionTable index, filled by FunctionTable::resolve().

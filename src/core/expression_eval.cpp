@@ -33,97 +33,104 @@ double heaviside(double a) { return a >= 0.0 ? 1.0 : (a < 0.0 ? 0.0 : a); }
 double minimum(double a, double b) { return (a < b || std::isnan(a)) ? a : b; }
 double maximum(double a, double b) { return (a > b || std::isnan(a)) ? a : b; }
 
-// The FunctionTable entry a crv()/fcn() instruction calls.
-FunctionRef target_of(const Program& program, const Instruction& in, const FunctionTable* table) {
+// crv()/fcn() need the table and a target set by FunctionTable::resolve().
+[[noreturn]] void unresolved(const Program& program) {
+  throw std::logic_error("expression '" + program.text +
+                         "' evaluated before FunctionTable::resolve()");
+}
+const FunctionTable* table_of(const Program& program, const FunctionTable* table) {
+  if (table == nullptr) unresolved(program);
+  return table;
+}
+FunctionRef target_of(const Program& program, const Instruction& in) {
   const FunctionRef ref{program.references[static_cast<std::size_t>(in.slot)].target};
-  if (table == nullptr || !ref.valid()) {
-    throw std::logic_error("expression '" + program.text +
-                           "' evaluated before FunctionTable::resolve()");
-  }
+  if (!ref.valid()) unresolved(program);
   return ref;
 }
 
 }  // namespace
 
 double evaluate(const Program& program, const Variables& vars, const FunctionTable* table) {
-  double stack[kMaxStack];
-  double* top = stack - 1;  // points at the topmost value
+  // The topmost value lives in `top` (a register); the ones under it in `below`. The first
+  // push parks the initial 0 in below[0], so a program of depth d uses d slots.
+  double below[kMaxStack];
+  int n = 0;
+  double top = 0.0;
+  const auto push = [&](double value) {
+    below[n++] = top;
+    top = value;
+  };
+  const auto pop = [&] { return below[--n]; };
+  double a = 0.0;  // left operand of a binary operation
+  // clang-format off
   for (const Instruction& in : program.code) {
     switch (in.op) {
-      case Op::Constant: *++top = in.value; break;
-      case Op::Load: *++top = vars.*kVariableFields[in.slot].member; break;
-      case Op::LoadR: *++top = std::sqrt(vars.x * vars.x + vars.y * vars.y); break;
-      case Op::LoadTheta: *++top = std::atan2(vars.y, vars.x) * kDegreesPerRadian; break;
+      case Op::Constant: push(in.value); break;
+      case Op::Load: push(vars.*kVariableFields[in.slot].member); break;
+      case Op::LoadR: push(std::sqrt(vars.x * vars.x + vars.y * vars.y)); break;
+      case Op::LoadTheta: push(std::atan2(vars.y, vars.x) * kDegreesPerRadian); break;
 
-      case Op::Negate: *top = -*top; break;
-      case Op::Add: --top; *top = top[0] + top[1]; break;
-      case Op::Subtract: --top; *top = top[0] - top[1]; break;
-      case Op::Multiply: --top; *top = top[0] * top[1]; break;
-      case Op::Divide: --top; *top = top[0] / top[1]; break;
-      case Op::Power: --top; *top = std::pow(top[0], top[1]); break;
-      case Op::Equal: --top; *top = truth(top[0] == top[1], top[0], top[1]); break;
-      case Op::NotEqual: --top; *top = truth(top[0] != top[1], top[0], top[1]); break;
-      case Op::Less: --top; *top = truth(top[0] < top[1], top[0], top[1]); break;
-      case Op::LessEqual: --top; *top = truth(top[0] <= top[1], top[0], top[1]); break;
-      case Op::Greater: --top; *top = truth(top[0] > top[1], top[0], top[1]); break;
-      case Op::GreaterEqual: --top; *top = truth(top[0] >= top[1], top[0], top[1]); break;
-      case Op::And: --top; *top = truth(top[0] != 0.0 && top[1] != 0.0, top[0], top[1]); break;
-      case Op::Or: --top; *top = truth(top[0] != 0.0 || top[1] != 0.0, top[0], top[1]); break;
+      case Op::Negate: top = -top; break;
+      case Op::Add: top = pop() + top; break;
+      case Op::Subtract: top = pop() - top; break;
+      case Op::Multiply: top = pop() * top; break;
+      case Op::Divide: top = pop() / top; break;
+      case Op::Power: top = std::pow(pop(), top); break;
+      case Op::Equal: a = pop(); top = truth(a == top, a, top); break;
+      case Op::NotEqual: a = pop(); top = truth(a != top, a, top); break;
+      case Op::Less: a = pop(); top = truth(a < top, a, top); break;
+      case Op::LessEqual: a = pop(); top = truth(a <= top, a, top); break;
+      case Op::Greater: a = pop(); top = truth(a > top, a, top); break;
+      case Op::GreaterEqual: a = pop(); top = truth(a >= top, a, top); break;
+      case Op::And: a = pop(); top = truth(a != 0.0 && top != 0.0, a, top); break;
+      case Op::Or: a = pop(); top = truth(a != 0.0 || top != 0.0, a, top); break;
 
-      case Op::Sin: *top = std::sin(*top * kRadiansPerDegree); break;
-      case Op::Cos: *top = std::cos(*top * kRadiansPerDegree); break;
-      case Op::Tan: *top = std::tan(*top * kRadiansPerDegree); break;
-      case Op::Asin: *top = std::asin(*top) * kDegreesPerRadian; break;
-      case Op::Acos: *top = std::acos(*top) * kDegreesPerRadian; break;
-      case Op::Atan: *top = std::atan(*top) * kDegreesPerRadian; break;
-      case Op::SinR: *top = std::sin(*top); break;
-      case Op::CosR: *top = std::cos(*top); break;
-      case Op::TanR: *top = std::tan(*top); break;
-      case Op::AsinR: *top = std::asin(*top); break;
-      case Op::AcosR: *top = std::acos(*top); break;
-      case Op::AtanR: *top = std::atan(*top); break;
-      case Op::Tanh: *top = std::tanh(*top); break;
-      case Op::Exp: *top = std::exp(*top); break;
-      case Op::Log: *top = std::log(*top); break;
-      case Op::Log10: *top = std::log10(*top); break;
-      case Op::Sqrt: *top = std::sqrt(*top); break;
-      case Op::Abs: *top = std::fabs(*top); break;
-      case Op::Sign: *top = sign(*top); break;
-      case Op::Floor: *top = std::floor(*top); break;
-      case Op::Ceil: *top = std::ceil(*top); break;
-      case Op::Round: *top = std::round(*top); break;
-      case Op::Erf: *top = std::erf(*top); break;
-      case Op::Heaviside: *top = heaviside(*top); break;
+      case Op::Sin: top = std::sin(top * kRadiansPerDegree); break;
+      case Op::Cos: top = std::cos(top * kRadiansPerDegree); break;
+      case Op::Tan: top = std::tan(top * kRadiansPerDegree); break;
+      case Op::Asin: top = std::asin(top) * kDegreesPerRadian; break;
+      case Op::Acos: top = std::acos(top) * kDegreesPerRadian; break;
+      case Op::Atan: top = std::atan(top) * kDegreesPerRadian; break;
+      case Op::SinR: top = std::sin(top); break;
+      case Op::CosR: top = std::cos(top); break;
+      case Op::TanR: top = std::tan(top); break;
+      case Op::AsinR: top = std::asin(top); break;
+      case Op::AcosR: top = std::acos(top); break;
+      case Op::AtanR: top = std::atan(top); break;
+      case Op::Tanh: top = std::tanh(top); break;
+      case Op::Exp: top = std::exp(top); break;
+      case Op::Log: top = std::log(top); break;
+      case Op::Log10: top = std::log10(top); break;
+      case Op::Sqrt: top = std::sqrt(top); break;
+      case Op::Abs: top = std::fabs(top); break;
+      case Op::Sign: top = sign(top); break;
+      case Op::Floor: top = std::floor(top); break;
+      case Op::Ceil: top = std::ceil(top); break;
+      case Op::Round: top = std::round(top); break;
+      case Op::Erf: top = std::erf(top); break;
+      case Op::Heaviside: top = heaviside(top); break;
 
-      case Op::Mod: --top; *top = std::fmod(top[0], top[1]); break;
-      case Op::Kronecker: --top; *top = truth(top[0] == top[1], top[0], top[1]); break;
-      case Op::Min:
-        for (int k = 1; k < in.argc; ++k, --top) top[-1] = minimum(top[-1], top[0]);
-        break;
-      case Op::Max:
-        for (int k = 1; k < in.argc; ++k, --top) top[-1] = maximum(top[-1], top[0]);
-        break;
+      case Op::Mod: top = std::fmod(pop(), top); break;
+      case Op::Kronecker: a = pop(); top = truth(a == top, a, top); break;
+      case Op::Min: for (int k = 1; k < in.argc; ++k) top = minimum(pop(), top); break;
+      case Op::Max: for (int k = 1; k < in.argc; ++k) top = maximum(pop(), top); break;
 
-      case Op::Curve: {
-        const FunctionRef ref = target_of(program, in, table);
-        *top = table->value(ref, *top, vars);
+      case Op::Curve:
+        top = table_of(program, table)->value(target_of(program, in), top, vars);
         break;
-      }
-      case Op::Function: {
-        const FunctionRef ref = target_of(program, in, table);
-        *++top = table->value(ref, vars.t, vars);
+      case Op::Function:
+        push(table_of(program, table)->value(target_of(program, in), vars.t, vars));
         break;
-      }
       case Op::FunctionAt: {
-        const FunctionRef ref = target_of(program, in, table);
         Variables at = vars;
-        at.t = *top;
-        *top = table->value(ref, at.t, at);
+        at.t = top;
+        top = table_of(program, table)->value(target_of(program, in), at.t, at);
         break;
       }
     }
   }
-  return stack[0];
+  // clang-format on
+  return top;
 }
 
 }  // namespace abut::expression

@@ -24,11 +24,13 @@
 namespace abut::expression {
 namespace {
 
+// clang-format off
 enum class Symbol {
   Number, Name, Plus, Minus, Star, Slash, Caret,
   Equal, NotEqual, Less, LessEqual, Greater, GreaterEqual, And, Or,
   LeftParen, RightParen, Comma, End,
 };
+// clang-format on
 
 struct Token {
   Symbol symbol = Symbol::End;
@@ -43,25 +45,27 @@ struct Intrinsic {
   int min_args, max_args;
 };
 constexpr Intrinsic kIntrinsics[] = {
-    {"sin", Op::Sin, 1, 1},       {"cos", Op::Cos, 1, 1},     {"tan", Op::Tan, 1, 1},
-    {"asin", Op::Asin, 1, 1},     {"acos", Op::Acos, 1, 1},   {"atan", Op::Atan, 1, 1},
-    {"sinr", Op::SinR, 1, 1},     {"cosr", Op::CosR, 1, 1},   {"tanr", Op::TanR, 1, 1},
-    {"asinr", Op::AsinR, 1, 1},   {"acosr", Op::AcosR, 1, 1}, {"atanr", Op::AtanR, 1, 1},
-    {"tanh", Op::Tanh, 1, 1},     {"exp", Op::Exp, 1, 1},     {"ln", Op::Log, 1, 1},
-    {"log", Op::Log, 1, 1},       {"log10", Op::Log10, 1, 1}, {"sqrt", Op::Sqrt, 1, 1},
-    {"abs", Op::Abs, 1, 1},       {"sign", Op::Sign, 1, 1},   {"floor", Op::Floor, 1, 1},
-    {"ceil", Op::Ceil, 1, 1},     {"round", Op::Round, 1, 1}, {"erf", Op::Erf, 1, 1},
-    {"H", Op::Heaviside, 1, 1},   {"mod", Op::Mod, 2, 2},     {"d", Op::Kronecker, 2, 2},
-    {"min", Op::Min, 1, 10},      {"max", Op::Max, 1, 10},
+    {"sin", Op::Sin, 1, 1},     {"cos", Op::Cos, 1, 1},     {"tan", Op::Tan, 1, 1},
+    {"asin", Op::Asin, 1, 1},   {"acos", Op::Acos, 1, 1},   {"atan", Op::Atan, 1, 1},
+    {"sinr", Op::SinR, 1, 1},   {"cosr", Op::CosR, 1, 1},   {"tanr", Op::TanR, 1, 1},
+    {"asinr", Op::AsinR, 1, 1}, {"acosr", Op::AcosR, 1, 1}, {"atanr", Op::AtanR, 1, 1},
+    {"tanh", Op::Tanh, 1, 1},   {"exp", Op::Exp, 1, 1},     {"ln", Op::Log, 1, 1},
+    {"log", Op::Log, 1, 1},     {"log10", Op::Log10, 1, 1}, {"sqrt", Op::Sqrt, 1, 1},
+    {"abs", Op::Abs, 1, 1},     {"sign", Op::Sign, 1, 1},   {"floor", Op::Floor, 1, 1},
+    {"ceil", Op::Ceil, 1, 1},   {"round", Op::Round, 1, 1}, {"erf", Op::Erf, 1, 1},
+    {"H", Op::Heaviside, 1, 1}, {"mod", Op::Mod, 2, 2},     {"d", Op::Kronecker, 2, 2},
+    {"min", Op::Min, 1, 10},    {"max", Op::Max, 1, 10},
 };
 
 // Names of the reference that abut does not evaluate yet: model feedback, statistics, tables,
 // random numbers, and the smooth ramps whose exact definition we have not confirmed.
+// clang-format off
 constexpr std::string_view kNotSupported[] = {
     "xn", "yn", "zn", "vxn", "vyn", "vzn", "dxp", "dyp", "dzp", "vxp", "vyp", "vzp", "wkp",
     "mpp", "xs", "ps", "fxc", "fyc", "fzc", "fc", "fxr", "fyr", "fzr", "fr", "vol_geo",
     "table", "dfcn", "norminv", "lognorminv", "rnd", "smooth_d", "smooth_v", "smooth_a",
 };
+// clang-format on
 
 constexpr int kMaxNesting = 100;  // parentheses and calls; bounds the parser's recursion
 
@@ -174,6 +178,7 @@ class Parser {
   std::size_t scan_operator(std::size_t i, Symbol& symbol) const {
     const char c = text_[i];
     const char next = i + 1 < text_.size() ? text_[i + 1] : '\0';
+    // clang-format off
     auto two = [&](Symbol s) { symbol = s; return i + 2; };
     auto one = [&](Symbol s) { symbol = s; return i + 1; };
     switch (c) {
@@ -205,6 +210,7 @@ class Parser {
       default:
         fail(i + 1, "unexpected character '" + std::string(1, c) + "'");
     }
+    // clang-format on
   }
 
   const Token& peek() const { return tokens_[next_]; }
@@ -216,8 +222,8 @@ class Parser {
   }
   void expect(Symbol s, std::string_view what) {
     if (accept(s)) return;
-    fail(peek().column, "expected " + std::string(what) + " but found '" +
-                            std::string(peek().text) + "'");
+    fail(peek().column,
+         "expected " + std::string(what) + " but found '" + std::string(peek().text) + "'");
   }
 
   // ---- code generation ----
@@ -279,6 +285,7 @@ class Parser {
     parse_sum();
     for (;;) {
       Op op;
+      // clang-format off
       switch (peek().symbol) {
         case Symbol::Equal: op = Op::Equal; break;
         case Symbol::NotEqual: op = Op::NotEqual; break;
@@ -288,6 +295,7 @@ class Parser {
         case Symbol::GreaterEqual: op = Op::GreaterEqual; break;
         default: return;
       }
+      // clang-format on
       const std::size_t column = take().column;
       parse_sum();
       emit_binary(op, column);
@@ -337,8 +345,8 @@ class Parser {
 
   void enter(std::size_t column) {
     if (++nesting_ > kMaxNesting) {
-      fail(column, "the expression is nested more than " + std::to_string(kMaxNesting) +
-                       " levels deep");
+      fail(column,
+           "the expression is nested more than " + std::to_string(kMaxNesting) + " levels deep");
     }
   }
 
@@ -364,8 +372,8 @@ class Parser {
       case Symbol::End:
         fail(token.column, "the expression ends where a number, a name or '(' is expected");
       default:
-        fail(token.column, "expected a number, a name or '(' but found '" +
-                               std::string(token.text) + "'");
+        fail(token.column,
+             "expected a number, a name or '(' but found '" + std::string(token.text) + "'");
     }
   }
 
@@ -384,8 +392,8 @@ class Parser {
     } else if (is_not_supported(name)) {
       fail(token.column, "'" + std::string(name) + "' is not supported yet");
     } else if (find_intrinsic(name) != nullptr || name == "crv" || name == "fcn") {
-      fail(token.column, "'" + std::string(name) + "' is a function; write " +
-                             std::string(name) + "(...)");
+      fail(token.column,
+           "'" + std::string(name) + "' is a function; write " + std::string(name) + "(...)");
     } else {
       unknown_name(token);
     }
@@ -416,13 +424,11 @@ class Parser {
     expect(Symbol::RightParen, "',' or ')' in the arguments of " + std::string(name) + "()");
     --nesting_;
     if (count < f->min_args || count > f->max_args) {
-      const std::string wanted = f->min_args == f->max_args
-                                     ? std::to_string(f->min_args)
-                                     : std::to_string(f->min_args) + " to " +
-                                           std::to_string(f->max_args);
+      const std::string wanted = f->min_args == f->max_args ? std::to_string(f->min_args)
+                                                            : std::to_string(f->min_args) + " to " +
+                                                                  std::to_string(f->max_args);
       fail(name_token.column, std::string(name) + "() takes " + wanted + " argument" +
-                                  (f->max_args == 1 ? "" : "s") + ", not " +
-                                  std::to_string(count));
+                                  (f->max_args == 1 ? "" : "s") + ", not " + std::to_string(count));
     }
     emit(Instruction{f->op, static_cast<std::uint8_t>(count), 0, 0.0}, count, name_token.column);
   }
@@ -468,8 +474,8 @@ class Parser {
     for (const Intrinsic& f : kIntrinsics)
       if (lower == f.name && token.text != f.name) hint = f.name;
     if (!hint.empty()) hint = " (names are case-sensitive: did you mean '" + hint + "'?)";
-    fail(token.column, "unknown name '" + std::string(token.text) + "'" + hint +
-                           "; accepted " + accepted_names());
+    fail(token.column, "unknown name '" + std::string(token.text) + "'" + hint + "; accepted " +
+                           accepted_names());
   }
 
   std::string_view text_;
@@ -486,7 +492,9 @@ Program compile(std::string_view text) { return Parser(text).parse(); }
 
 std::string describe_at(std::string_view text, std::size_t column, const std::string& message) {
   std::string caret = "  ";
-  for (std::size_t i = 0; i + 1 < column && i < text.size(); ++i) caret += text[i] == '\t' ? '\t' : ' ';
+  for (std::size_t i = 0; i + 1 < column && i < text.size(); ++i) {
+    caret += text[i] == '\t' ? '\t' : ' ';  // keeps the caret aligned under tabs
+  }
   return "in '" + std::string(text) + "' at column " + std::to_string(column) + ": " + message +
          "\n  " + std::string(text) + "\n" + caret + "^";
 }

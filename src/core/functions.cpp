@@ -79,7 +79,8 @@ struct FunctionTable::Impl {
       if (state[j] == 1) {
         std::string chain;
         const auto start = std::find(path.begin(), path.end(), j);
-        for (auto k = start; k != path.end(); ++k) chain += "fcn(" + std::to_string(entries[*k].id) + ") -> ";
+        for (auto k = start; k != path.end(); ++k)
+          chain += "fcn(" + std::to_string(entries[*k].id) + ") -> ";
         chain += "fcn(" + std::to_string(entries[j].id) + ")";
         throw InputError(entries[j].where, "*FUNCTION " + std::to_string(entries[j].id) +
                                                " calls itself recursively: " + chain);
@@ -128,9 +129,9 @@ void FunctionTable::add_curve(std::int64_t id, Curve curve, const SourceLocation
     }
     if (i > 0 && !(curve.x[i] > curve.x[i - 1])) {
       throw InputError(where, "*CURVE " + std::to_string(id) + ": abscissas must increase " +
-                                  "strictly, but point " + std::to_string(i + 1) + " has x = " +
-                                  std::to_string(curve.x[i]) + " after x = " +
-                                  std::to_string(curve.x[i - 1]));
+                                  "strictly, but point " + std::to_string(i + 1) +
+                                  " has x = " + std::to_string(curve.x[i]) +
+                                  " after x = " + std::to_string(curve.x[i - 1]));
     }
   }
   impl_->add(Entry{id, where, true, std::move(curve), {}});
@@ -155,11 +156,11 @@ void FunctionTable::resolve() {
       const Entry* target = impl_->lookup(r.id);
       const std::string what = std::string(call) + "(" + std::to_string(r.id) + ", ...)";
       if (target == nullptr) {
-        throw InputError(e.where, expression::describe_at(
-                                      e.program.text, r.column,
-                                      "*FUNCTION " + std::to_string(e.id) + " calls " + what +
-                                          " but there is no *CURVE or *FUNCTION " +
-                                          std::to_string(r.id)));
+        throw InputError(
+            e.where, expression::describe_at(e.program.text, r.column,
+                                             "*FUNCTION " + std::to_string(e.id) + " calls " +
+                                                 what + " but there is no *CURVE or *FUNCTION " +
+                                                 std::to_string(r.id)));
       }
       // crv() reads a tabulated curve; fcn() accepts a function or a curve (evaluated at t).
       if (r.kind == expression::Reference::Kind::Curve && !target->is_curve) {
@@ -208,13 +209,14 @@ double evaluate_constant_expression(const std::string& expression) {
     const expression::NameUse& use = program.names.front();
     throw InputError(expression::describe_at(
         expression, use.column,
-        "'" + use.name + "' is a variable, but a constant expression may only use numbers, pi "
-                         "and functions of them"));
+        "'" + use.name +
+            "' is a variable, but a constant expression may only use numbers, pi "
+            "and functions of them"));
   }
   if (!program.references.empty()) {
-    throw InputError(expression::describe_at(
-        expression, program.references.front().column,
-        "crv() and fcn() cannot be used in a constant expression"));
+    throw InputError(
+        expression::describe_at(expression, program.references.front().column,
+                                "crv() and fcn() cannot be used in a constant expression"));
   }
   return expression::evaluate(program, Variables{}, nullptr);
 }

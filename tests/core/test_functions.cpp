@@ -1,12 +1,12 @@
 // *CURVE and *FUNCTION tables: interpolation, ids, cross references, recursion, uses().
-#include "abut/core/functions.hpp"
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
+#include "abut/core/functions.hpp"
 
 namespace abut {
 namespace {
@@ -36,8 +36,8 @@ TEST(Curve, InterpolatesLinearlyAndHoldsTheEndValues) {
   EXPECT_EQ(curve.value(1.0), 10.0);
   EXPECT_EQ(curve.value(2.0), 25.0);
   EXPECT_EQ(curve.value(3.0), 40.0);
-  EXPECT_EQ(curve.value(-7.0), 0.0);   // constant before the first point
-  EXPECT_EQ(curve.value(100.0), 40.0); // and after the last
+  EXPECT_EQ(curve.value(-7.0), 0.0);    // constant before the first point
+  EXPECT_EQ(curve.value(100.0), 40.0);  // and after the last
   EXPECT_TRUE(std::isnan(curve.value(std::nan(""))));
   const Curve single{{2.0}, {5.0}};
   EXPECT_EQ(single.value(-1.0), 5.0);
@@ -46,14 +46,17 @@ TEST(Curve, InterpolatesLinearlyAndHoldsTheEndValues) {
 
 TEST(FunctionTable, RejectsMalformedCurves) {
   FunctionTable table;
-  EXPECT_THAT(input_error([&] { table.add_curve(1, Curve{{0.0, 1.0}, {0.0}}, at_line(3)); }),
+  EXPECT_THAT(input_error([&] {
+                table.add_curve(1, Curve{{0.0, 1.0}, {0.0}}, at_line(3));
+              }),
               HasSubstr("2 abscissas but 1 ordinates"));
   EXPECT_THAT(input_error([&] { table.add_curve(2, Curve{}, at_line(3)); }),
               HasSubstr("has no points"));
-  EXPECT_THAT(input_error([&] {
-                table.add_curve(3, Curve{{0.0, 2.0, 2.0}, {0.0, 1.0, 2.0}}, at_line(3, "*CURVE"));
-              }),
-              HasSubstr("deck.k:3: *CURVE: *CURVE 3: abscissas must increase strictly, but point 3"));
+  EXPECT_THAT(
+      input_error([&] {
+        table.add_curve(3, Curve{{0.0, 2.0, 2.0}, {0.0, 1.0, 2.0}}, at_line(3, "*CURVE"));
+      }),
+      HasSubstr("deck.k:3: *CURVE: *CURVE 3: abscissas must increase strictly, but point 3"));
   EXPECT_THAT(input_error([&] {
                 table.add_curve(4, Curve{{0.0, INFINITY}, {0.0, 1.0}}, at_line(3));
               }),
@@ -67,7 +70,9 @@ TEST(FunctionTable, DuplicateIdNamesBothLocations) {
   const std::string message = input_error([&] { table.add_function(5, "t", at_line(9)); });
   EXPECT_THAT(message, HasSubstr("deck.k:9: *FUNCTION"));
   EXPECT_THAT(message, HasSubstr("id 5 is already used by the *CURVE at deck.k:3"));
-  EXPECT_THAT(input_error([&] { table.add_curve(5, Curve{{0.0}, {1.0}}, at_line(11)); }),
+  EXPECT_THAT(input_error([&] {
+                table.add_curve(5, Curve{{0.0}, {1.0}}, at_line(11));
+              }),
               HasSubstr("deck.k:11"));
 }
 
@@ -95,9 +100,9 @@ TEST(FunctionTable, FindsEntriesById) {
               HasSubstr("deck.k:40: *CONTACT: there is no *CURVE or *FUNCTION with id 3"));
   Variables vars;
   vars.t = 0.25;
-  EXPECT_EQ(table.value(curve, vars), 0.5);          // curve at t
-  EXPECT_EQ(table.value(curve, 0.75, vars), 1.5);    // curve at an abscissa
-  EXPECT_EQ(table.value(function, vars), 0.75);      // 3 t
+  EXPECT_EQ(table.value(curve, vars), 0.5);            // curve at t
+  EXPECT_EQ(table.value(curve, 0.75, vars), 1.5);      // curve at an abscissa
+  EXPECT_EQ(table.value(function, vars), 0.75);        // 3 t
   EXPECT_EQ(table.value(function, 99.0, vars), 0.75);  // a function reads its own variables
   EXPECT_THROW(table.value(FunctionRef{}, vars), std::invalid_argument);
 }
@@ -117,9 +122,9 @@ TEST(FunctionTable, CrossReferencesResolveInAnyOrder) {
   vars.x = 1.0;
   vars.pres = 4.0;
   const auto value = [&](std::int64_t id) { return table.value(table.find(id, {}), vars); };
-  EXPECT_EQ(value(1), 80.0);       // 2 * curve(4) = 2 * 40
-  EXPECT_EQ(value(2), 11.0);       // (3^2 + 1) + 1
-  EXPECT_EQ(value(4), 5.0);        // (3-1)^2 + 1: t replaced, x kept
+  EXPECT_EQ(value(1), 80.0);         // 2 * curve(4) = 2 * 40
+  EXPECT_EQ(value(2), 11.0);         // (3^2 + 1) + 1
+  EXPECT_EQ(value(4), 5.0);          // (3-1)^2 + 1: t replaced, x kept
   EXPECT_EQ(value(5), 30.0 + 60.0);  // curve(t = 3) + curve(6)
 }
 
