@@ -3,6 +3,19 @@
 // Expression syntax (IMPETUS reference, §8): + - * / ^, && || == != < <= > >=, parentheses,
 // numbers in E-notation, built-in values, math intrinsics (trig in degrees, *r variants in
 // radians), crv(cid, x), fcn(fid) and fcn(fid, x).
+//
+// Details chosen where the reference is silent (src/core/expression_eval.cpp has the list):
+// - Precedence, loosest first: ||, &&, comparisons, + -, * /, unary sign, ^ (right-associative;
+//   -2^2 = -4, 2^3^2 = 512). Comparisons and logicals give 1 or 0.
+// - R = sqrt(x^2 + y^2); theta = atan2(y, x) in degrees. Names are case-sensitive (x current,
+//   X initial; t time, T temperature). ln and log are both the natural logarithm.
+// - H(x) = 1 for x >= 0 (H(0) = 1), else 0; sign(0) = 0; d(i, j) = 1 if i == j, else 0;
+//   mod(a, b) has the sign of a (std::fmod); round() rounds halves away from zero.
+// - min(...) and max(...) take 1 to 10 arguments. NaN propagates through every operation.
+// - crv(cid, x) needs a *CURVE; fcn(fid) evaluates a *FUNCTION with the same variables, or a
+//   *CURVE at t; fcn(fid, a) does the same with t replaced by a. Ids are literal integers.
+// - smooth_d/v/a, model feedback (xn, dxp, fc, ...), table, dfcn, norminv, lognorminv and rnd
+//   are rejected with "not supported yet".
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -63,10 +76,12 @@ class FunctionTable {
   FunctionRef find(std::int64_t id, const SourceLocation& where) const;
   bool is_curve(FunctionRef ref) const;
   // Does the expression read this variable name (e.g. "pres")? False for curves.
+  // Includes the names read by the functions it calls through fcn() (conservative).
   bool uses(FunctionRef ref, const std::string& variable) const;
 
   // A curve is evaluated at `abscissa`; a function evaluates its expression with `vars`
-  // (its own abscissa being t, x or whichever variable it names).
+  // (its own abscissa being t, x or whichever variable it names; `abscissa` is not used).
+  // Needs resolve() first when the expression calls crv()/fcn(). Allocates nothing.
   double value(FunctionRef ref, double abscissa, const Variables& vars) const;
   // Convenience for time-dependent use: curves at vars.t.
   double value(FunctionRef ref, const Variables& vars) const { return value(ref, vars.t, vars); }
@@ -77,7 +92,9 @@ class FunctionTable {
 };
 
 // Evaluates a constant expression (no variables), used for `[expression]` in decks and
-// *PARAMETER. Throws InputError (without location; the caller adds it) on any error.
+// *PARAMETER. Throws InputError (without location; the caller adds it) on any error,
+// including the use of a variable (t, x, ...) or of crv()/fcn(). %parameters must already be
+// substituted.
 double evaluate_constant_expression(const std::string& expression);
 
 }  // namespace abut
