@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdio>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -86,6 +87,12 @@ std::vector<std::size_t> select(const Mesh& mesh, std::int64_t part,
                      ", which has no hexahedra");
   }
   return selected;
+}
+
+std::string degrees(double angle) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", angle);
+  return text;
 }
 
 std::string split_name(int p) {
@@ -297,7 +304,7 @@ std::vector<std::string> refine_and_smooth(Mesh& mesh, const std::vector<OrderCh
     }
     if (!(smooth.max_angle > 0.0 && smooth.max_angle <= 180.0)) {
       throw InputError("*SMOOTH_MESH angle must be in (0, 180] degrees (got " +
-                       std::to_string(smooth.max_angle) + ")");
+                       degrees(smooth.max_angle) + ")");
     }
     for (std::int64_t part : smooth.parts) {
       std::vector<char> chosen(hex_count, 0);
@@ -333,7 +340,7 @@ std::vector<std::string> refine_and_smooth(Mesh& mesh, const std::vector<OrderCh
                       " exterior faces made smooth (Nagata patches) for the new nodes of " +
                       std::to_string(refined) + " refined hexes; " +
                       std::to_string(curved.size()) + " edges curved, edges with face angles >= " +
-                      std::to_string(smooth.max_angle) + " degrees kept straight" +
+                      degrees(smooth.max_angle) + " degrees kept straight" +
                       (rejected > 0 ? "; " + std::to_string(rejected) +
                                           " edges kept straight because the averaged normals "
                                           "disagree with the facets"
