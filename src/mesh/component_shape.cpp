@@ -22,9 +22,9 @@ struct Frame {
 
 // Frames of the six outer sphere blocks: +x, -x, +y, -y, +z, -z.
 constexpr Frame kSphereFrames[6] = {
-    {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}},  {{0, 0, 1}, {0, 1, 0}, {-1, 0, 0}},
-    {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},  {{1, 0, 0}, {0, 0, 1}, {0, -1, 0}},
-    {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},  {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}},
+    {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}}, {{0, 0, 1}, {0, 1, 0}, {-1, 0, 0}},
+    {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}}, {{1, 0, 0}, {0, 0, 1}, {0, -1, 0}},
+    {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}},
 };
 
 // Grid coordinate g in [0, n] -> cube-face coordinate in [-1, 1].
@@ -44,8 +44,8 @@ Vec3 box_point(const BoxShape& b, std::int32_t, const Vec3& g) {
 
 Vec3 sphere_point(const SphereShape& s, std::int32_t block, const Vec3& g) {
   if (block == 6) {  // central cube
-    return s.centre + s.core_half_size * Vec3{centred(g.x, s.n), centred(g.y, s.n),
-                                              centred(g.z, s.n)};
+    return s.centre +
+           s.core_half_size * Vec3{centred(g.x, s.n), centred(g.y, s.n), centred(g.z, s.n)};
   }
   const Frame& f = kSphereFrames[block];
   const double a = centred(g.x, s.n), b = centred(g.y, s.n);

@@ -56,11 +56,11 @@ void add_block(Mesh& mesh, detail::NodeMerger& merger, std::int32_t shape, std::
     for (int j = 0; j < n[1]; ++j) {
       for (int i = 0; i < n[0]; ++i) {
         // VTK_HEXAHEDRON: bottom face 0-3 counter-clockwise about block axis 2, then the top.
-        const Hex8 hex{at(i, j, k),         at(i + 1, j, k),         at(i + 1, j + 1, k),
-                       at(i, j + 1, k),     at(i, j, k + 1),         at(i + 1, j, k + 1),
-                       at(i + 1, j + 1, k + 1), at(i, j + 1, k + 1)};
-        const HexCell cell{block, {static_cast<double>(i), static_cast<double>(j),
-                                   static_cast<double>(k)}, 1.0};
+        const Hex8 hex{
+            at(i, j, k),     at(i + 1, j, k),     at(i + 1, j + 1, k),     at(i, j + 1, k),
+            at(i, j, k + 1), at(i + 1, j, k + 1), at(i + 1, j + 1, k + 1), at(i, j + 1, k + 1)};
+        const HexCell cell{
+            block, {static_cast<double>(i), static_cast<double>(j), static_cast<double>(k)}, 1.0};
         mesh.add_hex(next_hex_id++, part, hex, shape, cell);
       }
     }
@@ -90,8 +90,8 @@ void generate_box(Mesh& mesh, const BoxComponent& c) {
     box.lo[a] = std::min(c.corner1[a], c.corner2[a]);
     box.hi[a] = std::max(c.corner1[a], c.corner2[a]);
     if (!(box.hi[a] > box.lo[a])) {
-      throw InputError(std::string("*COMPONENT_BOX corners have zero extent along ") +
-                       "xyz"[a] + ": give two opposite corners of a box with volume");
+      throw InputError(std::string("*COMPONENT_BOX corners have zero extent along ") + "xyz"[a] +
+                       ": give two opposite corners of a box with volume");
     }
   }
   std::int64_t next_node = mesh.next_node_id(), next_hex = mesh.next_hex_id();
@@ -105,8 +105,8 @@ void generate_sphere(Mesh& mesh, const SphereComponent& c) {
   require_count(c.density, "*COMPONENT_SPHERE N");
   if (!(c.outer_radius > 0.0) || c.inner_radius < 0.0 || c.inner_radius >= c.outer_radius) {
     throw InputError("*COMPONENT_SPHERE radii must satisfy 0 <= inner < outer (got inner " +
-                     std::to_string(c.inner_radius) + ", outer " +
-                     std::to_string(c.outer_radius) + ")");
+                     std::to_string(c.inner_radius) + ", outer " + std::to_string(c.outer_radius) +
+                     ")");
   }
   const int n = c.density;
   const double quarter_arc = 0.5 * std::numbers::pi / n;  // element arc per unit radius
@@ -116,13 +116,12 @@ void generate_sphere(Mesh& mesh, const SphereComponent& c) {
   sphere.outer_radius = c.outer_radius;
   sphere.n = n;
   if (c.inner_radius > 0.0) {
-    sphere.n_radial = radial_layers(c.outer_radius - c.inner_radius,
-                                    quarter_arc * c.inner_radius, quarter_arc * c.outer_radius);
+    sphere.n_radial = radial_layers(c.outer_radius - c.inner_radius, quarter_arc * c.inner_radius,
+                                    quarter_arc * c.outer_radius);
   } else {
     sphere.core_half_size = kCoreFraction * c.outer_radius;
     sphere.n_radial = radial_layers(c.outer_radius - sphere.core_half_size,
-                                    2.0 * sphere.core_half_size / n,
-                                    quarter_arc * c.outer_radius);
+                                    2.0 * sphere.core_half_size / n, quarter_arc * c.outer_radius);
   }
   std::int64_t next_node = mesh.next_node_id(), next_hex = mesh.next_hex_id();
   detail::NodeMerger merger(kMergeTolerance * c.outer_radius);

@@ -23,7 +23,8 @@ inline constexpr int kHexFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}
 
 inline HexPoints hex_points(const Mesh& mesh, std::size_t hex) {
   HexPoints x;
-  for (int a = 0; a < 8; ++a) x[a] = mesh.nodes.position(static_cast<std::size_t>(mesh.hexes[hex][a]));
+  for (int a = 0; a < 8; ++a)
+    x[a] = mesh.nodes.position(static_cast<std::size_t>(mesh.hexes[hex][a]));
   return x;
 }
 

@@ -122,7 +122,8 @@ void check_conformity(const Mesh& mesh, const std::vector<int>& order) {
       throw InputError("*CHANGE_P-ORDER: parts " + std::to_string(std::min(pa, pb)) + " and " +
                        std::to_string(std::max(pa, pb)) +
                        " share nodes; refine both or neither (to the same order), otherwise "
-                       "the shared faces get hanging nodes" + detail);
+                       "the shared faces get hanging nodes" +
+                       detail);
     }
   }
 }
@@ -165,7 +166,8 @@ void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
   for (std::size_t h = 0; h < hex_count; ++h) {
     if (order[h] == 1) continue;
     ++refined_hexes;
-    expected_new_nodes += static_cast<std::size_t>((order[h] - 1) * (order[h] - 1) * (order[h] - 1));
+    expected_new_nodes +=
+        static_cast<std::size_t>((order[h] - 1) * (order[h] - 1) * (order[h] - 1));
     for (std::int32_t n : mesh.hexes[h]) {
       if (!registered[static_cast<std::size_t>(n)]) {
         registered[static_cast<std::size_t>(n)] = 1;
@@ -192,9 +194,7 @@ void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
 
   const std::size_t nodes_before = mesh.nodes.size();
   std::int64_t next_node = mesh.next_node_id(), next_hex = mesh.next_hex_id();
-  Mesh out;
-  out.nodes = std::move(mesh.nodes);
-  out.shapes = std::move(mesh.shapes);
+  Mesh out;  // collects the new hex list; nodes are appended to mesh.nodes directly
   for (std::size_t h = 0; h < hex_count; ++h) {
     const int p = order[h];
     if (p == 1) {
@@ -206,13 +206,13 @@ void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
     const HexCell cell = mesh.hex_cell[h];
     HexPoints x;
     for (int a = 0; a < 8; ++a) {
-      x[a] = out.nodes.position(static_cast<std::size_t>(mesh.hexes[h][a]));
+      x[a] = mesh.nodes.position(static_cast<std::size_t>(mesh.hexes[h][a]));
     }
     std::array<Vec3, 12> bulge{};
     bool curved = false;
     for (int e = 0; e < 12; ++e) {
-      const auto it = curvature.find(edge_key(mesh.hexes[h][kHexEdges[e][0]],
-                                              mesh.hexes[h][kHexEdges[e][1]]));
+      const auto it =
+          curvature.find(edge_key(mesh.hexes[h][kHexEdges[e][0]], mesh.hexes[h][kHexEdges[e][1]]));
       if (shape < 0 && it != curvature.end()) {
         bulge[e] = it->second;
         curved = true;
@@ -235,31 +235,36 @@ void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
           const double s[3] = {static_cast<double>(i) / p, static_cast<double>(j) / p,
                                static_cast<double>(k) / p};
           const Vec3 point =
-              shape >= 0 ? shape_point(out.shapes[static_cast<std::size_t>(shape)], cell.block,
+              shape >= 0 ? shape_point(mesh.shapes[static_cast<std::size_t>(shape)], cell.block,
                                        cell.lo + cell.size * Vec3{s[0], s[1], s[2]})
                          : blended_point(x, bulge, curved, s);
-          at(i, j, k) = merger.find_or_add(out.nodes, point, next_node);
+          at(i, j, k) = merger.find_or_add(mesh.nodes, point, next_node);
         }
       }
     }
     for (int k = 0; k < p; ++k) {
       for (int j = 0; j < p; ++j) {
         for (int i = 0; i < p; ++i) {
-          const Hex8 child{at(i, j, k),         at(i + 1, j, k),     at(i + 1, j + 1, k),
-                           at(i, j + 1, k),     at(i, j, k + 1),     at(i + 1, j, k + 1),
-                           at(i + 1, j + 1, k + 1), at(i, j + 1, k + 1)};
+          const Hex8 child{
+              at(i, j, k),     at(i + 1, j, k),     at(i + 1, j + 1, k),     at(i, j + 1, k),
+              at(i, j, k + 1), at(i + 1, j, k + 1), at(i + 1, j + 1, k + 1), at(i, j + 1, k + 1)};
           const double size = cell.size / p;
-          const HexCell child_cell{cell.block, cell.lo + size * Vec3{static_cast<double>(i),
-                                                                     static_cast<double>(j),
-                                                                     static_cast<double>(k)},
-                                   size};
+          const HexCell child_cell{
+              cell.block,
+              cell.lo + size * Vec3{static_cast<double>(i), static_cast<double>(j),
+                                    static_cast<double>(k)},
+              size};
           out.add_hex(next_hex++, mesh.hex_part[h], child, shape, child_cell);
         }
       }
     }
   }
-  const std::size_t new_nodes = out.nodes.size() - nodes_before;
-  mesh = std::move(out);
+  const std::size_t new_nodes = mesh.nodes.size() - nodes_before;
+  mesh.hexes = std::move(out.hexes);
+  mesh.hex_id = std::move(out.hex_id);
+  mesh.hex_part = std::move(out.hex_part);
+  mesh.hex_shape = std::move(out.hex_shape);
+  mesh.hex_cell = std::move(out.hex_cell);
   if (new_nodes != expected_new_nodes) {
     throw InputError("*CHANGE_P-ORDER: refinement produced " + std::to_string(new_nodes) +
                      " new nodes where a conforming mesh has " +
@@ -267,7 +272,6 @@ void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
                      "; hexes sharing nodes follow different shapes (e.g. nodes merged between "
                      "generated components or a *SMOOTH_MESH surface meeting one)");
   }
-
 }
 
 }  // namespace
@@ -299,8 +303,9 @@ std::vector<std::string> refine_and_smooth(Mesh& mesh, const std::vector<OrderCh
   std::unordered_map<std::uint64_t, Vec3> curvature;
   for (const SurfaceSmoothing& smooth : smoothing) {
     if (smooth.internal) {
-      throw InputError("*SMOOTH_MESH internal = 1 (smoothing internal interfaces) is not "
-                       "supported yet; use 0");
+      throw InputError(
+          "*SMOOTH_MESH internal = 1 (smoothing internal interfaces) is not "
+          "supported yet; use 0");
     }
     if (!(smooth.max_angle > 0.0 && smooth.max_angle <= 180.0)) {
       throw InputError("*SMOOTH_MESH angle must be in (0, 180] degrees (got " +
@@ -322,7 +327,8 @@ std::vector<std::string> refine_and_smooth(Mesh& mesh, const std::vector<OrderCh
       }
       const std::string who = "part " + std::to_string(part) + ": *SMOOTH_MESH ";
       if (refined + exact == 0) {
-        notes.push_back(who + "moves no nodes: its hexes stay linear (smoothing places only the "
+        notes.push_back(who +
+                        "moves no nodes: its hexes stay linear (smoothing places only the "
                         "new nodes of *CHANGE_P-ORDER)");
         continue;
       }
@@ -333,14 +339,14 @@ std::vector<std::string> refine_and_smooth(Mesh& mesh, const std::vector<OrderCh
       }
       if (refined == 0) continue;
       std::size_t rejected = 0;
-      const auto curved = detail::smooth_edge_curvatures(mesh.nodes, surface, smooth.max_angle,
-                                                         rejected);
+      const auto curved =
+          detail::smooth_edge_curvatures(mesh.nodes, surface, smooth.max_angle, rejected);
       curvature.insert(curved.begin(), curved.end());
       notes.push_back(who + std::to_string(surface.size()) +
                       " exterior faces made smooth (Nagata patches) for the new nodes of " +
-                      std::to_string(refined) + " refined hexes; " +
-                      std::to_string(curved.size()) + " edges curved, edges with face angles >= " +
-                      degrees(smooth.max_angle) + " degrees kept straight" +
+                      std::to_string(refined) + " refined hexes; " + std::to_string(curved.size()) +
+                      " edges curved, edges with face angles >= " + degrees(smooth.max_angle) +
+                      " degrees kept straight" +
                       (rejected > 0 ? "; " + std::to_string(rejected) +
                                           " edges kept straight because the averaged normals "
                                           "disagree with the facets"
@@ -365,10 +371,9 @@ std::vector<std::string> refine_and_smooth(Mesh& mesh, const std::vector<OrderCh
         note += std::to_string(chosen.size()) + " hexes stay linear (order 1)";
       } else {
         note += std::to_string(split) + " hexes split " + split_name(change.order) + " into " +
-                std::to_string(split * static_cast<std::size_t>(change.order * change.order *
-                                                                change.order)) +
-                " (order " + std::to_string(change.order) +
-                " represented by its nodal resolution)";
+                std::to_string(
+                    split * static_cast<std::size_t>(change.order * change.order * change.order)) +
+                " (order " + std::to_string(change.order) + " represented by its nodal resolution)";
         if (higher > 0) {
           note += "; " + std::to_string(higher) + " selected hexes got a higher order elsewhere";
         }

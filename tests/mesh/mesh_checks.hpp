@@ -7,9 +7,9 @@
 #include <cstddef>
 #include <limits>
 #include <map>
-#include <vector>
 #include <set>
 #include <tuple>
+#include <vector>
 
 #include "abut/mesh/mesh.hpp"
 
@@ -17,7 +17,8 @@ namespace abut::test {
 
 inline std::array<Vec3, 8> corners(const Mesh& mesh, std::size_t h) {
   std::array<Vec3, 8> x;
-  for (int a = 0; a < 8; ++a) x[a] = mesh.nodes.position(static_cast<std::size_t>(mesh.hexes[h][a]));
+  for (int a = 0; a < 8; ++a)
+    x[a] = mesh.nodes.position(static_cast<std::size_t>(mesh.hexes[h][a]));
   return x;
 }
 

@@ -1,11 +1,10 @@
-#include "abut/mesh/generators.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
 #include "abut/core/error.hpp"
+#include "abut/mesh/generators.hpp"
 #include "mesh_checks.hpp"
 
 namespace abut {

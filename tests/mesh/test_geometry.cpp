@@ -1,11 +1,10 @@
-#include "abut/mesh/geometry.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "abut/core/error.hpp"
 #include "abut/mesh/generators.hpp"
+#include "abut/mesh/geometry.hpp"
 #include "abut/mesh/mesh.hpp"
 
 namespace abut {
@@ -56,7 +55,7 @@ TEST(GeometryContains, PipeFrustumShellAndSector) {
   p.radius4 = 0.5;
   EXPECT_FALSE(geometry_contains(p, {0.3, 0, 0}, kNoMesh));
   EXPECT_TRUE(geometry_contains(p, {0.3, 0, 2}, kNoMesh));
-  EXPECT_TRUE(geometry_contains(p, {0, 0.7, 1}, kNoMesh));   // radii 0.375 .. 0.75 at middle
+  EXPECT_TRUE(geometry_contains(p, {0, 0.7, 1}, kNoMesh));  // radii 0.375 .. 0.75 at middle
   EXPECT_FALSE(geometry_contains(p, {0, 0.8, 1}, kNoMesh));
   // Quarter sector from +x, counter-clockwise about the axis end1 -> end2 (+z).
   p = pipe_along_z();

@@ -1,5 +1,3 @@
-#include "abut/mesh/refine.hpp"
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -8,6 +6,7 @@
 
 #include "abut/core/error.hpp"
 #include "abut/mesh/generators.hpp"
+#include "abut/mesh/refine.hpp"
 #include "mesh_checks.hpp"
 
 namespace abut {
@@ -149,8 +148,8 @@ Mesh two_glued_hexes() {
   for (int k = 0; k < 2; ++k)
     for (int j = 0; j < 2; ++j)
       for (int i = 0; i < 3; ++i)
-        mesh.nodes.add(mesh.next_node_id(), {static_cast<double>(i), static_cast<double>(j),
-                                             static_cast<double>(k)});
+        mesh.nodes.add(mesh.next_node_id(),
+                       {static_cast<double>(i), static_cast<double>(j), static_cast<double>(k)});
   auto n = [](int i, int j, int k) { return static_cast<std::int32_t>((k * 2 + j) * 3 + i); };
   for (int i = 0; i < 2; ++i) {
     mesh.add_hex(i + 1, i + 1,

@@ -1,11 +1,11 @@
 // Nagata's edge curve (Nagata, CAGD 22 (2005) 327-347): x(t) = (1-t) x0 + t x1 - c t (1-t)
 // with tangents x'(0) = d - c and x'(1) = d + c perpendicular to the end normals n0 and n1.
-#include "../../src/mesh/surface_smoothing.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
+
+#include "../../src/mesh/surface_smoothing.hpp"
 
 namespace abut::detail {
 namespace {
