@@ -12,4 +12,16 @@ std::int64_t Mesh::next_hex_id() const {
   return hex_id.empty() ? 1 : *std::max_element(hex_id.begin(), hex_id.end()) + 1;
 }
 
+void Mesh::add_hex(std::int64_t id, std::int64_t part, const Hex8& nodes_of_hex, std::int32_t shape,
+                   const HexCell& cell) {
+  // Hexes appended by code that does not know hex_shape/hex_cell leave them short: pad first.
+  hex_shape.resize(hexes.size(), -1);
+  hex_cell.resize(hexes.size());
+  hexes.push_back(nodes_of_hex);
+  hex_id.push_back(id);
+  hex_part.push_back(part);
+  hex_shape.push_back(shape);
+  hex_cell.push_back(cell);
+}
+
 }  // namespace abut

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <variant>
 #include <vector>
 
 #include "abut/core/vec3.hpp"
@@ -32,6 +33,49 @@ struct Nodes {
 
 using Hex8 = std::array<std::int32_t, 8>;  // node indices (not user ids)
 
+// Exact shapes of generated components. A component is a set of structured blocks; its map
+// takes (block, grid coordinates) to a point. Grid coordinates run from 0 to the element count
+// along each block axis, and block axes 0, 1, 2 follow hex local axes 0->1, 0->3, 0->4, so a
+// generated hex is the grid cube [lo, lo + size]^3 of one block (HexCell). Refinement evaluates
+// the map at fractional grid coordinates, which puts new boundary nodes on the true geometry.
+struct HexCell {
+  std::int32_t block = 0;
+  Vec3 lo;            // grid coordinates of hex node 0
+  double size = 1.0;  // edge length in grid units (1 when generated, 1/p after refinement)
+};
+
+struct BoxShape {     // one block of nx x ny x nz between lo and hi
+  Vec3 lo, hi;
+  int nx = 1, ny = 1, nz = 1;
+};
+
+// Cube-sphere (O-grid). Blocks 0-5 are the outer blocks on the faces +x, -x, +y, -y, +z, -z
+// (n x n tangential, n_radial radial); block 6 is the central cube of n x n x n (solid only).
+struct SphereShape {
+  Vec3 centre;
+  double inner_radius = 0.0;     // 0: solid sphere with a central cube
+  double outer_radius = 0.0;
+  double core_half_size = 0.0;   // half edge of the central cube (solid sphere)
+  int n = 1, n_radial = 1;
+};
+
+// O-grid cylinder (cone when the radii differ). Blocks 0-3 are the outer blocks on the sides
+// +e1, +e2, -e1, -e2 of the square core (n tangential, n_radial radial); block 4 is the core
+// (n x n). All blocks have n_axial elements along the axis.
+struct CylinderShape {
+  Vec3 end1;            // centre of end face 1
+  Vec3 axis, e1, e2;    // right-handed unit frame: axis = e1 x e2 points from end 1 to end 2
+  double length = 0.0;
+  double radius1 = 0.0, radius2 = 0.0;
+  double core_fraction = 0.0;  // core half edge / local radius
+  int n = 1, n_radial = 1, n_axial = 1;
+};
+
+using ComponentShape = std::variant<BoxShape, SphereShape, CylinderShape>;
+
+// The point of `shape` at grid coordinates `grid` of `block` (see HexCell).
+Vec3 shape_point(const ComponentShape& shape, std::int32_t block, const Vec3& grid);
+
 struct Mesh {
   Nodes nodes;
   std::vector<Hex8> hexes;
@@ -40,8 +84,15 @@ struct Mesh {
   // Index into `shapes` of the generated component a hex came from, or -1 (given by *NODE /
   // *ELEMENT_SOLID). Lets refinement put new boundary nodes on the exact geometry.
   std::vector<std::int32_t> hex_shape;
+  // Exact shapes of generated components (indexed by hex_shape) and, parallel to `hexes`, the
+  // grid cell each generated hex covers (unused where hex_shape is -1).
+  std::vector<ComponentShape> shapes;
+  std::vector<HexCell> hex_cell;
 
   std::size_t hex_count() const { return hexes.size(); }
+  // Appends a hex and keeps all per-hex arrays parallel.
+  void add_hex(std::int64_t id, std::int64_t part, const Hex8& nodes_of_hex,
+               std::int32_t shape = -1, const HexCell& cell = {});
   std::int64_t next_node_id() const;
   std::int64_t next_hex_id() const;
 };

@@ -1,0 +1,387 @@
+// *CHANGE_P-ORDER and *SMOOTH_MESH: order-p hexes are represented by splitting each selected
+// hex into p x p x p hexes (see refine.hpp). New node positions, by priority:
+//  1. hexes of generated components: the component's exact map at fractional grid coordinates;
+//  2. other hexes: the trilinear map plus the bulge of their curved edges (transfinite edge
+//     blending), where edges are curved only on a *SMOOTH_MESH surface (surface_smoothing.hpp).
+// Nodes shared by neighbouring hexes are merged by position (tolerance relative to model size);
+// a count check then proves the refined mesh is conforming.
+#include "abut/mesh/refine.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdio>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "abut/core/error.hpp"
+#include "mesh/hex_geometry.hpp"
+#include "mesh/node_merger.hpp"
+#include "mesh/surface_smoothing.hpp"
+
+namespace abut {
+namespace {
+
+using detail::edge_key;
+using detail::HexPoints;
+using detail::kHexCorner;
+using detail::kHexEdges;
+using detail::kHexFaces;
+using Face = std::array<std::int32_t, 4>;
+
+struct FaceHash {
+  std::size_t operator()(const Face& f) const {
+    std::size_t h = 0;
+    for (std::int32_t n : f) h = h * 1000003u ^ static_cast<std::size_t>(n);
+    return h;
+  }
+};
+
+Face sorted_face(const Mesh& mesh, std::size_t hex, int face) {
+  Face f;
+  for (int a = 0; a < 4; ++a) f[a] = mesh.hexes[hex][kHexFaces[face][a]];
+  std::sort(f.begin(), f.end());
+  return f;
+}
+
+// For every face: the hexes on it (one for an exterior face, two for an interior one).
+struct FaceUse {
+  std::size_t hex = 0;
+  int face = 0;
+  int count = 0;
+};
+using FaceUses = std::unordered_map<Face, FaceUse, FaceHash>;
+FaceUses face_uses(const Mesh& mesh) {
+  FaceUses uses;
+  for (std::size_t h = 0; h < mesh.hex_count(); ++h) {
+    for (int f = 0; f < 6; ++f) {
+      FaceUse& use = uses[sorted_face(mesh, h, f)];
+      if (use.count++ == 0) {
+        use.hex = h;
+        use.face = f;
+      }
+    }
+  }
+  return uses;
+}
+
+Vec3 centroid(const Mesh& mesh, std::size_t hex) {
+  Vec3 sum;
+  for (std::int32_t n : mesh.hexes[hex]) sum += mesh.nodes.position(static_cast<std::size_t>(n));
+  return sum / 8.0;
+}
+
+// Hexes of `part` whose centroid lies in `region` (all of the part without a region).
+std::vector<std::size_t> select(const Mesh& mesh, std::int64_t part,
+                                const std::optional<Geometry>& region, const char* keyword) {
+  std::vector<std::size_t> selected;
+  bool part_exists = false;
+  for (std::size_t h = 0; h < mesh.hex_count(); ++h) {
+    if (mesh.hex_part[h] != part) continue;
+    part_exists = true;
+    if (!region || geometry_contains(*region, centroid(mesh, h), mesh)) selected.push_back(h);
+  }
+  if (!part_exists) {
+    throw InputError(std::string(keyword) + " refers to part " + std::to_string(part) +
+                     ", which has no hexahedra");
+  }
+  return selected;
+}
+
+std::string degrees(double angle) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", angle);
+  return text;
+}
+
+std::string split_name(int p) {
+  return std::to_string(p) + "x" + std::to_string(p) + "x" + std::to_string(p);
+}
+
+// Refining a hex puts new nodes on its edges; a neighbour sharing such an edge at another order
+// would get hanging nodes. Refuse instead of producing a non-conforming mesh.
+void check_conformity(const Mesh& mesh, const std::vector<int>& order) {
+  std::unordered_map<std::uint64_t, std::size_t> hex_of_edge;
+  for (std::size_t h = 0; h < mesh.hex_count(); ++h) {
+    for (const auto& e : kHexEdges) {
+      const auto [it, inserted] =
+          hex_of_edge.emplace(edge_key(mesh.hexes[h][e[0]], mesh.hexes[h][e[1]]), h);
+      const std::size_t other = it->second;
+      if (inserted || order[other] == order[h]) continue;
+      const std::int64_t pa = mesh.hex_part[h], pb = mesh.hex_part[other];
+      const std::string detail = " (hex " + std::to_string(mesh.hex_id[h]) + " order " +
+                                 std::to_string(order[h]) + ", hex " +
+                                 std::to_string(mesh.hex_id[other]) + " order " +
+                                 std::to_string(order[other]) + ")";
+      if (pa == pb) {
+        throw InputError("*CHANGE_P-ORDER: the region cuts through part " + std::to_string(pa) +
+                         ": neighbouring hexes would get different orders and hanging nodes" +
+                         detail + "; use a region that covers the whole connected part");
+      }
+      throw InputError("*CHANGE_P-ORDER: parts " + std::to_string(std::min(pa, pb)) + " and " +
+                       std::to_string(std::max(pa, pb)) +
+                       " share nodes; refine both or neither (to the same order), otherwise "
+                       "the shared faces get hanging nodes" +
+                       detail);
+    }
+  }
+}
+
+// Trilinear map plus the bulge -c t (1 - t) of each curved edge, blended into the hex with the
+// bilinear weight of the edge in the two other local coordinates. On a face this is the Coons
+// patch of the four edge curves; inside, the edge-based transfinite interpolation.
+Vec3 blended_point(const HexPoints& x, const std::array<Vec3, 12>& bulge, bool curved,
+                   const double s[3]) {
+  Vec3 p = detail::trilinear(x, s[0], s[1], s[2]);
+  if (!curved) return p;
+  for (int e = 0; e < 12; ++e) {
+    const int along = e / 4;  // kHexEdges lists 4 edges along u, then v, then w
+    const int* c = kHexCorner[kHexEdges[e][0]];
+    double weight = s[along] * (1.0 - s[along]);
+    for (int a = 0; a < 3; ++a) {
+      if (a != along) weight *= c[a] == 1 ? s[a] : 1.0 - s[a];
+    }
+    p -= weight * bulge[e];
+  }
+  return p;
+}
+
+// Replaces every hex of order p > 1 by its p x p x p children (same part, new ids after the
+// largest id). Existing nodes of refined hexes join the merger so the lattices reuse them.
+void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& faces,
+                 const std::unordered_map<std::uint64_t, Vec3>& curvature) {
+  const std::size_t hex_count = mesh.hex_count();
+  Vec3 lo = mesh.nodes.size() > 0 ? mesh.nodes.position(0) : Vec3{};
+  Vec3 hi = lo;
+  for (std::size_t n = 0; n < mesh.nodes.size(); ++n) {
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], mesh.nodes.position(n)[a]);
+      hi[a] = std::max(hi[a], mesh.nodes.position(n)[a]);
+    }
+  }
+  detail::NodeMerger merger(1e-9 * norm(hi - lo));
+  std::vector<char> registered(mesh.nodes.size(), 0);
+  std::size_t expected_new_nodes = 0, refined_hexes = 0;
+  for (std::size_t h = 0; h < hex_count; ++h) {
+    if (order[h] == 1) continue;
+    ++refined_hexes;
+    expected_new_nodes +=
+        static_cast<std::size_t>((order[h] - 1) * (order[h] - 1) * (order[h] - 1));
+    for (std::int32_t n : mesh.hexes[h]) {
+      if (!registered[static_cast<std::size_t>(n)]) {
+        registered[static_cast<std::size_t>(n)] = 1;
+        merger.insert(n, mesh.nodes.position(static_cast<std::size_t>(n)));
+      }
+    }
+  }
+  if (refined_hexes == 0) return;
+  {  // Each distinct edge and face of a refined hex owns (p-1) and (p-1)^2 new nodes.
+    std::unordered_set<std::uint64_t> edges;
+    for (std::size_t h = 0; h < hex_count; ++h) {
+      if (order[h] == 1) continue;
+      for (const auto& e : kHexEdges) {
+        if (edges.insert(edge_key(mesh.hexes[h][e[0]], mesh.hexes[h][e[1]])).second) {
+          expected_new_nodes += static_cast<std::size_t>(order[h] - 1);
+        }
+      }
+    }
+    for (const auto& [key, use] : faces) {
+      const int p = order[use.hex];
+      if (p > 1) expected_new_nodes += static_cast<std::size_t>((p - 1) * (p - 1));
+    }
+  }
+
+  const std::size_t nodes_before = mesh.nodes.size();
+  std::int64_t next_node = mesh.next_node_id(), next_hex = mesh.next_hex_id();
+  Mesh out;  // collects the new hex list; nodes are appended to mesh.nodes directly
+  for (std::size_t h = 0; h < hex_count; ++h) {
+    const int p = order[h];
+    if (p == 1) {
+      out.add_hex(mesh.hex_id[h], mesh.hex_part[h], mesh.hexes[h], mesh.hex_shape[h],
+                  mesh.hex_cell[h]);
+      continue;
+    }
+    const std::int32_t shape = mesh.hex_shape[h];
+    const HexCell cell = mesh.hex_cell[h];
+    HexPoints x;
+    for (int a = 0; a < 8; ++a) {
+      x[a] = mesh.nodes.position(static_cast<std::size_t>(mesh.hexes[h][a]));
+    }
+    std::array<Vec3, 12> bulge{};
+    bool curved = false;
+    for (int e = 0; e < 12; ++e) {
+      const auto it =
+          curvature.find(edge_key(mesh.hexes[h][kHexEdges[e][0]], mesh.hexes[h][kHexEdges[e][1]]));
+      if (shape < 0 && it != curvature.end()) {
+        bulge[e] = it->second;
+        curved = true;
+      }
+    }
+    const int m = p + 1;
+    std::vector<std::int32_t> lattice(static_cast<std::size_t>(m * m * m));
+    auto at = [&](int i, int j, int k) -> std::int32_t& {
+      return lattice[static_cast<std::size_t>((k * m + j) * m + i)];
+    };
+    for (int k = 0; k < m; ++k) {
+      for (int j = 0; j < m; ++j) {
+        for (int i = 0; i < m; ++i) {
+          const bool corner = (i % p == 0) && (j % p == 0) && (k % p == 0);
+          if (corner) {  // the hex's own node
+            const int local = (k / p) * 4 + (j / p == 0 ? (i / p) : 3 - i / p);
+            at(i, j, k) = mesh.hexes[h][local];
+            continue;
+          }
+          const double s[3] = {static_cast<double>(i) / p, static_cast<double>(j) / p,
+                               static_cast<double>(k) / p};
+          const Vec3 point =
+              shape >= 0 ? shape_point(mesh.shapes[static_cast<std::size_t>(shape)], cell.block,
+                                       cell.lo + cell.size * Vec3{s[0], s[1], s[2]})
+                         : blended_point(x, bulge, curved, s);
+          at(i, j, k) = merger.find_or_add(mesh.nodes, point, next_node);
+        }
+      }
+    }
+    for (int k = 0; k < p; ++k) {
+      for (int j = 0; j < p; ++j) {
+        for (int i = 0; i < p; ++i) {
+          const Hex8 child{
+              at(i, j, k),     at(i + 1, j, k),     at(i + 1, j + 1, k),     at(i, j + 1, k),
+              at(i, j, k + 1), at(i + 1, j, k + 1), at(i + 1, j + 1, k + 1), at(i, j + 1, k + 1)};
+          const double size = cell.size / p;
+          const HexCell child_cell{
+              cell.block,
+              cell.lo + size * Vec3{static_cast<double>(i), static_cast<double>(j),
+                                    static_cast<double>(k)},
+              size};
+          out.add_hex(next_hex++, mesh.hex_part[h], child, shape, child_cell);
+        }
+      }
+    }
+  }
+  const std::size_t new_nodes = mesh.nodes.size() - nodes_before;
+  mesh.hexes = std::move(out.hexes);
+  mesh.hex_id = std::move(out.hex_id);
+  mesh.hex_part = std::move(out.hex_part);
+  mesh.hex_shape = std::move(out.hex_shape);
+  mesh.hex_cell = std::move(out.hex_cell);
+  if (new_nodes != expected_new_nodes) {
+    throw InputError("*CHANGE_P-ORDER: refinement produced " + std::to_string(new_nodes) +
+                     " new nodes where a conforming mesh has " +
+                     std::to_string(expected_new_nodes) +
+                     "; hexes sharing nodes follow different shapes (e.g. nodes merged between "
+                     "generated components or a *SMOOTH_MESH surface meeting one)");
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> refine_and_smooth(Mesh& mesh, const std::vector<OrderChange>& orders,
+                                           const std::vector<SurfaceSmoothing>& smoothing) {
+  const std::size_t hex_count = mesh.hex_count();
+  mesh.hex_shape.resize(hex_count, -1);
+  mesh.hex_cell.resize(hex_count);
+  std::vector<std::string> notes;
+
+  // 1. Final order of every hex: the highest order that selects it (orders only go up).
+  std::vector<int> order(hex_count, 1);
+  std::vector<std::vector<std::size_t>> order_selection;  // per (change, part), for the notes
+  for (const OrderChange& change : orders) {
+    if (change.order < 1 || change.order > 3) {
+      throw InputError("*CHANGE_P-ORDER order must be 1, 2 or 3 (got " +
+                       std::to_string(change.order) + ")");
+    }
+    for (std::int64_t part : change.parts) {
+      order_selection.push_back(select(mesh, part, change.region, "*CHANGE_P-ORDER"));
+      for (std::size_t h : order_selection.back()) order[h] = std::max(order[h], change.order);
+    }
+  }
+  check_conformity(mesh, order);
+
+  // 2. Curved edges of the *SMOOTH_MESH surfaces (exterior faces of hexes without exact shape).
+  const auto faces = face_uses(mesh);
+  std::unordered_map<std::uint64_t, Vec3> curvature;
+  for (const SurfaceSmoothing& smooth : smoothing) {
+    if (smooth.internal) {
+      throw InputError(
+          "*SMOOTH_MESH internal = 1 (smoothing internal interfaces) is not "
+          "supported yet; use 0");
+    }
+    if (!(smooth.max_angle > 0.0 && smooth.max_angle <= 180.0)) {
+      throw InputError("*SMOOTH_MESH angle must be in (0, 180] degrees (got " +
+                       degrees(smooth.max_angle) + ")");
+    }
+    for (std::int64_t part : smooth.parts) {
+      std::vector<char> chosen(hex_count, 0);
+      std::size_t refined = 0, exact = 0;
+      for (std::size_t h : select(mesh, part, smooth.region, "*SMOOTH_MESH")) {
+        chosen[h] = 1;
+        if (order[h] > 1) ++(mesh.hex_shape[h] >= 0 ? exact : refined);
+      }
+      std::vector<Face> surface;
+      for (const auto& [key, use] : faces) {
+        if (use.count != 1 || !chosen[use.hex] || mesh.hex_shape[use.hex] >= 0) continue;
+        Face f;
+        for (int a = 0; a < 4; ++a) f[a] = mesh.hexes[use.hex][kHexFaces[use.face][a]];
+        surface.push_back(f);
+      }
+      const std::string who = "part " + std::to_string(part) + ": *SMOOTH_MESH ";
+      if (refined + exact == 0) {
+        notes.push_back(who +
+                        "moves no nodes: its hexes stay linear (smoothing places only the "
+                        "new nodes of *CHANGE_P-ORDER)");
+        continue;
+      }
+      if (exact > 0) {
+        notes.push_back(who + "not needed for " + std::to_string(exact) +
+                        " refined hexes of generated components: their new nodes follow the "
+                        "exact component shape");
+      }
+      if (refined == 0) continue;
+      std::size_t rejected = 0;
+      const auto curved =
+          detail::smooth_edge_curvatures(mesh.nodes, surface, smooth.max_angle, rejected);
+      curvature.insert(curved.begin(), curved.end());
+      notes.push_back(who + std::to_string(surface.size()) +
+                      " exterior faces made smooth (Nagata patches) for the new nodes of " +
+                      std::to_string(refined) + " refined hexes; " + std::to_string(curved.size()) +
+                      " edges curved, edges with face angles >= " + degrees(smooth.max_angle) +
+                      " degrees kept straight" +
+                      (rejected > 0 ? "; " + std::to_string(rejected) +
+                                          " edges kept straight because the averaged normals "
+                                          "disagree with the facets"
+                                    : std::string()));
+    }
+  }
+
+  // 3. Split.
+  split_hexes(mesh, order, faces, curvature);
+
+  // 4. One note per (order change, part).
+  std::size_t selection = 0;
+  for (const OrderChange& change : orders) {
+    for (std::int64_t part : change.parts) {
+      const auto& chosen = order_selection[selection++];
+      std::size_t split = 0, higher = 0;
+      for (std::size_t h : chosen) ++(order[h] == change.order ? split : higher);
+      std::string note = "part " + std::to_string(part) + ": ";
+      if (chosen.empty()) {
+        note += "no hex centroid inside the *CHANGE_P-ORDER region; nothing changed";
+      } else if (change.order == 1) {
+        note += std::to_string(chosen.size()) + " hexes stay linear (order 1)";
+      } else {
+        note += std::to_string(split) + " hexes split " + split_name(change.order) + " into " +
+                std::to_string(
+                    split * static_cast<std::size_t>(change.order * change.order * change.order)) +
+                " (order " + std::to_string(change.order) + " represented by its nodal resolution)";
+        if (higher > 0) {
+          note += "; " + std::to_string(higher) + " selected hexes got a higher order elsewhere";
+        }
+      }
+      notes.push_back(note);
+    }
+  }
+  return notes;
+}
+
+}  // namespace abut
