@@ -94,7 +94,7 @@ class Motion {
 };
 
 // Matrix-vector product with a row-major 3x3 matrix.
-inline Vec3 apply(const std::array<double, 9>& m, const Vec3& v) {
+inline Vec3 mat_vec(const std::array<double, 9>& m, const Vec3& v) {
   return {m[0] * v.x + m[1] * v.y + m[2] * v.z, m[3] * v.x + m[4] * v.y + m[5] * v.z,
           m[6] * v.x + m[7] * v.y + m[8] * v.z};
 }
