@@ -42,8 +42,8 @@ void hex8_gradient(const Hex8Coords& x, Hex8Gradient& g) {
     g.bz[a] = b.z;
   }
   // V is homogeneous of degree 3 in the c_k (Euler): 3 V = sum_k c_k . dV/dc_k.
-  g.volume = (8.0 / 3.0) * (dot(c1, g1) + dot(c2, g2) + dot(c3, g3) + dot(c4, g4) +
-                            dot(c5, g5) + dot(c6, g6));
+  g.volume = (8.0 / 3.0) *
+             (dot(c1, g1) + dot(c2, g2) + dot(c3, g3) + dot(c4, g4) + dot(c5, g5) + dot(c6, g6));
   const Vec3 m[4] = {c4, c5, c6, c7};
   for (int alpha = 0; alpha < 4; ++alpha) {
     g.mx[alpha] = m[alpha].x;

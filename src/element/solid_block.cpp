@@ -193,7 +193,8 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
                          0.5 * scale * (l[5] + l[7]), 0.5 * scale * (l[6] + l[2])}};
     Mat3 half_spin;  // W dt / 2
     for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) half_spin[3 * i + j] = 0.25 * scale * (l[3 * i + j] - l[3 * j + i]);
+      for (int j = 0; j < 3; ++j)
+        half_spin[3 * i + j] = 0.25 * scale * (l[3 * i + j] - l[3 * j + i]);
     }
     rotation = cayley_rotation(half_spin);
   }
@@ -233,8 +234,8 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
     }
   }
   for (int c = 0; c < 6; ++c) stored[c] = now[c];
-  internal_work[e] = dt > 0.0 ? 0.5 * double_dot(add(rotated, now), strain_increment) * mid_volume
-                              : 0.0;
+  internal_work[e] =
+      dt > 0.0 ? 0.5 * double_dot(add(rotated, now), strain_increment) * mid_volume : 0.0;
 
   // 4. Hourglass forces.
   double gamma[4][8];

@@ -11,8 +11,8 @@ Sym3 mooney_rivlin_stress(const MooneyRivlinParams& p, const Mat3& f) {
   const auto row_dot = [&](int i, int j) {
     return iso * (f[3 * i] * f[3 * j] + f[3 * i + 1] * f[3 * j + 1] + f[3 * i + 2] * f[3 * j + 2]);
   };
-  const Sym3 b_bar{{row_dot(0, 0), row_dot(1, 1), row_dot(2, 2), row_dot(0, 1), row_dot(1, 2),
-                    row_dot(2, 0)}};
+  const Sym3 b_bar{
+      {row_dot(0, 0), row_dot(1, 1), row_dot(2, 2), row_dot(0, 1), row_dot(1, 2), row_dot(2, 0)}};
   const SymEigen e = eigen_symmetric(b_bar);
   const double l1 = e.values[0], l2 = e.values[1], l3 = e.values[2];
   const double a = 2.0 * p.c1 / 3.0, b = 2.0 * p.c2 / 3.0;

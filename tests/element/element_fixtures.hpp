@@ -49,8 +49,8 @@ inline Nodes box_grid(int nx, int ny, int nz, Vec3 size, double distortion,
 // A single visibly distorted hexahedron (no two faces parallel, warped faces).
 inline Nodes distorted_hex(std::vector<Hex8>& hexes) {
   Nodes nodes;
-  const Vec3 p[8] = {{0.0, 0.0, 0.0},   {1.1, 0.1, -0.05}, {1.3, 1.2, 0.1},  {-0.1, 0.9, 0.05},
-                     {0.1, -0.1, 1.0},  {1.0, 0.05, 1.2},  {1.2, 1.1, 0.95}, {0.05, 1.05, 1.1}};
+  const Vec3 p[8] = {{0.0, 0.0, 0.0},  {1.1, 0.1, -0.05}, {1.3, 1.2, 0.1},  {-0.1, 0.9, 0.05},
+                     {0.1, -0.1, 1.0}, {1.0, 0.05, 1.2},  {1.2, 1.1, 0.95}, {0.05, 1.05, 1.1}};
   for (int a = 0; a < 8; ++a) nodes.add(a + 1, p[a]);
   hexes = {Hex8{0, 1, 2, 3, 4, 5, 6, 7}};
   return nodes;

@@ -1,12 +1,11 @@
 // Geometry of the one-point hexahedron against direct 2x2x2 Gauss quadrature of the trilinear
 // map (exact for V and int grad N dV: the integrands are at most quadratic in each natural
 // coordinate; Hughes, The Finite Element Method, 2000, §3.8).
-#include "abut/element/hex8.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "abut/element/hex8.hpp"
 #include "element_fixtures.hpp"
 
 namespace abut {

@@ -66,8 +66,8 @@ std::array<double, 9> rotation(Vec3 axis, double angle) {
 // element forces must be the constant-stress forces alone (no hourglass part).
 void run_patch_test(const Nodes& nodes, const std::vector<Hex8>& hexes,
                     std::optional<std::size_t> interior_node) {
-  const std::array<double, 9> a{1.2e-3, -0.4e-3, 0.7e-3, 0.9e-3, -0.8e-3, 0.3e-3,
-                                -0.5e-3, 0.6e-3, 1.1e-3};
+  const std::array<double, 9> a{1.2e-3, -0.4e-3, 0.7e-3, 0.9e-3, -0.8e-3,
+                                0.3e-3, -0.5e-3, 0.6e-3, 1.1e-3};
   const Vec3 shift{0.01, -0.02, 0.005};
   const double dt = 1e-6;
   SolidBlock block(1, kSteel, hexes, nodes);
@@ -79,8 +79,8 @@ void run_patch_test(const Nodes& nodes, const std::vector<Hex8>& hexes,
   std::array<double, 9> half{};
   for (int i = 0; i < 9; ++i) half[i] = (i % 4 == 0 ? 1.0 : 0.0) + 0.5 * a[i];
   const std::array<double, 9> g = multiply(a, inverse(half));
-  const double eps[6] = {g[0], g[4], g[8], 0.5 * (g[1] + g[3]), 0.5 * (g[5] + g[7]),
-                         0.5 * (g[6] + g[2])};
+  const double eps[6] = {
+      g[0], g[4], g[8], 0.5 * (g[1] + g[3]), 0.5 * (g[5] + g[7]), 0.5 * (g[6] + g[2])};
   const double lambda = lame_lambda(kSteel), mu = lame_mu(kSteel);
   const double tr = eps[0] + eps[1] + eps[2];
   double expected[6];
@@ -115,8 +115,8 @@ void run_patch_test(const Nodes& nodes, const std::vector<Hex8>& hexes,
           -(expected[5] * geo.bx[n] + expected[4] * geo.by[n] + expected[2] * geo.bz[n])};
       for (int i = 0; i < 3; ++i) {
         force_scale = std::max(force_scale, std::abs(f[i]));
-        EXPECT_NEAR(forces[24 * e + 3 * n + i], f[i], 1e-10 * scale * std::cbrt(geo.volume) *
-                                                          std::cbrt(geo.volume));
+        EXPECT_NEAR(forces[24 * e + 3 * n + i], f[i],
+                    1e-10 * scale * std::cbrt(geo.volume) * std::cbrt(geo.volume));
         node_sum[3 * hexes[e][n] + i] += forces[24 * e + 3 * n + i];
       }
     }
@@ -174,7 +174,9 @@ TEST(SolidBlockElastic, RigidRotationRotatesAnExistingStress) {
   Motion motion(nodes);
   block.update(motion.state(), 0.0);
   const double dt = 1e-6, strain = 1e-3;
-  const auto stretch = [&](const Vec3& x, double t) { return Vec3{x.x * (1 + strain * t), x.y, x.z}; };
+  const auto stretch = [&](const Vec3& x, double t) {
+    return Vec3{x.x * (1 + strain * t), x.y, x.z};
+  };
   for (int n = 1; n <= 100; ++n) {
     motion.move([&](const Vec3& x) { return stretch(x, n / 100.0); }, dt);
     block.update(motion.state(), dt);

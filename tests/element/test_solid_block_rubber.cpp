@@ -25,7 +25,8 @@ BlockStep deform(SolidBlock& block, Motion& motion, const std::array<double, 9>&
   for (int n = 1; n <= steps; ++n) {
     const double s = static_cast<double>(n) / steps;
     std::array<double, 9> f{};
-    for (int i = 0; i < 9; ++i) f[i] = (i % 4 == 0 ? 1.0 : 0.0) + s * (f_end[i] - (i % 4 == 0 ? 1.0 : 0.0));
+    for (int i = 0; i < 9; ++i)
+      f[i] = (i % 4 == 0 ? 1.0 : 0.0) + s * (f_end[i] - (i % 4 == 0 ? 1.0 : 0.0));
     motion.move([&](const Vec3& x) { return mat_vec(f, x); }, dt);
     step = block.update(motion.state(), dt);
   }
@@ -140,8 +141,11 @@ TEST(SolidBlockRubber, ViscousStressFollowsTheRelaxationClosedForm) {
   block.update(motion.state(), 0.0);
   for (int n = 1; n <= steps; ++n) {
     const double t = n * dt;
-    motion.move([&](const Vec3& x) { return Vec3{x.x * std::exp(rate * t), x.y * std::exp(-rate * t), x.z}; },
-                dt);
+    motion.move(
+        [&](const Vec3& x) {
+          return Vec3{x.x * std::exp(rate * t), x.y * std::exp(-rate * t), x.z};
+        },
+        dt);
     block.update(motion.state(), dt);
   }
   const double t = steps * dt;

@@ -1,10 +1,10 @@
 // Mooney-Rivlin material point: spectral IMPETUS form against the invariant form of the same
 // potential, and the viscous exponential-integrator factors.
-#include "abut/material/mooney_rivlin.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "abut/material/mooney_rivlin.hpp"
 
 namespace abut {
 namespace {

@@ -1,10 +1,10 @@
 // Symmetric-tensor kit: Jacobi eigen-solver and the Hughes-Winget rotation increment.
-#include "abut/material/sym_tensor.hpp"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+
+#include "abut/material/sym_tensor.hpp"
 
 namespace abut {
 namespace {

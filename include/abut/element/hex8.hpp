@@ -11,11 +11,11 @@ namespace abut {
 inline constexpr std::array<double, 8> kHex8Xi{-1, 1, 1, -1, -1, 1, 1, -1};
 inline constexpr std::array<double, 8> kHex8Eta{-1, -1, 1, 1, -1, -1, 1, 1};
 inline constexpr std::array<double, 8> kHex8Zeta{-1, -1, -1, -1, 1, 1, 1, 1};
-inline constexpr std::array<std::array<double, 8>, 4> kHex8Hourglass{{
-    {1, 1, -1, -1, -1, -1, 1, 1},   // eta zeta
-    {1, -1, -1, 1, -1, 1, 1, -1},   // zeta xi
-    {1, -1, 1, -1, 1, -1, 1, -1},   // xi eta
-    {-1, 1, -1, 1, 1, -1, 1, -1}}};  // xi eta zeta
+inline constexpr std::array<std::array<double, 8>, 4> kHex8Hourglass{
+    {{1, 1, -1, -1, -1, -1, 1, 1},    // eta zeta
+     {1, -1, -1, 1, -1, 1, 1, -1},    // zeta xi
+     {1, -1, 1, -1, 1, -1, 1, -1},    // xi eta
+     {-1, 1, -1, 1, 1, -1, 1, -1}}};  // xi eta zeta
 
 struct Hex8Coords {
   double x[8], y[8], z[8];

@@ -17,8 +17,9 @@
 //   h_k(t) = (2 alpha_k / beta_k) int_0^t dev(D)(tau) exp((tau - t)/beta_k) dtau,
 // updated over a step with constant D by the exact recursion
 //   h_k <- exp(-dt/beta_k) h_k + 2 alpha_k (1 - exp(-dt/beta_k)) dev(D).
-// beta_k == 0 is the limit beta -> 0, the Newtonian term 2 alpha_k dev(D) (decay 0, gain 2 alpha_k).
-// alpha_k == 0 switches a term off. The element rotates h_k with the stress (objective update).
+// beta_k == 0 is the limit beta -> 0, the Newtonian term 2 alpha_k dev(D) (decay 0, gain 2
+// alpha_k). alpha_k == 0 switches a term off. The element rotates h_k with the stress (objective
+// update).
 #include <array>
 
 #include "abut/material/material.hpp"
