@@ -413,6 +413,9 @@ double SolidBlock::initial_stable_step(const Nodes& reference) const {
 }
 
 BlockStep SolidBlock::update(const NodalState& state, double dt) {
+  if (!(dt >= 0.0) || !std::isfinite(dt)) {
+    throw InstabilityError(input_prefix(impl_->part_id) + "time step must be finite and >= 0");
+  }
   Impl& m = *impl_;
   if (const auto* e = std::get_if<ElasticParams>(&m.material)) {
     return m.step(state, dt, ElasticLaw{lame_constants(*e)});
