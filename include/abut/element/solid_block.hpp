@@ -59,6 +59,17 @@ class SolidBlock {
   // Per-element results at the last update (for output).
   void von_mises_stress(std::vector<double>& out) const;  // resized to size()
   void pressure(std::vector<double>& out) const;          // p = -trace(sigma)/3
+  // Cauchy stress, 6 per element (xx, yy, zz, xy, yz, zx); resized to 6 * size().
+  void stress(std::vector<double>& out) const;
+
+  // Hourglass control (see solid_block.cpp): stiffness-type Flanagan-Belytschko forces with
+  // stiffness hourglass_coefficient * 2 G * (b:b) / V, G the (initial) shear modulus.
+  static constexpr double kDefaultHourglassCoefficient = 0.05;
+  void set_hourglass_coefficient(double coefficient);  // >= 0, else InputError
+  double hourglass_coefficient() const;
+  // User element ids (one per hex) so that an InstabilityError names the element as the user
+  // knows it; without them the message gives the index in the block.
+  void set_element_ids(std::vector<std::int64_t> ids);
 
  private:
   struct Impl;
