@@ -54,7 +54,7 @@ struct PartSet {
 };
 
 // An `entype, enid` pair of the deck.
-enum class EntityType { Node, NodeSet, Part, PartSet, All, Geometry };
+enum class EntityType { Node, NodeSet, Part, PartSet, All, GeometryRegion };  // GeometryRegion: entype G
 struct EntityRef {
   EntityType type = EntityType::All;
   std::int64_t id = 0;
