@@ -250,14 +250,17 @@ ContactInterface::Hit ContactInterface::closest_facet(const Pass& pass, std::siz
     // A point never contacts its own facet nor a facet sharing a node with it (self contact).
     if (share_a_node(own_nodes, nodes)) continue;
     const QuadCorners c = corners_of(nodes, in);
+    // The distance to the facet's bounding box bounds the distance to the facet from below:
+    // skip facets that cannot be within reach or closer than the best one so far.
     const double reach = std::max(target.depth[f], edge_tolerance);
-    bool near = true;
-    for (int i = 0; i < 3 && near; ++i) {
+    double box_distance2 = 0.0;
+    for (int i = 0; i < 3; ++i) {
       const double lo = std::min({c[0][i], c[1][i], c[2][i], c[3][i]});
       const double hi = std::max({c[0][i], c[1][i], c[2][i], c[3][i]});
-      near = x_p[i] >= lo - reach && x_p[i] <= hi + reach;
+      const double out = std::max({lo - x_p[i], x_p[i] - hi, 0.0});
+      box_distance2 += out * out;
     }
-    if (!near) continue;
+    if (box_distance2 > reach * reach || box_distance2 > best_distance * best_distance) continue;
     const QuadProjection q = project_onto_quad(c, x_p);
     if (dot(n_p, q.normal) >= 0.0) continue;  // the surfaces must face each other
     // Beyond a sharp (or free) edge only within delta_edge; beyond a smooth edge the
