@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "abut/contact/friction.hpp"
@@ -454,6 +455,11 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
 }
 
 void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
+  const std::size_t n = mass_.size();
+  for (std::size_t size : {in.x.size(), in.y.size(), in.z.size(), in.vx.size(), in.vy.size(), in.vz.size(),
+                           out.fx.size(), out.fy.size(), out.fz.size()})
+    if (size < n)
+      throw std::invalid_argument("ContactInterface::apply: nodal arrays shorter than the node masses");
   stats_.force = {};
   stats_.normal_force = stats_.tangential_force = stats_.elastic_energy = stats_.max_penetration = 0.0;
   stats_.active_points = 0;
