@@ -455,10 +455,10 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
 }
 
 void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
-  const std::size_t n = mass_.size();
+  const std::size_t node_count = mass_.size();
   for (std::size_t size : {in.x.size(), in.y.size(), in.z.size(), in.vx.size(), in.vy.size(), in.vz.size(),
                            out.fx.size(), out.fy.size(), out.fz.size()})
-    if (size < n)
+    if (size < node_count)
       throw std::invalid_argument("ContactInterface::apply: nodal arrays shorter than the node masses");
   stats_.force = {};
   stats_.normal_force = stats_.tangential_force = stats_.elastic_energy = stats_.max_penetration = 0.0;
