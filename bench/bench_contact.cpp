@@ -1,0 +1,67 @@
+// ns per contact point-cycle: two flat 100 x 100 facet surfaces pressed together (symmetric,
+// 2x2 points per facet, friction), one apply() per iteration, nodes moving slightly each cycle.
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include <vector>
+
+#include "abut/contact/interface.hpp"
+
+namespace {
+
+struct Plates {
+  std::vector<double> x, y, z, vx, vy, vz, mass, fx, fy, fz;
+  abut::ContactSurface lower, upper;
+
+  std::int32_t node(double px, double py, double pz) {
+    x.push_back(px), y.push_back(py), z.push_back(pz), mass.push_back(1e-3);
+    return static_cast<std::int32_t>(x.size() - 1);
+  }
+  void plate(abut::ContactSurface& s, int n, double offset, double h, bool up) {
+    const auto first = static_cast<std::int32_t>(x.size());
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) node(offset + 0.01 * i, offset + 0.01 * j, h);
+    auto id = [&](int i, int j) { return first + j * (n + 1) + i; };
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        if (up)
+          s.add({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)}, 1, 1e12, 0.01);
+        else
+          s.add({id(i, j), id(i, j + 1), id(i + 1, j + 1), id(i + 1, j)}, 2, 1e12, 0.01);
+  }
+  Plates(int n) {
+    plate(lower, n, 0.0, 0.0, true);
+    plate(upper, n, 0.003, 1e-4, false);  // shifted: every point overlaps a facet interior
+    for (auto* v : {&vx, &vy, &vz, &fx, &fy, &fz}) v->assign(x.size(), 0.0);
+  }
+  abut::ContactInput input(double t) const { return {x, y, z, vx, vy, vz, t, 1e-7}; }
+};
+
+void BM_ContactPointCycle(benchmark::State& state) {
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  Plates p(100);
+  abut::ContactSettings s;
+  s.friction = 0.2;
+  abut::ContactInterface contact(s, p.upper, p.lower, p.mass, p.input(0.0));
+  const std::size_t upper_first = (101 * 101);
+  for (std::size_t i = upper_first; i < p.x.size(); ++i) p.z[i] -= 2e-4, p.vx[i] = 1.0;  // 1e-4 penetration
+  abut::ContactForces out{p.fx, p.fy, p.fz};
+  double t = 0.0;
+  for (auto _ : state) {
+    for (std::size_t i = upper_first; i < p.x.size(); ++i) p.x[i] += 1e-7;
+    contact.apply(p.input(t), out);
+    t += 1e-7;
+    benchmark::DoNotOptimize(p.fx.data());
+  }
+  if (contact.stats().active_points == 0) state.SkipWithError("no contact");
+  const auto points = static_cast<double>(contact.point_count());
+  state.counters["points"] = points;
+  state.counters["active"] = static_cast<double>(contact.stats().active_points);
+  state.counters["ns_per_point_cycle"] =
+      benchmark::Counter(points * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  omp_set_num_threads(omp_get_num_procs());
+}
+BENCHMARK(BM_ContactPointCycle)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace

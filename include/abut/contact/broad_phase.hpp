@@ -1,0 +1,50 @@
+#pragma once
+// Broad phase: which facets may touch which contact points.
+//
+// Facet bounding boxes (inflated by the caller: detection depth + search margin) are bucket-
+// sorted into a uniform grid whose cell size follows the mean box size, so that a box covers
+// O(1) cells and the cell count stays proportional to the number of boxes: building and
+// querying cost O(facets + points). A point's candidates are the boxes that contain it, in
+// increasing facet order (deterministic, independent of the thread count).
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace abut {
+
+struct Box {
+  std::array<double, 3> lo{}, hi{};
+  bool contains(double x, double y, double z) const {
+    return x >= lo[0] && x <= hi[0] && y >= lo[1] && y <= hi[1] && z >= lo[2] && z <= hi[2];
+  }
+};
+
+// Candidate facets of each point, compressed rows: facets[offsets[p] .. offsets[p+1]).
+struct CandidateList {
+  std::vector<std::size_t> offsets;
+  std::vector<std::int32_t> facets;
+  std::size_t point_count() const { return offsets.empty() ? 0 : offsets.size() - 1; }
+};
+
+class BucketGrid {
+ public:
+  void build(std::span<const Box> boxes);
+  // Fills `out` with the boxes containing each point (OpenMP over points).
+  void query(std::span<const double> x, std::span<const double> y, std::span<const double> z,
+             CandidateList& out) const;
+  std::size_t cell_count() const { return cell_start_.empty() ? 0 : cell_start_.size() - 1; }
+
+ private:
+  bool cell_of(double x, double y, double z, std::size_t& cell) const;
+
+  std::vector<Box> boxes_;
+  std::array<double, 3> origin_{};
+  double cell_size_ = 1.0;
+  std::array<std::int64_t, 3> dims_{0, 0, 0};
+  std::vector<std::size_t> cell_start_;  // CSR over cells
+  std::vector<std::int32_t> cell_boxes_;
+};
+
+}  // namespace abut

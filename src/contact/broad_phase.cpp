@@ -1,0 +1,119 @@
+#include "abut/contact/broad_phase.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace abut {
+
+void BucketGrid::build(std::span<const Box> boxes) {
+  boxes_.assign(boxes.begin(), boxes.end());
+  cell_start_.clear();
+  cell_boxes_.clear();
+  dims_ = {0, 0, 0};
+  if (boxes_.empty()) return;
+
+  Box all = boxes_[0];
+  double mean_extent = 0.0;
+  for (const Box& b : boxes_) {
+    for (int k = 0; k < 3; ++k) {
+      all.lo[k] = std::min(all.lo[k], b.lo[k]);
+      all.hi[k] = std::max(all.hi[k], b.hi[k]);
+    }
+    mean_extent += std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]});
+  }
+  mean_extent /= static_cast<double>(boxes_.size());
+  origin_ = all.lo;
+
+  // Cells about the size of a box; coarser if that would give more than ~2 cells per box.
+  const double largest = std::max({all.hi[0] - all.lo[0], all.hi[1] - all.lo[1], all.hi[2] - all.lo[2]});
+  cell_size_ = mean_extent > 0.0 ? mean_extent : (largest > 0.0 ? largest : 1.0);
+  const auto max_cells = static_cast<double>(2 * boxes_.size() + 64);
+  for (;;) {
+    double cells = 1.0;
+    for (int k = 0; k < 3; ++k) {
+      dims_[k] = static_cast<std::int64_t>(std::floor((all.hi[k] - all.lo[k]) / cell_size_)) + 1;
+      cells *= static_cast<double>(dims_[k]);
+    }
+    if (cells <= max_cells) break;
+    cell_size_ *= 1.5;
+  }
+
+  auto range = [&](const Box& b, int k, std::int64_t& first, std::int64_t& last) {
+    first = std::clamp(static_cast<std::int64_t>(std::floor((b.lo[k] - origin_[k]) / cell_size_)),
+                       std::int64_t{0}, dims_[k] - 1);
+    last = std::clamp(static_cast<std::int64_t>(std::floor((b.hi[k] - origin_[k]) / cell_size_)),
+                      std::int64_t{0}, dims_[k] - 1);
+  };
+  const auto n_cells = static_cast<std::size_t>(dims_[0] * dims_[1] * dims_[2]);
+  cell_start_.assign(n_cells + 1, 0);
+  // Two passes (count, fill) in box order: a counting sort, linear in the number of boxes.
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 1) {
+      for (std::size_t c = 0; c < n_cells; ++c) cell_start_[c + 1] += cell_start_[c];
+      cell_boxes_.resize(cell_start_[n_cells]);
+    }
+    std::vector<std::size_t> fill;
+    if (pass == 1) fill.assign(cell_start_.begin(), cell_start_.end() - 1);
+    for (std::size_t i = 0; i < boxes_.size(); ++i) {
+      std::int64_t r[3][2];
+      for (int k = 0; k < 3; ++k) range(boxes_[i], k, r[k][0], r[k][1]);
+      for (std::int64_t cz = r[2][0]; cz <= r[2][1]; ++cz)
+        for (std::int64_t cy = r[1][0]; cy <= r[1][1]; ++cy)
+          for (std::int64_t cx = r[0][0]; cx <= r[0][1]; ++cx) {
+            const auto c = static_cast<std::size_t>((cz * dims_[1] + cy) * dims_[0] + cx);
+            if (pass == 0)
+              ++cell_start_[c + 1];
+            else
+              cell_boxes_[fill[c]++] = static_cast<std::int32_t>(i);
+          }
+    }
+  }
+}
+
+bool BucketGrid::cell_of(double x, double y, double z, std::size_t& cell) const {
+  const double p[3] = {x, y, z};
+  std::int64_t idx[3];
+  for (int k = 0; k < 3; ++k) {
+    const double s = std::floor((p[k] - origin_[k]) / cell_size_);
+    // Outside the grid (or NaN): no box can contain the point.
+    if (!(s >= 0.0) || s >= static_cast<double>(dims_[k])) return false;
+    idx[k] = static_cast<std::int64_t>(s);
+  }
+  cell = static_cast<std::size_t>((idx[2] * dims_[1] + idx[1]) * dims_[0] + idx[0]);
+  return true;
+}
+
+void BucketGrid::query(std::span<const double> x, std::span<const double> y,
+                       std::span<const double> z, CandidateList& out) const {
+  const std::size_t n = x.size();
+  out.offsets.assign(n + 1, 0);
+  if (boxes_.empty()) {
+    out.facets.clear();
+    return;
+  }
+  // Pass 1: count per point; prefix sum; pass 2: fill. Each point writes only its own row.
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 1) {
+      for (std::size_t p = 0; p < n; ++p) out.offsets[p + 1] += out.offsets[p];
+      out.facets.resize(out.offsets[n]);
+    }
+#pragma omp parallel for schedule(static)
+    for (std::size_t p = 0; p < n; ++p) {
+      std::size_t cell = 0;
+      if (!cell_of(x[p], y[p], z[p], cell)) continue;
+      std::size_t count = 0;
+      std::size_t at = pass == 1 ? out.offsets[p] : 0;
+      for (std::size_t k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
+        const std::int32_t b = cell_boxes_[k];
+        if (!boxes_[b].contains(x[p], y[p], z[p])) continue;
+        if (pass == 0)
+          ++count;
+        else
+          out.facets[at++] = b;
+      }
+      if (pass == 0) out.offsets[p + 1] = count;
+    }
+  }
+}
+
+}  // namespace abut

@@ -1,0 +1,82 @@
+#include "abut/contact/quad.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace abut {
+namespace {
+
+constexpr double kInsideTolerance = 1e-10;  // reference coordinates
+constexpr int kMaxIterations = 25;
+
+// Completes a projection from its facet coordinates.
+void finish(const QuadCorners& c, const Vec3& p, QuadProjection& r) {
+  double jacobian = 0.0;
+  r.point = quad_point(c, r.xi, r.eta);
+  r.normal = quad_normal(c, r.xi, r.eta, jacobian);
+  const Vec3 d = p - r.point;
+  r.gap = dot(d, r.normal);
+  r.distance = norm(d);
+  if (r.crossed_edges != 0) r.overshoot = norm(d - r.normal * r.gap);
+}
+
+}  // namespace
+
+QuadProjection project_onto_quad(const QuadCorners& c, const Vec3& p) {
+  QuadProjection r;
+  // x(xi, eta) = x0 + xi a + eta b + xi eta h, so x_xi_xi = x_eta_eta = 0 and x_xi_eta = h.
+  const Vec3 h = (c[0] - c[1] + c[2] - c[3]) * 0.25;
+  double xi = 0.0, eta = 0.0;
+  for (int it = 0; it < kMaxIterations; ++it) {
+    Vec3 d_xi, d_eta;
+    quad_tangents(c, xi, eta, d_xi, d_eta);
+    const Vec3 res = quad_point(c, xi, eta) - p;
+    const double g0 = dot(d_xi, res), g1 = dot(d_eta, res);
+    const double a00 = dot(d_xi, d_xi), a11 = dot(d_eta, d_eta);
+    double a01 = dot(d_xi, d_eta) + dot(h, res);
+    double det = a00 * a11 - a01 * a01;
+    if (!(det > 1e-14 * a00 * a11)) {  // indefinite Hessian far off a warped facet: Gauss-Newton
+      a01 = dot(d_xi, d_eta);
+      det = a00 * a11 - a01 * a01;
+      if (!(det > 0.0)) break;
+    }
+    const double dxi = -(a11 * g0 - a01 * g1) / det;
+    const double deta = -(a00 * g1 - a01 * g0) / det;
+    // Iterates far outside the facet only tell that the closest point is on the boundary.
+    xi = std::clamp(xi + dxi, -2.0, 2.0);
+    eta = std::clamp(eta + deta, -2.0, 2.0);
+    if (std::abs(dxi) + std::abs(deta) < 1e-13) break;
+  }
+  if (std::abs(xi) <= 1.0 + kInsideTolerance && std::abs(eta) <= 1.0 + kInsideTolerance) {
+    r.xi = std::clamp(xi, -1.0, 1.0);
+    r.eta = std::clamp(eta, -1.0, 1.0);
+    finish(c, p, r);
+    return r;
+  }
+
+  // Closest point on the boundary: the edges are straight segments.
+  constexpr double ref[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  double best = -1.0;
+  for (int e = 0; e < 4; ++e) {
+    const Vec3& a = c[e];
+    const Vec3& b = c[(e + 1) % 4];
+    const Vec3 ab = b - a;
+    const double len2 = dot(ab, ab);
+    const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+    const Vec3 q = a + ab * t;
+    const double d2 = dot(p - q, p - q);
+    if (best < 0.0 || d2 < best) {
+      best = d2;
+      r.xi = ref[e][0] + (ref[(e + 1) % 4][0] - ref[e][0]) * t;
+      r.eta = ref[e][1] + (ref[(e + 1) % 4][1] - ref[e][1]) * t;
+      // At a corner the point passes both edges that meet there.
+      r.crossed_edges = static_cast<std::uint8_t>(1u << e);
+      if (t == 0.0) r.crossed_edges |= static_cast<std::uint8_t>(1u << ((e + 3) % 4));
+      if (t == 1.0) r.crossed_edges |= static_cast<std::uint8_t>(1u << ((e + 1) % 4));
+    }
+  }
+  finish(c, p, r);
+  return r;
+}
+
+}  // namespace abut
