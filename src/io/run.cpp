@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fmt/format.h>
+#include <optional>
 #include <ostream>
 #include <vector>
 
@@ -53,6 +54,12 @@ class StateWriter {
     }
     std::vector<FieldView> point_fields{{"displacement", 3, displacement_}, {"velocity", 3, velocity_}};
     std::vector<FieldView> cell_fields{{"part_id", 1, part_id_}};
+    if (sim.has_contact()) {
+      sim.contact_fields(contact_force_, contact_pressure_, wear_);
+      point_fields.push_back({"contact_force", 3, contact_force_});
+      point_fields.push_back({"contact_pressure", 1, contact_pressure_});
+      point_fields.push_back({"wear", 1, wear_});
+    }
     if (!failed) {
       sim.von_mises_stress(von_mises_);
       sim.pressure(pressure_);
@@ -75,14 +82,20 @@ class StateWriter {
   PvdSeries series_;
   double last_time_ = 0.0;
   std::vector<double> displacement_, velocity_, part_id_, von_mises_, pressure_;
+  std::vector<double> contact_force_, contact_pressure_, wear_;
 };
 
 class HistoryWriter {
  public:
-  explicit HistoryWriter(const fs::path& dir)
+  HistoryWriter(const fs::path& dir, bool with_contact)
       : energy_(dir / "energy.csv", {"kinetic", "internal", "hourglass", "contact", "friction",
                                      "external_work", "total", "balance_error"}),
-        parts_(dir / "parts.csv", {"part", "mass", "x", "y", "z", "vx", "vy", "vz", "kinetic", "internal"}) {}
+        parts_(dir / "parts.csv", {"part", "mass", "x", "y", "z", "vx", "vy", "vz", "kinetic", "internal"}) {
+    if (with_contact)
+      contact_.emplace(dir / "contact.csv",
+                       std::vector<std::string>{"contact", "fx", "fy", "fz", "normal_force", "tangential_force",
+                                                "energy", "friction_energy", "max_penetration", "active_points"});
+  }
 
   void write(const Simulation& sim) {
     if (written_ && sim.time() <= last_time_) return;
@@ -95,10 +108,20 @@ class HistoryWriter {
       parts_.write_row(sim.time(), {static_cast<std::int64_t>(p.part_id), p.mass, p.centre_of_mass.x,
                                     p.centre_of_mass.y, p.centre_of_mass.z, p.velocity.x, p.velocity.y,
                                     p.velocity.z, p.kinetic, p.internal});
+    if (contact_) {
+      for (const ContactReport& c : sim.contact_reports()) {
+        const ContactStats& st = c.stats;
+        contact_->write_row(sim.time(), {static_cast<std::int64_t>(c.id), st.force.x, st.force.y, st.force.z,
+                                         st.normal_force, st.tangential_force, st.elastic_energy + st.damping_energy,
+                                         st.friction_energy, st.max_penetration,
+                                         static_cast<std::int64_t>(st.active_points)});
+      }
+    }
   }
 
  private:
   CsvHistory energy_, parts_;
+  std::optional<CsvHistory> contact_;
   bool written_ = false;
   double last_time_ = 0.0;
 };
@@ -118,7 +141,7 @@ class Schedule {
 };
 
 void write_summary(const fs::path& path, const Simulation& sim, const RunReport& report,
-                   const Model& model, int threads) {
+                   const Model& model, int threads, const std::string& initial_limit) {
   JsonWriter json;
   json.begin_object();
   json.member("deck", model.deck_path);
@@ -132,7 +155,8 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
   json.member("elements", static_cast<std::int64_t>(model.mesh.hex_count()));
   json.member("ns_per_element_cycle", report.ns_per_element_cycle);
   json.member("initial_time_step", sim.initial_time_step());
-  json.member("time_step_limited_by", sim.time_step_limit());
+  json.member("initial_time_step_limited_by", initial_limit);
+  json.member("final_time_step_limited_by", sim.time_step_limit());
   const Energies e = sim.energies();
   json.key("final_energies").begin_object();
   json.member("kinetic", e.kinetic).member("internal", e.internal).member("hourglass", e.hourglass);
@@ -144,6 +168,29 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
     json.begin_object();
     json.member("id", p.part_id).member("title", p.title).member("rigid", p.rigid);
     json.member("elements", static_cast<std::int64_t>(p.element_count)).member("mass", p.mass);
+    json.end_object();
+  }
+  json.end_array();
+  json.key("contacts").begin_array();
+  for (const ContactReport& c : sim.contact_reports()) {
+    json.begin_object();
+    json.member("id", c.id).member("title", c.title);
+    json.member("integration_points", static_cast<std::int64_t>(c.points));
+    json.member("released_points", static_cast<std::int64_t>(c.released_points));
+    json.key("penalty_per_part").begin_array();
+    for (const PartPenalty& p : c.parts) {
+      json.begin_object().member("part", p.part_id).member("pfac", p.penalty).member("automatic", p.automatic);
+      json.end_object();
+    }
+    json.end_array();
+    json.key("penalty_per_pair").begin_array();
+    for (const PairPenalty& p : c.pairs) {
+      json.begin_object().member("part1", p.part1).member("part2", p.part2).member("pfac", p.penalty);
+      json.end_object();
+    }
+    json.end_array();
+    json.member("max_penetration", c.stats.max_penetration);
+    json.member("friction_energy", c.stats.friction_energy);
     json.end_object();
   }
   json.end_array();
@@ -166,10 +213,17 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
   log << fmt::format("abut: {} nodes, {} hexahedra, {} parts; end time {:.4g}, initial time step {:.4g} ({})\n",
                      model.mesh.nodes.size(), model.mesh.hex_count(), model.parts.size(), t_end,
                      sim.initial_time_step(), sim.time_step_limit());
+  const std::string initial_limit = sim.time_step_limit();
+  for (const ContactReport& c : sim.contact_reports()) {
+    log << fmt::format("abut: contact {}", c.id) << (c.title.empty() ? "" : " \"" + c.title + "\"") << ": pfac";
+    for (const PartPenalty& p : c.parts)
+      log << fmt::format(" part {} = {:.4g}{}", p.part_id, p.penalty, p.automatic ? " (automatic)" : "");
+    log << fmt::format(", {} integration points\n", c.points);
+  }
   log << "abut: writing results to " << options.output_dir.string() << "\n";
 
   StateWriter states(options.output_dir, model);
-  HistoryWriter histories(options.output_dir);
+  HistoryWriter histories(options.output_dir, sim.has_contact());
   Schedule state_schedule(model.time.start_time, state_interval);
   Schedule history_schedule(model.time.start_time, history_interval);
   ProgressReporter progress = ProgressReporter::to_stderr(model.time.start_time, t_end);
@@ -199,7 +253,7 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
   report.ns_per_element_cycle = element_cycles > 0 ? 1e9 * report.wall_seconds / element_cycles : 0.0;
   report.energy_balance_error = sim.energy_balance_error();
   report.pvd = states.pvd();
-  write_summary(options.output_dir / "summary.json", sim, report, model, threads);
+  write_summary(options.output_dir / "summary.json", sim, report, model, threads, initial_limit);
 
   if (report.stable) {
     log << fmt::format("abut: completed {} cycles to t = {:.6g} in {:.2f} s ({:.1f} ns per element-cycle, {} threads)\n",

@@ -8,7 +8,8 @@
 
 #include "abut/element/solid_block.hpp"
 #include "boundary_conditions.hpp"
-#include "hex_volume.hpp"
+#include "contact_set.hpp"
+#include "abut/mesh/skin.hpp"
 #include "rigid_body.hpp"
 
 namespace abut {
@@ -51,6 +52,9 @@ struct Simulation::Impl {
   std::vector<std::int32_t> slot_start;                    // CSR node -> force slots
   std::vector<ForceSlot> slots;
   std::vector<BlockStep> block_steps;
+
+  std::unique_ptr<ContactSet> contacts;
+  std::int64_t limiting_contact = -1;
 
   std::vector<RigidBody> bodies;
   std::vector<PartInfo> parts;
@@ -120,7 +124,7 @@ void Simulation::Impl::setup() {
     if (info.rigid) {
       const double rho = density_of(material);
       for (const std::int32_t e : it->second) {
-        const double v = hex_volume(mesh.hexes[e], x0, y0, z0);
+        const double v = hex_volume(mesh.nodes, mesh.hexes[e]);
         for (const std::int32_t node : mesh.hexes[e]) part_mass[node] += rho * v / 8.0;
       }
     } else {
@@ -212,6 +216,8 @@ void Simulation::Impl::setup() {
   for (std::size_t b = 0; b < bodies.size(); ++b) body_of_part.emplace_back(bodies[b].part_id, b);
   bc = resolve_boundary_conditions(model, rigid_body_of_node, body_of_part);
 
+  contacts = std::make_unique<ContactSet>(model, mass, vhx, vhy, vhz);
+
   fx.assign(n_nodes, 0.0);
   fy.assign(n_nodes, 0.0);
   fz.assign(n_nodes, 0.0);
@@ -259,6 +265,17 @@ void Simulation::Impl::compute_forces(double dt) {
     fy[i] = sy;
     fz[i] = sz;
   }
+  // Contact forces act at x^{n} with the latest velocities v^{n-1/2} (damping, friction).
+  contacts->apply({x, y, z, vhx, vhy, vhz, t, dt}, fx, fy, fz);
+  std::int64_t contact_id = -1;
+  const double contact_step = contacts->stable_step(&contact_id);
+  limiting_contact = -1;
+  if (contact_step < stable) {
+    stable = contact_step;
+    limiting_contact = contact_id;
+  }
+  energy.contact = contacts->elastic_and_damping_energy();
+  energy.friction = contacts->friction_energy();
   energy.internal = 0.0;
   energy.hourglass = 0.0;
   for (const BlockStep& s : block_steps) {
@@ -489,6 +506,7 @@ std::int64_t Simulation::cycle() const { return impl_->n; }
 double Simulation::time_step() const { return impl_->dt_next; }
 double Simulation::initial_time_step() const { return impl_->dt_initial; }
 std::string Simulation::time_step_limit() const {
+  if (impl_->limiting_contact >= 0) return "contact " + std::to_string(impl_->limiting_contact) + " springs";
   if (impl_->limiting_block < 0) return "dt_max of *TIME";
   return "elements of part " + std::to_string(impl_->blocks[impl_->limiting_block].part_id());
 }
@@ -521,6 +539,15 @@ void Simulation::pressure(std::vector<double>& out) const {
 }
 
 Energies Simulation::energies() const { return impl_->energy; }
+
+std::vector<ContactReport> Simulation::contact_reports() const { return impl_->contacts->reports(); }
+
+void Simulation::contact_fields(std::vector<double>& force, std::vector<double>& pressure,
+                                std::vector<double>& wear) const {
+  impl_->contacts->nodal_fields(force, pressure, wear);
+}
+
+bool Simulation::has_contact() const { return !impl_->contacts->empty(); }
 
 double Simulation::energy_balance_error() const {
   const Energies& e = impl_->energy;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "abut/core/vec3.hpp"
+#include "abut/solver/contact_report.hpp"
 #include "abut/solver/model.hpp"
 
 namespace abut {
@@ -78,6 +79,12 @@ class Simulation {
   // Relative energy balance error: (total - total_0 - external_work) / max(total, total_0, |W|).
   double energy_balance_error() const;
   std::vector<PartState> part_states() const;
+
+  // Contact: per interface penalties and statistics; nodal fields summed over interfaces
+  // (force interleaved x, y, z; pressure; accumulated wear).
+  bool has_contact() const;
+  std::vector<ContactReport> contact_reports() const;
+  void contact_fields(std::vector<double>& force, std::vector<double>& pressure, std::vector<double>& wear) const;
 
   // The state saved before the step that failed (positions and velocities), for output.
   const std::vector<double>& last_good_x() const;

@@ -1,0 +1,33 @@
+#pragma once
+// What the solver reports of each *CONTACT: its penalty stiffness per part and per facet pair
+// (seed 000: automatic per part, the smaller of the two in a pair) and its current statistics.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "abut/contact/interface.hpp"
+
+namespace abut {
+
+struct PartPenalty {
+  std::int64_t part_id = 0;
+  double penalty = 0.0;    // pfac [pressure / length]
+  bool automatic = false;  // computed from K, L_min and v_max (or rigid), not given
+};
+
+struct PairPenalty {
+  std::int64_t part1 = 0, part2 = 0;  // part of surface 1, part of surface 2
+  double penalty = 0.0;
+};
+
+struct ContactReport {
+  std::int64_t id = 0;
+  std::string title;
+  std::vector<PartPenalty> parts;
+  std::vector<PairPenalty> pairs;
+  std::size_t points = 0;           // integration points of the interface
+  std::size_t released_points = 0;  // initially deeper than delta0_max
+  ContactStats stats;
+};
+
+}  // namespace abut

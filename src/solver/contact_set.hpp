@@ -1,0 +1,40 @@
+#pragma once
+// The *CONTACT definitions of a model turned into contact-library interfaces: surfaces from
+// parts, part sets or all exterior faces; penalties per part (given or automatic, seed 000);
+// friction and wear functions and gid regions as callbacks into the model.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "abut/contact/interface.hpp"
+#include "abut/solver/contact_report.hpp"
+#include "abut/solver/model.hpp"
+
+namespace abut {
+
+class ContactSet {
+ public:
+  // `node_mass`: lumped nodal masses; initial velocities give v_max of the automatic penalty.
+  ContactSet(const Model& model, std::span<const double> node_mass, std::span<const double> vx0,
+             std::span<const double> vy0, std::span<const double> vz0);
+
+  bool empty() const { return interfaces_.empty(); }
+  // Adds every interface's forces for the state `in`; also keeps them per node for output.
+  void apply(const ContactInput& in, std::span<double> fx, std::span<double> fy, std::span<double> fz);
+  // Smallest stable step of the contact springs and the interface that sets it (-1: none).
+  double stable_step(std::int64_t* limiting_contact) const;
+  double elastic_and_damping_energy() const;  // "contact" column of energy.csv
+  double friction_energy() const;
+
+  std::vector<ContactReport> reports() const;
+  // Nodal output fields summed over all interfaces (force interleaved x, y, z).
+  void nodal_fields(std::vector<double>& force, std::vector<double>& pressure, std::vector<double>& wear) const;
+
+ private:
+  const Model& model_;
+  std::vector<ContactReport> base_reports_;
+  std::vector<ContactInterface> interfaces_;
+  std::vector<double> cfx_, cfy_, cfz_;  // contact force per node, last step
+};
+
+}  // namespace abut
