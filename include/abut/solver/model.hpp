@@ -54,7 +54,11 @@ struct PartSet {
 };
 
 // An `entype, enid` pair of the deck.
+// GCC 12 warns falsely (-Wshadow) that the scoped enumerator Geometry shadows abut::Geometry.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 enum class EntityType { Node, NodeSet, Part, PartSet, All, Geometry };
+#pragma GCC diagnostic pop
 struct EntityRef {
   EntityType type = EntityType::All;
   std::int64_t id = 0;
