@@ -23,6 +23,8 @@ struct Transform {
   // |s| when A = s Q with Q orthogonal (spheres stay spheres), otherwise nothing.
   std::optional<double> uniform_scale() const;
   double diagonal(int i) const { return rows[i][i]; }
+  // det A < 0: the placement mirrors, so hexahedra must be renumbered to stay right-handed.
+  bool mirrors() const { return dot(rows[0], cross(rows[1], rows[2])) < 0.0; }
 
   // The transform that applies `inner` first and then this one.
   Transform after(const Transform& inner) const;

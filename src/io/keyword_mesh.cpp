@@ -52,6 +52,8 @@ void read_element_solid(DeckReader& d, Block& b) {
     const Row r = b.row({"eid", "pid", "n1", "n2", "n3", "n4", "n5", "n6", "n7", "n8"});
     std::array<std::int64_t, 8> nodes{};
     for (std::size_t k = 0; k < 8; ++k) nodes[k] = d.node_id(r, k + 2);
+    // A mirrored hex is inside out; exchanging its bottom and top faces turns it right side out.
+    if (d.frame().transform.mirrors()) std::rotate(nodes.begin(), nodes.begin() + 4, nodes.end());
     d.add_element(d.element_id(r, 0), d.part_id(r, 1), nodes, r.where());
   }
 }
