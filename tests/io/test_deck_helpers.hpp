@@ -24,6 +24,7 @@ SI
 )";
 
 inline DeckResult read(const std::string& text) { return read_deck_string_with_notes(text, "t.k"); }
+inline Model model_of(const std::string& text) { return read_deck_string(text, "t.k"); }
 
 // The InputError that reading `text` raises (a test failure if there is none).
 inline InputError error_of(const std::string& text) {
