@@ -101,6 +101,8 @@ struct SolidBlock::Impl {
   double shear_modulus = 0.0;
   double wave_speed = 0.0;
   double hourglass_coefficient = kDefaultHourglassCoefficient;
+  double bulk_viscosity_quadratic = kDefaultBulkViscosityQuadratic;
+  double bulk_viscosity_linear = kDefaultBulkViscosityLinear;
   int viscous_terms = 0;
 
   std::vector<double> reference_volume;    // 1 per element
@@ -237,6 +239,22 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
   internal_work[e] =
       dt > 0.0 ? 0.5 * double_dot(add(rotated, now), strain_increment) * mid_volume : 0.0;
 
+  // 3. Artificial bulk viscosity in compression (von Neumann-Richtmyer quadratic plus a linear
+  // term, LS-DYNA Theory Manual, "Artificial Bulk Viscosity"): an extra pressure
+  //   q = rho l (C0 l eps_v_dot^2 - C1 c eps_v_dot),  eps_v_dot < 0,  l = V^(1/3),
+  // that spreads shock fronts over a few elements and damps the ringing behind them. It is not
+  // part of the stored stress; its work goes to the internal energy.
+  const double length = std::cbrt(g.volume);
+  double bulk_q = 0.0, q_speed = 0.0;
+  if (dt > 0.0) {
+    const double volume_rate = (strain_increment[0] + strain_increment[1] + strain_increment[2]) / dt;
+    if (volume_rate < 0.0) {
+      q_speed = bulk_viscosity_linear * wave_speed - bulk_viscosity_quadratic * length * volume_rate;
+      bulk_q = -density * length * q_speed * volume_rate;
+      internal_work[e] += -bulk_q * volume_rate * dt * mid_volume;
+    }
+  }
+
   // 4. Hourglass forces.
   double gamma[4][8];
   hex8_hourglass_shape(g, gamma);
@@ -270,9 +288,9 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
   double* fe = &forces[24 * e];
   double check = 0.0;
   for (int a = 0; a < 8; ++a) {
-    const double fx = now[0] * g.bx[a] + now[3] * g.by[a] + now[5] * g.bz[a];
-    const double fy = now[3] * g.bx[a] + now[1] * g.by[a] + now[4] * g.bz[a];
-    const double fz = now[5] * g.bx[a] + now[4] * g.by[a] + now[2] * g.bz[a];
+    const double fx = (now[0] - bulk_q) * g.bx[a] + now[3] * g.by[a] + now[5] * g.bz[a];
+    const double fy = now[3] * g.bx[a] + (now[1] - bulk_q) * g.by[a] + now[4] * g.bz[a];
+    const double fz = now[5] * g.bx[a] + now[4] * g.by[a] + (now[2] - bulk_q) * g.bz[a];
     double h[3] = {0.0, 0.0, 0.0};
     for (int alpha = 0; alpha < 4; ++alpha) {
       for (int i = 0; i < 3; ++i) h[i] += q[3 * alpha + i] * gamma[alpha][a];
@@ -288,7 +306,10 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
   }
 
   // 6. Stable step.
-  stable[e] = hex8_characteristic_length(cur, g.volume) / wave_speed;
+  // With bulk viscosity the step shrinks to l / (Q + sqrt(Q^2 + c^2)), Q = C1 c + C0 l |eps_v_dot|
+  // (same manual, "Time Step Control").
+  const double l_char = hex8_characteristic_length(cur, g.volume);
+  stable[e] = l_char / (q_speed + std::sqrt(q_speed * q_speed + wave_speed * wave_speed));
   failure[e] = kOk;
 }
 
@@ -452,6 +473,13 @@ void SolidBlock::set_hourglass_coefficient(double coefficient) {
 }
 
 double SolidBlock::hourglass_coefficient() const { return impl_->hourglass_coefficient; }
+
+void SolidBlock::set_bulk_viscosity(double quadratic, double linear) {
+  if (!(quadratic >= 0.0) || !(linear >= 0.0))
+    throw InputError("bulk viscosity coefficients must be >= 0");
+  impl_->bulk_viscosity_quadratic = quadratic;
+  impl_->bulk_viscosity_linear = linear;
+}
 
 void SolidBlock::set_element_ids(std::vector<std::int64_t> ids) {
   if (ids.size() != size()) {

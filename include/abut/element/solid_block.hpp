@@ -65,6 +65,11 @@ class SolidBlock {
   // Hourglass control (see solid_block.cpp): stiffness-type Flanagan-Belytschko forces with
   // stiffness hourglass_coefficient * 2 G * (b:b) / V, G the (initial) shear modulus.
   static constexpr double kDefaultHourglassCoefficient = 0.05;
+  // Artificial bulk viscosity (LS-DYNA's defaults): quadratic C0 = 1.5, linear C1 = 0.06.
+  static constexpr double kDefaultBulkViscosityQuadratic = 1.5;
+  static constexpr double kDefaultBulkViscosityLinear = 0.06;
+  // Both >= 0; 0 and 0 switch the bulk viscosity off.
+  void set_bulk_viscosity(double quadratic, double linear);
   void set_hourglass_coefficient(double coefficient);  // >= 0, else InputError
   double hourglass_coefficient() const;
   // User element ids (one per hex) so that an InstabilityError names the element as the user

@@ -1,0 +1,184 @@
+// The end of reading: every reference is checked now that all ids are known, then the mesh is
+// refined and smoothed (*CHANGE_P-ORDER, *SMOOTH_MESH, *PART alpha_max) and the initial
+// velocities are applied to the final nodes.
+#include <algorithm>
+#include <set>
+
+#include "abut/mesh/refine.hpp"
+#include "deck_reader.hpp"
+
+namespace abut::deck {
+namespace {
+
+std::string joined(const std::set<std::int64_t>& ids) {
+  std::string s;
+  std::size_t n = 0;
+  for (const std::int64_t id : ids) {
+    if (n++ == 20) return s + ", ...";
+    s += (s.empty() ? "" : ", ") + std::to_string(id);
+  }
+  return s.empty() ? "none" : s;
+}
+
+SourceLocation with_field(SourceLocation where, const std::string& field) {
+  where.field = field;
+  return where;
+}
+
+const Geometry& geometry_of(const Model& model, const IdReference& ref) {
+  const GeometryEntry* g = model.find_geometry(ref.id);
+  if (!g) {
+    std::set<std::int64_t> ids;
+    for (const auto& e : model.geometries) ids.insert(e.id);
+    throw InputError(ref.where, "geometry " + std::to_string(ref.id) + " does not exist (defined geometries: " +
+                                    joined(ids) + ")");
+  }
+  return g->geometry;
+}
+
+}  // namespace
+
+DeckResult DeckReader::finish() {
+  if (!time_where) {
+    throw InputError(SourceLocation{files.front(), 0, "", ""},
+                     "the deck has no *TIME: abut needs the termination time t_term");
+  }
+  model.functions.resolve();
+  Mesh& mesh = model.mesh;
+
+  // Element nodes.
+  for (const ElementNodes& e : element_nodes) {
+    for (std::size_t k = 0; k < 8; ++k) {
+      const std::int32_t index = node_index(e.node_ids[k]);
+      if (index < 0) {
+        throw InputError(element_where(e, "n" + std::to_string(k + 1)),
+                         "node " + std::to_string(e.node_ids[k]) + " does not exist");
+      }
+      mesh.hexes[e.hex][k] = index;
+    }
+  }
+
+  // Parts, their materials, and the part of every hex.
+  std::set<std::int64_t> part_ids, material_ids;
+  for (const Part& p : model.parts) part_ids.insert(p.id);
+  for (const Material& m : model.materials) material_ids.insert(m.id);
+  for (const Part& p : model.parts) {
+    if (!material_ids.count(p.material_id)) {
+      throw InputError(with_field(p.where, "mid"), "material " + std::to_string(p.material_id) +
+                                                      " does not exist (defined materials: " + joined(material_ids) + ")");
+    }
+  }
+  const auto require_part = [&](std::int64_t id, const SourceLocation& where) {
+    if (!part_ids.count(id)) {
+      throw InputError(where, "part " + std::to_string(id) + " does not exist (defined parts: " + joined(part_ids) + ")");
+    }
+  };
+  for (const ElementNodes& e : element_nodes) require_part(mesh.hex_part[e.hex], element_where(e, "pid"));
+  for (const MeshSource& s : mesh_sources) {
+    for (std::size_t h = s.first; h < s.end; ++h) require_part(mesh.hex_part[h], with_field(s.where, "pid"));
+  }
+
+  // Sets and geometries.
+  for (const PendingNodeSet& s : node_sets) {
+    std::vector<std::int32_t>& nodes = model.node_sets[s.index].nodes;
+    for (const IdReference& n : s.nodes) {
+      const std::int32_t index = node_index(n.id);
+      if (index < 0) throw InputError(n.where, "node " + std::to_string(n.id) + " does not exist");
+      nodes.push_back(index);
+    }
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  }
+  for (const auto& [id, where] : part_set_members) require_part(id, where);
+  for (PartSet& s : model.part_sets) {
+    std::sort(s.parts.begin(), s.parts.end());
+    s.parts.erase(std::unique(s.parts.begin(), s.parts.end()), s.parts.end());
+  }
+  for (const auto& [id, where] : geometry_parts) require_part(id, where);
+  for (const IdReference& g : geometry_references) geometry_of(model, g);
+
+  // Curves and functions used by other commands.
+  for (const FunctionBinding& f : function_bindings) f.bind(model, model.functions.find(f.id, f.where));
+
+  // Entities: every id must exist.
+  for (const EntityRef& e : entity_references) {
+    if (e.type == EntityType::Part || e.type == EntityType::PartSet || e.type == EntityType::All) {
+      model.parts_of(e);
+    } else {
+      model.nodes_of(e);
+    }
+  }
+  // Rotations are rigid-body degrees of freedom.
+  for (const MotionBoundary& m : model.motions) {
+    const bool rotates = m.fixed_rotation != 0 ||
+                         std::any_of(m.motions.begin(), m.motions.end(), [](const auto& p) { return p.direction >= 3; });
+    if (!rotates) continue;
+    if (m.entity.type != EntityType::Part && m.entity.type != EntityType::PartSet) {
+      throw InputError(m.where, "rotational constraints and RX, RY, RZ motions apply to rigid parts (P or PS) only");
+    }
+    for (const std::int64_t pid : model.parts_of(m.entity)) {
+      if (!is_rigid(model.material_of_part(pid))) {
+        throw InputError(m.where, "rotational constraints and RX, RY, RZ motions apply to rigid parts only; part " +
+                                      std::to_string(pid) + " is not rigid (*MAT_RIGID)");
+      }
+    }
+  }
+
+  // Mesh refinement and smoothing, once, on the complete mesh.
+  std::vector<OrderChange> order_changes;
+  for (const PendingOrder& o : orders) {
+    OrderChange c;
+    c.parts = model.parts_of(o.entity);
+    c.order = o.order;
+    if (o.region) c.region = geometry_of(model, *o.region);
+    order_changes.push_back(std::move(c));
+  }
+  std::vector<SurfaceSmoothing> smoothings;
+  for (const PendingSmoothing& s : smoothing) {
+    SurfaceSmoothing c;
+    c.parts = model.parts_of(s.entity);
+    c.max_angle = s.max_angle;
+    c.internal = s.internal;
+    if (s.region) c.region = geometry_of(model, *s.region);
+    smoothings.push_back(std::move(c));
+  }
+  if (!order_changes.empty() || !smoothings.empty()) {
+    for (std::string& note : refine_and_smooth(mesh, order_changes, smoothings)) notes.push_back(std::move(note));
+  }
+
+  // Initial velocities on the final nodes, in deck order (a later command overrides an earlier one).
+  const std::size_t n = mesh.nodes.size();
+  model.vx0.assign(n, 0.0);
+  model.vy0.assign(n, 0.0);
+  model.vz0.assign(n, 0.0);
+  for (const PendingVelocity& v : velocities) {
+    std::array<FunctionRef, 3> fcn;
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (v.velocity[k].function_id) fcn[k] = model.functions.find(*v.velocity[k].function_id, v.velocity_where[k]);
+    }
+    for (const std::int32_t i : model.nodes_of(v.entity)) {
+      const Vec3 p = mesh.nodes.position(static_cast<std::size_t>(i));
+      Variables vars;
+      vars.x = vars.X = p.x;
+      vars.y = vars.Y = p.y;
+      vars.z = vars.Z = p.z;
+      Vec3 velocity = cross(v.angular_velocity, p - v.centre);
+      for (int k = 0; k < 3; ++k) {
+        const auto uk = static_cast<std::size_t>(k);
+        velocity[k] += fcn[uk].valid() ? model.functions.value(fcn[uk], vars) : v.velocity[uk].value;
+      }
+      model.vx0[static_cast<std::size_t>(i)] = velocity.x;
+      model.vy0[static_cast<std::size_t>(i)] = velocity.y;
+      model.vz0[static_cast<std::size_t>(i)] = velocity.z;
+    }
+  }
+
+  for (const Part& p : model.parts) {
+    if (std::find(mesh.hex_part.begin(), mesh.hex_part.end(), p.id) == mesh.hex_part.end()) {
+      notes.push_back("part " + std::to_string(p.id) + " has no elements");
+    }
+  }
+  return {std::move(model), std::move(notes)};
+}
+
+}  // namespace abut::deck

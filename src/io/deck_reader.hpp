@@ -1,0 +1,204 @@
+#pragma once
+// State of one deck being read: the model under construction, the parameters, the current
+// *INCLUDE placement, and the references that can only be checked once the whole deck is in
+// (ids may be used before the command that defines them).
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <initializer_list>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "abut/io/deck.hpp"
+#include "deck_block.hpp"
+#include "deck_parameters.hpp"
+#include "deck_text.hpp"
+#include "deck_transform.hpp"
+
+namespace abut::deck {
+
+// Where the lines being read come from and how their content is placed.
+struct IncludeFrame {
+  Transform transform;
+  IdOffsets offsets;
+  std::filesystem::path directory;  // *INCLUDE paths are relative to this
+};
+
+// A reference to a *CURVE or *FUNCTION, bound once all of them are known.
+struct FunctionBinding {
+  std::int64_t id = 0;
+  SourceLocation where;
+  std::function<void(Model&, FunctionRef)> bind;
+};
+
+struct IdReference {
+  std::int64_t id = 0;
+  SourceLocation where;
+};
+
+// *ELEMENT_SOLID rows refer to nodes by id; resolved when every *NODE is in. The row's
+// location is kept compactly (large meshes have many rows).
+struct ElementNodes {
+  std::size_t hex = 0;
+  std::array<std::int64_t, 8> node_ids{};
+  std::size_t file = 0;  // index into DeckReader::files
+  std::size_t line = 0;
+};
+
+// The command that created hexes [first, end), to name it when a hex's part is missing.
+struct MeshSource {
+  std::size_t first = 0, end = 0;
+  SourceLocation where;
+};
+
+struct PendingNodeSet {
+  std::size_t index = 0;  // into model.node_sets
+  std::vector<IdReference> nodes;
+};
+
+struct PendingOrder {
+  EntityRef entity;
+  int order = 1;
+  std::optional<IdReference> region;
+};
+
+struct PendingSmoothing {
+  EntityRef entity;
+  double max_angle = 0.0;
+  bool internal = false;
+  std::optional<IdReference> region;
+};
+
+struct PendingVelocity {
+  EntityRef entity;
+  std::array<Row::NumberOrFunction, 3> velocity;
+  std::array<SourceLocation, 3> velocity_where;
+  Vec3 angular_velocity;
+  Vec3 centre;
+};
+
+class DeckReader {
+ public:
+  // Reads a file or a text with the given placement; `depth` counts nested includes.
+  void read_file(const std::filesystem::path& path, const IncludeFrame& frame, int depth);
+  void read_text(const std::string& text, const std::string& name, const IncludeFrame& frame,
+                 int depth);
+  // Resolves every reference, refines the mesh, applies initial velocities.
+  DeckResult finish();
+
+  const IncludeFrame& frame() const { return frames_.back(); }
+
+  // Ids read from a row with the current include offsets applied.
+  std::int64_t node_id(const Row& r, std::size_t i) const { return r.id(i) + frame().offsets.node; }
+  std::int64_t element_id(const Row& r, std::size_t i) const { return r.id(i) + frame().offsets.element; }
+  std::int64_t part_id(const Row& r, std::size_t i) const { return r.id(i) + frame().offsets.part; }
+  std::int64_t material_id(const Row& r, std::size_t i) const { return r.id(i) + frame().offsets.material; }
+  std::int64_t other_id(const Row& r, std::size_t i) const { return r.id(i) + frame().offsets.other; }
+  std::optional<std::int64_t> optional_other_id(const Row& r, std::size_t i) const;
+  std::optional<std::int64_t> function_id(const Row::NumberOrFunction& v) const;
+
+  // An `entype, enid` pair; `allowed` lists the types the command accepts.
+  EntityRef entity(const Row& r, std::size_t type_field, std::size_t id_field,
+                   std::initializer_list<EntityType> allowed) const;
+  // Directions must not be rotated or mirrored by an *INCLUDE (velocities, X/Y/Z choices).
+  void require_unrotated(const SourceLocation& where, const std::string& what) const;
+
+  // Runs a mesh generator, adds the command's location to its errors and records the new
+  // nodes and hexes.
+  void generate(const std::function<void()>& generator, const SourceLocation& where);
+  // Adds one *NODE; duplicate ids are an error.
+  void add_node(std::int64_t id, const Vec3& p, std::uint8_t fixed, const SourceLocation& where);
+  // Adds one hex of *ELEMENT_SOLID (nodes resolved later).
+  void add_element(std::int64_t id, std::int64_t part, const std::array<std::int64_t, 8>& node_ids,
+                   const SourceLocation& where);
+  SourceLocation element_where(const ElementNodes& e, const std::string& field) const;
+  // Records an id of a kind (e.g. "component"); a second use is an error naming the first.
+  void claim_id(const std::string& kind, std::int64_t id, const SourceLocation& where);
+  // Index of a node id, or -1.
+  std::int32_t node_index(std::int64_t id) const;
+
+  void bind_function(std::int64_t id, const SourceLocation& where,
+                     std::function<void(Model&, FunctionRef)> bind) {
+    function_bindings.push_back({id, where, std::move(bind)});
+  }
+
+  Model model;
+  std::vector<std::string> notes;
+  std::vector<std::string> files;  // every file read, for compact locations
+  Parameters parameters;
+
+  std::vector<FunctionBinding> function_bindings;
+  std::vector<IdReference> geometry_references;  // gids that must exist
+  std::vector<ElementNodes> element_nodes;
+  std::vector<MeshSource> mesh_sources;
+  std::vector<PendingNodeSet> node_sets;
+  std::vector<std::pair<std::int64_t, SourceLocation>> part_set_members;  // (part id, where)
+  std::vector<std::pair<std::int64_t, SourceLocation>> geometry_parts;    // *GEOMETRY_PART pids
+  std::vector<PendingOrder> orders;
+  std::vector<PendingSmoothing> smoothing;
+  std::vector<PendingVelocity> velocities;
+  std::vector<EntityRef> entity_references;  // entities that must exist
+  std::optional<SourceLocation> time_where, units_where, title_where;
+
+ private:
+  void read_lines(const std::vector<std::string>& lines, const std::string& name, int depth);
+  void dispatch(Block& block, int depth);
+  void read_include(Block& block, int depth);
+
+  std::vector<IncludeFrame> frames_{IncludeFrame{}};
+  std::vector<std::string> include_stack_;
+  std::unordered_map<std::int64_t, std::int32_t> node_index_;
+  std::set<std::int64_t> hex_ids_;
+  std::map<std::pair<std::string, std::int64_t>, SourceLocation> claimed_ids_;
+};
+
+// The reader of each supported keyword (keyword_*.cpp).
+using KeywordReader = void (*)(DeckReader&, Block&);
+void read_title(DeckReader&, Block&);
+void read_parameter(DeckReader&, Block&);
+void read_parameter_default(DeckReader&, Block&);
+void read_unit_system(DeckReader&, Block&);
+void read_time(DeckReader&, Block&);
+void read_output(DeckReader&, Block&);
+void read_node(DeckReader&, Block&);
+void read_element_solid(DeckReader&, Block&);
+void read_component_box(DeckReader&, Block&);
+void read_component_sphere(DeckReader&, Block&);
+void read_component_cylinder(DeckReader&, Block&);
+void read_change_p_order(DeckReader&, Block&);
+void read_smooth_mesh(DeckReader&, Block&);
+void read_mat_elastic(DeckReader&, Block&);
+void read_mat_mooney_rivlin(DeckReader&, Block&);
+void read_mat_rigid(DeckReader&, Block&);
+void read_part(DeckReader&, Block&);
+void read_set_node(DeckReader&, Block&);
+void read_set_part(DeckReader&, Block&);
+void read_initial_velocity(DeckReader&, Block&);
+void read_bc_motion(DeckReader&, Block&);
+void read_load_gravity(DeckReader&, Block&);
+void read_curve(DeckReader&, Block&);
+void read_function(DeckReader&, Block&);
+void read_geometry_box(DeckReader&, Block&);
+void read_geometry_sphere(DeckReader&, Block&);
+void read_geometry_pipe(DeckReader&, Block&);
+void read_geometry_ellipsoid(DeckReader&, Block&);
+void read_geometry_part(DeckReader&, Block&);
+void read_contact(DeckReader&, Block&);
+
+// deck_catalogue.cpp: the supported keywords, the other IMPETUS keywords, suggestions.
+KeywordReader find_keyword_reader(const std::string& keyword);
+bool is_known_impetus_keyword(const std::string& keyword);
+std::optional<std::string> closest_keyword(const std::string& keyword);
+
+// A translational constraint word: 0, X, Y, Z, XY, YZ, ZX, XYZ (any order) -> DofMask bits.
+std::uint8_t parse_dof_mask(const Row& r, std::size_t i);
+// X, Y or Z -> 0..2 (and RX, RY, RZ -> 3..5 when rotations are allowed).
+int parse_direction(const Row& r, std::size_t i, bool rotations);
+
+}  // namespace abut::deck

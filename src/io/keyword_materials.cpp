@@ -1,0 +1,117 @@
+// *MAT_ELASTIC, *MAT_MOONEY_RIVLIN, *MAT_RIGID, *PART.
+#include "deck_reader.hpp"
+
+namespace abut::deck {
+namespace {
+
+void add_material(DeckReader& d, const Row& r, MaterialParams params) {
+  const std::int64_t id = d.material_id(r, 0);
+  d.claim_id("material", id, r.where(0));
+  d.model.materials.push_back({id, params, r.where()});
+}
+
+double density(const Row& r, std::size_t i) {
+  const double rho = r.number(i);
+  r.require(rho > 0.0, i, "expected a density > 0");
+  return rho;
+}
+
+void unused_field(const Row& r, std::size_t i) {
+  r.require(!r.given(i) || parse_number(r.text(i)) == 0.0, i, "this field is unused: leave it empty");
+}
+
+void no_thermal(const Row& r, std::size_t thpid) {
+  r.unsupported_unless(thpid, 0.0, "a thermal property (thpid)");
+}
+
+}  // namespace
+
+void read_mat_elastic(DeckReader& d, Block& b) {
+  const Row r = b.row({"mid", "rho", "E", "nu", "did", "thpid"});
+  ElasticParams p;
+  p.density = density(r, 1);
+  p.young = r.number(2);
+  r.require(p.young > 0.0, 2, "expected a Young's modulus > 0");
+  p.poisson = r.number_or(3, 0.0);
+  r.require(p.poisson >= 0.0 && p.poisson < 0.5, 3, "poisson must be in [0, 0.5)");
+  r.unsupported_unless(4, 0.0, "a damage property (did)");
+  no_thermal(r, 5);
+  if (auto r2 = b.optional_row({"a", "b", "c", "c_dec"})) {
+    r2->unsupported_unless(0, 0.0, "non-linear elasticity (a)");
+    r2->unsupported_unless(1, 0.0, "non-linear elasticity (b)");
+    r2->unsupported_unless(2, 0.0, "material damping (c)");
+    r2->unsupported_unless(3, 0.0, "material damping (c_dec)");
+  }
+  add_material(d, r, p);
+}
+
+void read_mat_mooney_rivlin(DeckReader& d, Block& b) {
+  const Row r1 = b.row({"mid", "rho", "K", "-", "-", "tid"});
+  const Row r2 = b.row({"C1", "C2", "alpha1", "beta1", "alpha2", "beta2", "alpha3", "beta3"});
+  MooneyRivlinParams p;
+  p.density = density(r1, 1);
+  p.bulk = r1.number(2);
+  r1.require(p.bulk > 0.0, 2, "expected a bulk modulus K > 0");
+  unused_field(r1, 3);
+  unused_field(r1, 4);
+  no_thermal(r1, 5);
+  p.c1 = r2.number(0);
+  p.c2 = r2.number_or(1, 0.0);
+  r2.require(p.c1 + p.c2 > 0.0, 1, "expected C1 + C2 > 0 (the initial shear modulus is 2 (C1 + C2))");
+  for (std::size_t k = 0; k < 3; ++k) {
+    p.alpha[k] = r2.number_or(2 + 2 * k, 0.0);
+    r2.require(p.alpha[k] >= 0.0, 2 + 2 * k, "expected a viscous stiffness alpha >= 0");
+    p.beta[k] = r2.number_or(3 + 2 * k, 0.0);
+    r2.require(p.beta[k] >= 0.0, 3 + 2 * k, "expected a relaxation time beta >= 0");
+  }
+  if (auto r3 = b.optional_row({"alpha4", "beta4"})) {
+    p.alpha[3] = r3->number_or(0, 0.0);
+    r3->require(p.alpha[3] >= 0.0, 0, "expected a viscous stiffness alpha >= 0");
+    p.beta[3] = r3->number_or(1, 0.0);
+    r3->require(p.beta[3] >= 0.0, 1, "expected a relaxation time beta >= 0");
+  }
+  add_material(d, r1, p);
+}
+
+void read_mat_rigid(DeckReader& d, Block& b) {
+  const Row r = b.row({"mid", "rho", "-", "-", "-", "thpid"});
+  RigidParams p;
+  p.density = density(r, 1);
+  for (std::size_t i : {2, 3, 4}) unused_field(r, i);
+  no_thermal(r, 5);
+  add_material(d, r, p);
+}
+
+void read_part(DeckReader& d, Block& b) {
+  if (b.done()) throw InputError(b.where(), "missing data line: expected pid, mid");
+  while (!b.done()) {
+    Part part;
+    if (auto title = b.title()) {
+      part.title = *title;
+      if (b.done() || b.next_is_title()) {
+        throw InputError(b.where(), "the part title \"" + part.title + "\" must be followed by its pid, mid line");
+      }
+    }
+    const Row r = b.row({"pid", "mid", "-", "h", "alpha_max", "dt_erode", "eps_geo_erode", "eps_v_erode"});
+    part.id = d.part_id(r, 0);
+    d.claim_id("part", part.id, r.where(0));
+    part.material_id = d.material_id(r, 1);
+    part.where = r.where();
+    unused_field(r, 2);
+    r.unsupported_unless(3, 1.0, "a thickness h (shells and rebars)");
+    const double alpha_max = r.number_or(4, 0.0);
+    r.require(alpha_max >= 0.0 && alpha_max <= 180.0, 4, "expected a smoothing angle in [0, 180] degrees (0: off)");
+    if (alpha_max > 0.0) {
+      PendingSmoothing s;
+      s.entity = {EntityType::Part, part.id, r.where(0)};
+      s.max_angle = alpha_max;
+      d.smoothing.push_back(s);
+    }
+    r.unsupported_unless(5, 0.0, "element erosion (dt_erode)");
+    r.unsupported_unless(6, 1e20, "element erosion (eps_geo_erode)");
+    r.unsupported_unless(7, 1e20, "element erosion (eps_v_erode)");
+    d.model.parts.push_back(part);
+  }
+}
+
+}  // namespace abut::deck

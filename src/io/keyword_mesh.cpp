@@ -1,0 +1,166 @@
+// *NODE, *ELEMENT_SOLID, *COMPONENT_BOX, *COMPONENT_SPHERE, *COMPONENT_CYLINDER,
+// *CHANGE_P-ORDER, *SMOOTH_MESH.
+#include <algorithm>
+
+#include "abut/mesh/generators.hpp"
+#include "deck_reader.hpp"
+
+namespace abut::deck {
+namespace {
+
+Vec3 point(const Row& r, std::size_t first) { return {r.number(first), r.number(first + 1), r.number(first + 2)}; }
+
+// Component line 1 starts `coid, pid`: the component id is checked for uniqueness.
+std::int64_t component_part(DeckReader& d, const Row& r) {
+  d.claim_id("component", d.other_id(r, 0), r.where(0));
+  return d.part_id(r, 1);
+}
+
+int element_count(const Row& r, std::size_t i) {
+  const std::int64_t n = r.integer(i);
+  r.require(n >= 1 && n <= 100000, i, "expected a number of elements in [1, 100000]");
+  return static_cast<int>(n);
+}
+
+// Every other *INCLUDE placement turns a sphere into an ellipsoid, which a component cannot be.
+double uniform_scale(const DeckReader& d, const SourceLocation& where, const std::string& shape) {
+  const auto s = d.frame().transform.uniform_scale();
+  if (!s) {
+    throw InputError(where, "a " + shape + " inside an *INCLUDE with unequal scale factors is not supported yet by abut");
+  }
+  return *s;
+}
+
+std::optional<IdReference> region(const DeckReader& d, const Row& r, std::size_t i) {
+  if (const auto gid = d.optional_other_id(r, i)) return IdReference{*gid, r.where(i)};
+  return std::nullopt;
+}
+
+}  // namespace
+
+void read_node(DeckReader& d, Block& b) {
+  while (!b.done()) {
+    const Row r = b.row({"nid", "x", "y", "z", "bc"});
+    const std::uint8_t fixed = parse_dof_mask(r, 4);
+    if (fixed != 0) d.require_unrotated(r.where(4), "a nodal constraint");
+    d.add_node(d.node_id(r, 0), d.frame().transform.point(point(r, 1)), fixed, r.where());
+  }
+}
+
+void read_element_solid(DeckReader& d, Block& b) {
+  while (!b.done()) {
+    const Row r = b.row({"eid", "pid", "n1", "n2", "n3", "n4", "n5", "n6", "n7", "n8"});
+    std::array<std::int64_t, 8> nodes{};
+    for (std::size_t k = 0; k < 8; ++k) nodes[k] = d.node_id(r, k + 2);
+    // A mirrored hex is inside out; exchanging its bottom and top faces turns it right side out.
+    if (d.frame().transform.mirrors()) std::rotate(nodes.begin(), nodes.begin() + 4, nodes.end());
+    d.add_element(d.element_id(r, 0), d.part_id(r, 1), nodes, r.where());
+  }
+}
+
+void read_component_box(DeckReader& d, Block& b) {
+  b.title();
+  const Row r1 = b.row({"coid", "pid", "N_x", "N_y", "N_z", "csysid"});
+  const Row r2 = b.row({"x1", "y1", "z1", "x2", "y2", "z2"});
+  BoxComponent c;
+  c.part_id = component_part(d, r1);
+  c.nx = element_count(r1, 2);
+  c.ny = element_count(r1, 3);
+  c.nz = element_count(r1, 4);
+  r1.global_coordinates_only(5);
+  if (!d.frame().transform.axis_aligned()) {
+    throw InputError(b.where(), "a box inside an *INCLUDE that rotates its axes is not supported yet by abut");
+  }
+  const Vec3 p1 = d.frame().transform.point(point(r2, 0));
+  const Vec3 p2 = d.frame().transform.point(point(r2, 3));
+  for (int k = 0; k < 3; ++k) {
+    r2.require(p1[k] != p2[k], static_cast<std::size_t>(k + 3), "expected a box of non-zero size along " +
+                                                                  std::string(1, static_cast<char>('x' + k)));
+    c.corner1[k] = std::min(p1[k], p2[k]);
+    c.corner2[k] = std::max(p1[k], p2[k]);
+  }
+  d.generate([&] { generate_box(d.model.mesh, c); }, b.where());
+}
+
+void read_component_sphere(DeckReader& d, Block& b) {
+  b.title();
+  const Row r1 = b.row({"coid", "pid", "N", "N_c", "csysid", "alpha_c"});
+  const Row r2 = b.row({"x0", "y0", "z0", "R1", "R2"});
+  SphereComponent c;
+  c.part_id = component_part(d, r1);
+  c.density = element_count(r1, 2);
+  // N_c only counts elements around a sector (alpha_c < 360), which abut does not build.
+  if (r1.given(3)) element_count(r1, 3);
+  r1.global_coordinates_only(4);
+  r1.unsupported_unless(5, 360.0, "a sphere sector (alpha_c other than 360)");
+  const double r_1 = r2.number(3);
+  r2.require(r_1 > 0.0, 3, "expected a radius > 0");
+  const double r_2 = r2.number_or(4, 0.0);
+  r2.require(r_2 == 0.0 || r_2 > r_1, 4, "expected 0 (solid sphere) or an outer radius > R1 (hollow sphere)");
+  const double s = uniform_scale(d, b.where(), "sphere");
+  c.centre = d.frame().transform.point(point(r2, 0));
+  c.inner_radius = r_2 > 0.0 ? s * r_1 : 0.0;
+  c.outer_radius = s * (r_2 > 0.0 ? r_2 : r_1);
+  d.generate([&] { generate_sphere(d.model.mesh, c); }, b.where());
+}
+
+void read_component_cylinder(DeckReader& d, Block& b) {
+  b.title();
+  const Row r1 = b.row({"coid", "pid", "N_1", "N_2", "csysid", "symmetry"});
+  const Row r2 = b.row({"x1", "y1", "z1", "x2", "y2", "z2", "R1", "R2"});
+  CylinderComponent c;
+  c.part_id = component_part(d, r1);
+  c.n_axial = element_count(r1, 2);
+  c.density = element_count(r1, 3);
+  r1.global_coordinates_only(4);
+  const std::int64_t symmetry = r1.integer_or(5, 0);
+  r1.require(symmetry >= 0 && symmetry <= 2, 5, "expected 0 (full), 1 (half) or 2 (quarter)");
+  c.symmetry = static_cast<int>(symmetry);
+  if (c.symmetry != 0) d.require_unrotated(r1.where(5), "a half or quarter cylinder");
+  const double r_1 = r2.number(6);
+  r2.require(r_1 > 0.0, 6, "expected a radius > 0");
+  const double r_2 = r2.number_or(7, r_1);
+  r2.require(r_2 > 0.0, 7, "expected a radius > 0 (empty: R1)");
+  const Vec3 e1 = point(r2, 0);
+  const Vec3 e2 = point(r2, 3);
+  r2.require(norm(e2 - e1) > 0.0, 3, "expected the second end centre to differ from the first");
+  const double s = uniform_scale(d, b.where(), "cylinder");
+  c.end1 = d.frame().transform.point(e1);
+  c.end2 = d.frame().transform.point(e2);
+  c.radius1 = s * r_1;
+  c.radius2 = s * r_2;
+  d.generate([&] { generate_cylinder(d.model.mesh, c); }, b.where());
+}
+
+void read_change_p_order(DeckReader& d, Block& b) {
+  if (b.done()) throw InputError(b.where(), "missing data line: expected entype, enid, order, gid");
+  while (!b.done()) {
+    const Row r = b.row({"entype", "enid", "order", "gid"});
+    PendingOrder o;
+    o.entity = d.entity(r, 0, 1, {EntityType::Part, EntityType::PartSet, EntityType::All});
+    const std::int64_t order = r.integer(2);
+    r.require(order >= 1 && order <= 3, 2, "expected an order of 1, 2 or 3");
+    o.order = static_cast<int>(order);
+    o.region = region(d, r, 3);
+    d.orders.push_back(o);
+  }
+}
+
+void read_smooth_mesh(DeckReader& d, Block& b) {
+  b.title();
+  do {
+    const Row r = b.row({"entype", "enid", "alpha_max", "internal", "gid"});
+    PendingSmoothing s;
+    s.entity = d.entity(r, 0, 1, {EntityType::Part, EntityType::PartSet, EntityType::All});
+    s.max_angle = r.number(2);
+    r.require(s.max_angle > 0.0 && s.max_angle <= 180.0, 2, "expected an angle in (0, 180] degrees");
+    s.internal = r.flag(3);
+    s.region = region(d, r, 4);
+    d.smoothing.push_back(s);
+    // Optional line 2 holds only csysid (a number); a new line 1 starts with an entity type.
+    const auto next = b.peek_fields();
+    if (!next.empty() && parse_number(next[0])) b.row({"csysid"}).global_coordinates_only(0);
+  } while (!b.done());
+}
+
+}  // namespace abut::deck

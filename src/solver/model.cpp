@@ -1,0 +1,134 @@
+#include "abut/solver/model.hpp"
+
+#include <algorithm>
+
+namespace abut {
+namespace {
+
+// "1, 2, 5" (the first 20 ids), for messages that say what exists.
+template <typename Items, typename Id>
+std::string id_list(const Items& items, Id id_of) {
+  std::vector<std::int64_t> ids;
+  for (const auto& item : items) ids.push_back(id_of(item));
+  std::sort(ids.begin(), ids.end());
+  std::string s;
+  for (std::size_t i = 0; i < ids.size() && i < 20; ++i) s += (i ? ", " : "") + std::to_string(ids[i]);
+  if (ids.size() > 20) s += ", ...";
+  return s.empty() ? "none" : s;
+}
+
+template <typename Items>
+auto find_by_id(const Items& items, std::int64_t id) -> decltype(&items.front()) {
+  const auto it = std::find_if(items.begin(), items.end(), [id](const auto& x) { return x.id == id; });
+  return it == items.end() ? nullptr : &*it;
+}
+
+void sort_unique(std::vector<std::int32_t>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+}  // namespace
+
+const Part* Model::find_part(std::int64_t id) const { return find_by_id(parts, id); }
+const Material* Model::find_material(std::int64_t id) const { return find_by_id(materials, id); }
+const GeometryEntry* Model::find_geometry(std::int64_t id) const { return find_by_id(geometries, id); }
+
+const MaterialParams& Model::material_of_part(std::int64_t part_id) const {
+  const Part* part = find_part(part_id);
+  if (!part) {
+    throw InputError("part " + std::to_string(part_id) + " does not exist (defined parts: " +
+                     id_list(parts, [](const Part& p) { return p.id; }) + ")");
+  }
+  const Material* material = find_material(part->material_id);
+  if (!material) {
+    SourceLocation where = part->where;
+    where.field = "mid";
+    throw InputError(where, "material " + std::to_string(part->material_id) + " of part " +
+                                std::to_string(part_id) + " does not exist (defined materials: " +
+                                id_list(materials, [](const Material& m) { return m.id; }) + ")");
+  }
+  return material->params;
+}
+
+std::vector<std::int64_t> Model::parts_of(const EntityRef& entity) const {
+  const auto require_part = [&](std::int64_t id) {
+    if (!find_part(id)) {
+      throw InputError(entity.where, "part " + std::to_string(id) + " does not exist (defined parts: " +
+                                         id_list(parts, [](const Part& p) { return p.id; }) + ")");
+    }
+  };
+  switch (entity.type) {
+    case EntityType::Part:
+      require_part(entity.id);
+      return {entity.id};
+    case EntityType::PartSet: {
+      const PartSet* set = find_by_id(part_sets, entity.id);
+      if (!set) {
+        throw InputError(entity.where, "part set " + std::to_string(entity.id) + " does not exist (defined part sets: " +
+                                           id_list(part_sets, [](const PartSet& s) { return s.id; }) + ")");
+      }
+      for (const std::int64_t id : set->parts) require_part(id);
+      return set->parts;
+    }
+    case EntityType::All: {
+      std::vector<std::int64_t> ids;
+      for (const Part& p : parts) ids.push_back(p.id);
+      std::sort(ids.begin(), ids.end());
+      return ids;
+    }
+    default:
+      throw InputError(entity.where, "expected a part (P), a part set (PS) or ALL here");
+  }
+}
+
+std::vector<std::int32_t> Model::nodes_of(const EntityRef& entity) const {
+  std::vector<std::int32_t> nodes;
+  switch (entity.type) {
+    case EntityType::Node: {
+      const auto it = std::find(mesh.nodes.id.begin(), mesh.nodes.id.end(), entity.id);
+      if (it == mesh.nodes.id.end()) {
+        throw InputError(entity.where, "node " + std::to_string(entity.id) + " does not exist");
+      }
+      nodes.push_back(static_cast<std::int32_t>(it - mesh.nodes.id.begin()));
+      return nodes;
+    }
+    case EntityType::NodeSet: {
+      const NodeSet* set = find_by_id(node_sets, entity.id);
+      if (!set) {
+        throw InputError(entity.where, "node set " + std::to_string(entity.id) + " does not exist (defined node sets: " +
+                                           id_list(node_sets, [](const NodeSet& s) { return s.id; }) + ")");
+      }
+      nodes = set->nodes;
+      break;
+    }
+    case EntityType::Part:
+    case EntityType::PartSet: {
+      const std::vector<std::int64_t> ids = parts_of(entity);
+      for (std::size_t h = 0; h < mesh.hex_count(); ++h) {
+        if (std::find(ids.begin(), ids.end(), mesh.hex_part[h]) != ids.end()) {
+          nodes.insert(nodes.end(), mesh.hexes[h].begin(), mesh.hexes[h].end());
+        }
+      }
+      break;
+    }
+    case EntityType::All:
+      for (std::size_t i = 0; i < mesh.nodes.size(); ++i) nodes.push_back(static_cast<std::int32_t>(i));
+      return nodes;
+    case EntityType::GeometryRegion: {
+      const GeometryEntry* g = find_geometry(entity.id);
+      if (!g) {
+        throw InputError(entity.where, "geometry " + std::to_string(entity.id) + " does not exist (defined geometries: " +
+                                           id_list(geometries, [](const GeometryEntry& e) { return e.id; }) + ")");
+      }
+      for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+        if (geometry_contains(g->geometry, mesh.nodes.position(i), mesh)) nodes.push_back(static_cast<std::int32_t>(i));
+      }
+      return nodes;
+    }
+  }
+  sort_unique(nodes);
+  return nodes;
+}
+
+}  // namespace abut

@@ -1,0 +1,87 @@
+// The shipped examples parse into the model they describe. rubber_sphere.k is the example deck
+// of the IMPETUS *CONTACT page (seed 000) exactly as printed there.
+#include <gmock/gmock.h>
+
+#include <algorithm>
+
+#include "test_deck_helpers.hpp"
+
+namespace abut {
+namespace {
+
+std::string example(const std::string& name) { return std::string(ABUT_SOURCE_DIR) + "/examples/" + name; }
+
+TEST(DeckExamples, SeedRubberSphereOnSteelBlock) {
+  const DeckResult r = read_deck_with_notes(example("rubber_sphere.k"));
+  const Model& m = r.model;
+  EXPECT_EQ(m.units, UnitSystem::SI);
+  EXPECT_DOUBLE_EQ(m.time.end_time, 0.001);
+
+  ASSERT_EQ(m.parts.size(), 2u);
+  EXPECT_EQ(m.parts[0].id, 1);
+  EXPECT_EQ(m.parts[0].title, "rubber");
+  EXPECT_EQ(m.parts[0].material_id, 1);
+  EXPECT_EQ(m.parts[1].id, 2);
+  EXPECT_EQ(m.parts[1].title, "steel");
+  EXPECT_EQ(m.parts[1].material_id, 2);
+
+  // Seed: "1, 1500.0, 3.0e9 / 1.0e6, 0, 1.0e2" and "2, 7800.0, 210.0e9, 0.3".
+  const auto& rubber = std::get<MooneyRivlinParams>(m.material_of_part(1));
+  EXPECT_DOUBLE_EQ(rubber.density, 1500.0);
+  EXPECT_DOUBLE_EQ(rubber.bulk, 3.0e9);
+  EXPECT_DOUBLE_EQ(rubber.c1, 1.0e6);
+  EXPECT_DOUBLE_EQ(rubber.c2, 0.0);
+  EXPECT_DOUBLE_EQ(rubber.alpha[0], 100.0);
+  EXPECT_DOUBLE_EQ(rubber.beta[0], 0.0);
+  const auto& steel = std::get<ElasticParams>(m.material_of_part(2));
+  EXPECT_DOUBLE_EQ(steel.density, 7800.0);
+  EXPECT_DOUBLE_EQ(steel.young, 210.0e9);
+  EXPECT_DOUBLE_EQ(steel.poisson, 0.3);
+
+  // The block: 2 x 2 x 1 elements, 3 x 3 x 2 nodes.
+  EXPECT_EQ(m.nodes_of({EntityType::Part, 2, {}}).size(), 18u);
+  EXPECT_EQ(std::count(m.mesh.hex_part.begin(), m.mesh.hex_part.end(), 2), 4);
+  EXPECT_GT(std::count(m.mesh.hex_part.begin(), m.mesh.hex_part.end(), 1), 0);
+
+  // "P, 1, 0.0, 0.0, -100.0": part 1 only.
+  const auto sphere_nodes = m.nodes_of({EntityType::Part, 1, {}});
+  for (std::size_t i = 0; i < m.mesh.nodes.size(); ++i) {
+    const bool on_sphere = std::binary_search(sphere_nodes.begin(), sphere_nodes.end(), static_cast<std::int32_t>(i));
+    EXPECT_DOUBLE_EQ(m.vz0[i], on_sphere ? -100.0 : 0.0);
+    EXPECT_DOUBLE_EQ(m.vx0[i], 0.0);
+    EXPECT_DOUBLE_EQ(m.vy0[i], 0.0);
+  }
+
+  // "rubber to steel" / "1" / "P, 1, P, 2, 0.1".
+  ASSERT_EQ(m.contacts.size(), 1u);
+  const ContactSpec& c = m.contacts[0];
+  EXPECT_EQ(c.id, 1);
+  EXPECT_EQ(c.title, "rubber to steel");
+  EXPECT_EQ(c.surface1.type, EntityType::Part);
+  EXPECT_EQ(c.surface1.id, 1);
+  EXPECT_EQ(c.surface2.type, EntityType::Part);
+  EXPECT_EQ(c.surface2.id, 2);
+  EXPECT_DOUBLE_EQ(c.friction, 0.1);
+  EXPECT_FALSE(c.friction_function.valid());
+  EXPECT_FALSE(c.penalty.has_value());  // automatic
+  EXPECT_DOUBLE_EQ(c.damping, 0.1);
+
+  // *CHANGE_P-ORDER and *SMOOTH_MESH tell the user what they did.
+  EXPECT_GE(r.notes.size(), 2u);
+}
+
+TEST(DeckExamples, BarImpact) {
+  const Model m = read_deck(example("bar_impact.k"));
+  EXPECT_EQ(m.title, "Steel bar, 50 m/s, one end held fixed");
+  EXPECT_EQ(m.mesh.hex_count(), 160u);  // 40 x 2 x 2
+  for (std::size_t i = 0; i < m.mesh.nodes.size(); ++i) EXPECT_DOUBLE_EQ(m.vx0[i], -50.0);
+  ASSERT_EQ(m.motions.size(), 1u);
+  EXPECT_EQ(m.motions[0].id, 1);
+  EXPECT_EQ(m.motions[0].fixed_translation, kFixX);
+  const auto end_face = m.nodes_of(m.motions[0].entity);
+  EXPECT_EQ(end_face.size(), 9u);  // 3 x 3 nodes at x = 0
+  for (const auto i : end_face) EXPECT_DOUBLE_EQ(m.mesh.nodes.x[i], 0.0);
+}
+
+}  // namespace
+}  // namespace abut

@@ -1,0 +1,44 @@
+#pragma once
+// Shared by the deck tests: read a deck held in a string, catch the error it must raise.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "abut/io/deck.hpp"
+
+namespace abut::testing {
+
+// The smallest complete model: one 2x2x1 box of elastic steel, SI units.
+inline const char* kBoxModel = R"(*UNIT_SYSTEM
+SI
+*TIME
+1.0e-3
+*COMPONENT_BOX
+1, 1, 2, 2, 1
+0.0, 0.0, 0.0, 2.0, 2.0, 1.0
+*MAT_ELASTIC
+1, 7800.0, 210.0e9, 0.3
+*PART
+"block"
+1, 1
+)";
+
+inline DeckResult read(const std::string& text) { return read_deck_string_with_notes(text, "t.k"); }
+inline Model model_of(const std::string& text) { return read_deck_string(text, "t.k"); }
+
+// The InputError that reading `text` raises (a test failure if there is none).
+inline InputError error_of(const std::string& text) {
+  try {
+    read_deck_string(text, "t.k");
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "expected an InputError for:\n" << text;
+  return InputError("no error");
+}
+
+inline std::string deck_path(const std::string& name) {
+  return std::string(ABUT_SOURCE_DIR) + "/tests/io/decks/" + name;
+}
+
+}  // namespace abut::testing
