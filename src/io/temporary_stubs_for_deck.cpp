@@ -19,7 +19,9 @@ void generate_box(Mesh& mesh, const BoxComponent& c) {
   std::int64_t node_id = mesh.next_node_id();
   std::int64_t hex_id = mesh.next_hex_id();
   const auto first = static_cast<std::int32_t>(mesh.nodes.size());
-  const auto at = [&](int i, int j, int k) { return first + i + (c.nx + 1) * (j + (c.ny + 1) * k); };
+  const auto at = [&](int i, int j, int k) {
+    return first + i + (c.nx + 1) * (j + (c.ny + 1) * k);
+  };
   for (int k = 0; k <= c.nz; ++k) {
     for (int j = 0; j <= c.ny; ++j) {
       for (int i = 0; i <= c.nx; ++i) {
@@ -34,7 +36,8 @@ void generate_box(Mesh& mesh, const BoxComponent& c) {
     for (int j = 0; j < c.ny; ++j) {
       for (int i = 0; i < c.nx; ++i) {
         mesh.hexes.push_back({at(i, j, k), at(i + 1, j, k), at(i + 1, j + 1, k), at(i, j + 1, k),
-                              at(i, j, k + 1), at(i + 1, j, k + 1), at(i + 1, j + 1, k + 1), at(i, j + 1, k + 1)});
+                              at(i, j, k + 1), at(i + 1, j, k + 1), at(i + 1, j + 1, k + 1),
+                              at(i, j + 1, k + 1)});
         mesh.hex_id.push_back(hex_id++);
         mesh.hex_part.push_back(c.part_id);
         mesh.hex_shape.push_back(-1);
@@ -45,7 +48,8 @@ void generate_box(Mesh& mesh, const BoxComponent& c) {
 
 void generate_sphere(Mesh& mesh, const SphereComponent& c) {
   const double h = c.outer_radius / std::sqrt(3.0);
-  generate_box(mesh, {c.part_id, c.density, c.density, c.density, c.centre - Vec3{h, h, h}, c.centre + Vec3{h, h, h}});
+  generate_box(mesh, {c.part_id, c.density, c.density, c.density, c.centre - Vec3{h, h, h},
+                      c.centre + Vec3{h, h, h}});
 }
 
 void generate_cylinder(Mesh& mesh, const CylinderComponent& c) {
@@ -61,15 +65,19 @@ void generate_cylinder(Mesh& mesh, const CylinderComponent& c) {
 std::vector<std::string> refine_and_smooth(Mesh&, const std::vector<OrderChange>& orders,
                                            const std::vector<SurfaceSmoothing>& smoothing) {
   std::vector<std::string> notes;
-  for (const auto& o : orders) notes.push_back("stand-in: order " + std::to_string(o.order) + " not applied");
-  for (const auto& s : smoothing) notes.push_back("stand-in: smoothing " + std::to_string(s.max_angle) + " not applied");
+  for (const auto& o : orders)
+    notes.push_back("stand-in: order " + std::to_string(o.order) + " not applied");
+  for (const auto& s : smoothing)
+    notes.push_back("stand-in: smoothing " + std::to_string(s.max_angle) + " not applied");
   return notes;
 }
 
 bool geometry_contains(const Geometry& g, const Vec3& p, const Mesh&) {
   if (const auto* b = std::get_if<GeometryBox>(&g)) {
     for (int k = 0; k < 3; ++k) {
-      if (p[k] < std::min(b->corner1[k], b->corner2[k]) || p[k] > std::max(b->corner1[k], b->corner2[k])) return false;
+      if (p[k] < std::min(b->corner1[k], b->corner2[k]) ||
+          p[k] > std::max(b->corner1[k], b->corner2[k]))
+        return false;
     }
     return true;
   }
@@ -93,7 +101,8 @@ struct FunctionTable::Impl {
   std::vector<Entry> entries;
   std::map<std::int64_t, std::int32_t> index;
   void add(Entry e, const SourceLocation& where) {
-    if (index.count(e.id)) throw InputError(where, "curve or function " + std::to_string(e.id) + " is already defined");
+    if (index.count(e.id))
+      throw InputError(where, "id " + std::to_string(e.id) + " is already used");
     index[e.id] = static_cast<std::int32_t>(entries.size());
     entries.push_back(std::move(e));
   }
@@ -107,17 +116,21 @@ FunctionTable& FunctionTable::operator=(FunctionTable&&) noexcept = default;
 void FunctionTable::add_curve(std::int64_t id, Curve curve, const SourceLocation& where) {
   impl_->add({id, true, std::move(curve), ""}, where);
 }
-void FunctionTable::add_function(std::int64_t id, const std::string& expression, const SourceLocation& where) {
+void FunctionTable::add_function(std::int64_t id, const std::string& expression,
+                                 const SourceLocation& where) {
   impl_->add({id, false, {}, expression}, where);
 }
 void FunctionTable::resolve() {}
 bool FunctionTable::contains(std::int64_t id) const { return impl_->index.count(id) > 0; }
 FunctionRef FunctionTable::find(std::int64_t id, const SourceLocation& where) const {
   const auto it = impl_->index.find(id);
-  if (it == impl_->index.end()) throw InputError(where, "curve or function " + std::to_string(id) + " does not exist");
+  if (it == impl_->index.end())
+    throw InputError(where, "curve or function " + std::to_string(id) + " does not exist");
   return {it->second};
 }
-bool FunctionTable::is_curve(FunctionRef ref) const { return impl_->entries[static_cast<std::size_t>(ref.index)].curve; }
+bool FunctionTable::is_curve(FunctionRef ref) const {
+  return impl_->entries[static_cast<std::size_t>(ref.index)].curve;
+}
 bool FunctionTable::uses(FunctionRef, const std::string&) const { return false; }
 double FunctionTable::value(FunctionRef ref, double abscissa, const Variables&) const {
   const auto& e = impl_->entries[static_cast<std::size_t>(ref.index)];
@@ -130,7 +143,8 @@ double evaluate_constant_expression(const std::string& expression) {
   char* end = nullptr;
   const double v = std::strtod(begin, &end);
   while (end && (*end == ' ' || *end == '\t')) ++end;
-  if (end == begin || *end != '\0') throw InputError("stand-in evaluator reads plain numbers only: '" + expression + "'");
+  if (end == begin || *end != '\0')
+    throw InputError("stand-in evaluator reads plain numbers only: '" + expression + "'");
   return v;
 }
 
