@@ -23,7 +23,8 @@ std::vector<std::string> Block::peek_fields() const {
 std::optional<std::string> Block::title() {
   if (!next_is_title()) return std::nullopt;
   const Line& l = lines_[next_++];
-  if (!is_quoted(l.text)) throw InputError(where(l), "a title line must be one quoted string, got " + l.text);
+  if (!is_quoted(l.text))
+    throw InputError(where(l), "a title line must be one quoted string, got " + l.text);
   return unquote(l.text);
 }
 

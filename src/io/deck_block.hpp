@@ -24,8 +24,8 @@ class Block {
 
   const std::string& keyword() const { return keyword_; }  // "*NAME", upper case
   const std::string& file() const { return file_; }
-  SourceLocation where() const;                 // the keyword line
-  SourceLocation where(const Line& l) const;    // a data line of this block
+  SourceLocation where() const;               // the keyword line
+  SourceLocation where(const Line& l) const;  // a data line of this block
 
   bool done() const { return next_ >= lines_.size(); }
   bool next_is_title() const;

@@ -30,8 +30,8 @@ const Geometry& geometry_of(const Model& model, const IdReference& ref) {
   if (!g) {
     std::set<std::int64_t> ids;
     for (const auto& e : model.geometries) ids.insert(e.id);
-    throw InputError(ref.where, "geometry " + std::to_string(ref.id) + " does not exist (defined geometries: " +
-                                    joined(ids) + ")");
+    throw InputError(ref.where, "geometry " + std::to_string(ref.id) +
+                                    " does not exist (defined geometries: " + joined(ids) + ")");
   }
   return g->geometry;
 }
@@ -64,18 +64,22 @@ DeckResult DeckReader::finish() {
   for (const Material& m : model.materials) material_ids.insert(m.id);
   for (const Part& p : model.parts) {
     if (!material_ids.count(p.material_id)) {
-      throw InputError(with_field(p.where, "mid"), "material " + std::to_string(p.material_id) +
-                                                      " does not exist (defined materials: " + joined(material_ids) + ")");
+      throw InputError(with_field(p.where, "mid"),
+                       "material " + std::to_string(p.material_id) +
+                           " does not exist (defined materials: " + joined(material_ids) + ")");
     }
   }
   const auto require_part = [&](std::int64_t id, const SourceLocation& where) {
     if (!part_ids.count(id)) {
-      throw InputError(where, "part " + std::to_string(id) + " does not exist (defined parts: " + joined(part_ids) + ")");
+      throw InputError(where, "part " + std::to_string(id) +
+                                  " does not exist (defined parts: " + joined(part_ids) + ")");
     }
   };
-  for (const ElementNodes& e : element_nodes) require_part(mesh.hex_part[e.hex], element_where(e, "pid"));
+  for (const ElementNodes& e : element_nodes)
+    require_part(mesh.hex_part[e.hex], element_where(e, "pid"));
   for (const MeshSource& s : mesh_sources) {
-    for (std::size_t h = s.first; h < s.end; ++h) require_part(mesh.hex_part[h], with_field(s.where, "pid"));
+    for (std::size_t h = s.first; h < s.end; ++h)
+      require_part(mesh.hex_part[h], with_field(s.where, "pid"));
   }
 
   // Sets and geometries.
@@ -98,7 +102,8 @@ DeckResult DeckReader::finish() {
   for (const IdReference& g : geometry_references) geometry_of(model, g);
 
   // Curves and functions used by other commands.
-  for (const FunctionBinding& f : function_bindings) f.bind(model, model.functions.find(f.id, f.where));
+  for (const FunctionBinding& f : function_bindings)
+    f.bind(model, model.functions.find(f.id, f.where));
 
   // Entities: every id must exist.
   for (const EntityRef& e : entity_references) {
@@ -110,16 +115,21 @@ DeckResult DeckReader::finish() {
   }
   // Rotations are rigid-body degrees of freedom.
   for (const MotionBoundary& m : model.motions) {
-    const bool rotates = m.fixed_rotation != 0 ||
-                         std::any_of(m.motions.begin(), m.motions.end(), [](const auto& p) { return p.direction >= 3; });
+    const bool rotates =
+        m.fixed_rotation != 0 || std::any_of(m.motions.begin(), m.motions.end(),
+                                             [](const auto& p) { return p.direction >= 3; });
     if (!rotates) continue;
     if (m.entity.type != EntityType::Part && m.entity.type != EntityType::PartSet) {
-      throw InputError(m.where, "rotational constraints and RX, RY, RZ motions apply to rigid parts (P or PS) only");
+      throw InputError(
+          m.where,
+          "rotational constraints and RX, RY, RZ motions apply to rigid parts (P or PS) only");
     }
     for (const std::int64_t pid : model.parts_of(m.entity)) {
       if (!is_rigid(model.material_of_part(pid))) {
-        throw InputError(m.where, "rotational constraints and RX, RY, RZ motions apply to rigid parts only; part " +
-                                      std::to_string(pid) + " is not rigid (*MAT_RIGID)");
+        throw InputError(
+            m.where,
+            "rotational constraints and RX, RY, RZ motions apply to rigid parts only; part " +
+                std::to_string(pid) + " is not rigid (*MAT_RIGID)");
       }
     }
   }
@@ -143,10 +153,12 @@ DeckResult DeckReader::finish() {
     smoothings.push_back(std::move(c));
   }
   if (!order_changes.empty() || !smoothings.empty()) {
-    for (std::string& note : refine_and_smooth(mesh, order_changes, smoothings)) notes.push_back(std::move(note));
+    for (std::string& note : refine_and_smooth(mesh, order_changes, smoothings))
+      notes.push_back(std::move(note));
   }
 
-  // Initial velocities on the final nodes, in deck order (a later command overrides an earlier one).
+  // Initial velocities on the final nodes, in deck order (a later command overrides an earlier
+  // one).
   const std::size_t n = mesh.nodes.size();
   model.vx0.assign(n, 0.0);
   model.vy0.assign(n, 0.0);
@@ -154,7 +166,8 @@ DeckResult DeckReader::finish() {
   for (const PendingVelocity& v : velocities) {
     std::array<FunctionRef, 3> fcn;
     for (std::size_t k = 0; k < 3; ++k) {
-      if (v.velocity[k].function_id) fcn[k] = model.functions.find(*v.velocity[k].function_id, v.velocity_where[k]);
+      if (v.velocity[k].function_id)
+        fcn[k] = model.functions.find(*v.velocity[k].function_id, v.velocity_where[k]);
     }
     for (const std::int32_t i : model.nodes_of(v.entity)) {
       const Vec3 p = mesh.nodes.position(static_cast<std::size_t>(i));
@@ -165,7 +178,8 @@ DeckResult DeckReader::finish() {
       Vec3 velocity = cross(v.angular_velocity, p - v.centre);
       for (int k = 0; k < 3; ++k) {
         const auto uk = static_cast<std::size_t>(k);
-        velocity[k] += fcn[uk].valid() ? model.functions.value(fcn[uk], vars) : v.velocity[uk].value;
+        velocity[k] +=
+            fcn[uk].valid() ? model.functions.value(fcn[uk], vars) : v.velocity[uk].value;
       }
       model.vx0[static_cast<std::size_t>(i)] = velocity.x;
       model.vy0[static_cast<std::size_t>(i)] = velocity.y;

@@ -14,9 +14,7 @@ std::string lower(std::string_view s) {
   return out;
 }
 
-bool is_name_char(char c) {
-  return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
-}
+bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
 
 }  // namespace
 
@@ -33,8 +31,9 @@ bool Parameters::contains(const std::string& name) const { return values_.count(
 void Parameters::define(const std::string& name, double value, const SourceLocation& where) {
   const auto [it, inserted] = values_.emplace(lower(name), Entry{value, where});
   if (!inserted) {
-    throw InputError(where, "parameter %" + name + " is already defined at " + it->second.where.file +
-                                ":" + std::to_string(it->second.where.line));
+    throw InputError(where, "parameter %" + name + " is already defined at " +
+                                it->second.where.file + ":" +
+                                std::to_string(it->second.where.line));
   }
 }
 
@@ -43,9 +42,11 @@ double Parameters::value(const std::string& name, const SourceLocation& where) c
   if (it != values_.end()) return it->second.value;
   std::string defined;
   for (const auto& [n, e] : values_) defined += (defined.empty() ? "%" : ", %") + n;
-  throw InputError(where, "parameter %" + name + " is not defined" +
-                              (defined.empty() ? std::string(" (the deck defines no *PARAMETER before this line)")
-                                               : " (defined so far: " + defined + ")"));
+  throw InputError(
+      where,
+      "parameter %" + name + " is not defined" +
+          (defined.empty() ? std::string(" (the deck defines no *PARAMETER before this line)")
+                           : " (defined so far: " + defined + ")"));
 }
 
 std::string Parameters::substitute_names(std::string_view text, const SourceLocation& where,
@@ -68,7 +69,8 @@ std::string Parameters::substitute_names(std::string_view text, const SourceLoca
     }
     const double v = value(name, where);
     // Inside an expression a negative value is bracketed so that `-%a` stays well formed.
-    out += (in_expression && v < 0.0) ? std::string("(").append(format_number(v)).append(")") : format_number(v);
+    out += (in_expression && v < 0.0) ? std::string("(").append(format_number(v)).append(")")
+                                      : format_number(v);
     i = end - 1;
   }
   return out;
@@ -91,7 +93,8 @@ std::string Parameters::substitute(std::string_view text, const SourceLocation& 
       if (text[end] == '[') ++depth;
       if (text[end] == ']') --depth;
     }
-    if (depth != 0) throw InputError(where, "'[' without a matching ']' in '" + std::string(text) + "'");
+    if (depth != 0)
+      throw InputError(where, "'[' without a matching ']' in '" + std::string(text) + "'");
     const std::string inner = substitute_names(text.substr(i + 1, end - i - 2), where, true);
     try {
       out += format_number(evaluate_constant_expression(inner));

@@ -22,12 +22,18 @@ std::vector<std::string> split_lines(const std::string& text) {
 
 std::string entity_word(EntityType t) {
   switch (t) {
-    case EntityType::Node: return "N";
-    case EntityType::NodeSet: return "NS";
-    case EntityType::Part: return "P";
-    case EntityType::PartSet: return "PS";
-    case EntityType::All: return "ALL";
-    case EntityType::GeometryRegion: return "G";
+    case EntityType::Node:
+      return "N";
+    case EntityType::NodeSet:
+      return "NS";
+    case EntityType::Part:
+      return "P";
+    case EntityType::PartSet:
+      return "PS";
+    case EntityType::All:
+      return "ALL";
+    case EntityType::GeometryRegion:
+      return "G";
   }
   return "";
 }
@@ -45,14 +51,15 @@ void DeckReader::read_file(const fs::path& path, const IncludeFrame& frame, int 
   include_stack_.pop_back();
 }
 
-void DeckReader::read_text(const std::string& text, const std::string& name, const IncludeFrame& frame,
-                           int depth) {
+void DeckReader::read_text(const std::string& text, const std::string& name,
+                           const IncludeFrame& frame, int depth) {
   frames_.push_back(frame);
   read_lines(split_lines(text), name, depth);
   frames_.pop_back();
 }
 
-void DeckReader::read_lines(const std::vector<std::string>& lines, const std::string& name, int depth) {
+void DeckReader::read_lines(const std::vector<std::string>& lines, const std::string& name,
+                            int depth) {
   files.push_back(name);
   std::optional<std::string> keyword;
   std::size_t keyword_line = 0;
@@ -72,8 +79,9 @@ void DeckReader::read_lines(const std::vector<std::string>& lines, const std::st
     if (text.empty() || text.front() == '#' || text.front() == '$') continue;
     const SourceLocation here{name, number, keyword.value_or(""), ""};
     if (text.front() == '~') {
-      throw InputError(here, "control directives such as " + text.substr(0, text.find_first_of(" \t(")) +
-                                 " (~if, ~repeat, ~convert_from_...) are not supported yet by abut");
+      throw InputError(here,
+                       "control directives such as " + text.substr(0, text.find_first_of(" \t(")) +
+                           " (~if, ~repeat, ~convert_from_...) are not supported yet by abut");
     }
     if (text.front() == '*') {
       if (!flush()) return;
@@ -103,7 +111,8 @@ void DeckReader::dispatch(Block& block, int depth) {
     block.finish();
     return;
   }
-  if (is_known_impetus_keyword(kw)) throw InputError(block.where(), kw + " is not supported yet by abut");
+  if (is_known_impetus_keyword(kw))
+    throw InputError(block.where(), kw + " is not supported yet by abut");
   std::string message = "unknown keyword " + kw;
   if (const auto suggestion = closest_keyword(kw)) message += "; did you mean " + *suggestion + "?";
   throw InputError(SourceLocation{block.file(), block.where().line, "", ""}, message);
@@ -157,15 +166,17 @@ void DeckReader::read_include(Block& block, int depth) {
   const std::string canonical = fs::weakly_canonical(path, ec).string();
   for (const auto& open : include_stack_) {
     if (open == canonical) {
-      throw InputError(block.where(name_line), "'" + path.string() + "' includes itself (include cycle)");
+      throw InputError(block.where(name_line),
+                       "'" + path.string() + "' includes itself (include cycle)");
     }
   }
   if (depth + 1 > kMaxIncludeDepth) {
-    throw InputError(block.where(name_line), "includes nested deeper than " +
-                                                 std::to_string(kMaxIncludeDepth) + " levels");
+    throw InputError(block.where(name_line),
+                     "includes nested deeper than " + std::to_string(kMaxIncludeDepth) + " levels");
   }
   IncludeFrame child;
-  child.transform = frame().transform.after(include_transform(scale, from, to, x_axis, y_axis, mirror));
+  child.transform =
+      frame().transform.after(include_transform(scale, from, to, x_axis, y_axis, mirror));
   child.offsets = frame().offsets + offsets;
   child.directory = path.parent_path();
   block.finish();
@@ -193,31 +204,42 @@ EntityRef DeckReader::entity(const Row& r, std::size_t type_field, std::size_t i
     if (word == entity_word(t)) type = t;
   }
   if (!type) {
-    static const char* const other_types[] = {"N", "NS", "P", "PS", "ALL", "G", "E", "ES", "GS", "FS", "DP", "SPH"};
+    static const char* const other_types[] = {"N", "NS", "P",  "PS", "ALL", "G",
+                                              "E", "ES", "GS", "FS", "DP",  "SPH"};
     for (const char* t : other_types) {
       if (word == t) {
         r.fail(type_field, "entity type " + word + " is not supported yet by abut for " +
                                r.where().keyword + " (supported: " + expected + ")");
       }
     }
-    r.fail(type_field, "expected an entity type (" + expected + "), got '" + r.text(type_field) + "'");
+    r.fail(type_field,
+           "expected an entity type (" + expected + "), got '" + r.text(type_field) + "'");
   }
   EntityRef e;
   e.type = *type;
   e.where = r.where(id_field);
   switch (e.type) {
-    case EntityType::All: e.id = 0; break;  // enid is ignored
-    case EntityType::Node: e.id = node_id(r, id_field); break;
-    case EntityType::Part: e.id = part_id(r, id_field); break;
-    default: e.id = other_id(r, id_field); break;
+    case EntityType::All:
+      e.id = 0;
+      break;  // enid is ignored
+    case EntityType::Node:
+      e.id = node_id(r, id_field);
+      break;
+    case EntityType::Part:
+      e.id = part_id(r, id_field);
+      break;
+    default:
+      e.id = other_id(r, id_field);
+      break;
   }
   return e;
 }
 
 void DeckReader::require_unrotated(const SourceLocation& where, const std::string& what) const {
   if (!frame().transform.keeps_directions()) {
-    throw InputError(where, what + " inside an *INCLUDE that rotates or mirrors its content is not "
-                                   "supported yet by abut");
+    throw InputError(where, what +
+                                " inside an *INCLUDE that rotates or mirrors its content is not "
+                                "supported yet by abut");
   }
 }
 
@@ -233,18 +255,21 @@ void DeckReader::generate(const std::function<void()>& generator, const SourceLo
   }
   for (std::size_t i = first_node; i < mesh.nodes.size(); ++i) {
     if (!node_index_.emplace(mesh.nodes.id[i], static_cast<std::int32_t>(i)).second) {
-      throw InputError(where, "generated node id " + std::to_string(mesh.nodes.id[i]) + " already exists");
+      throw InputError(where,
+                       "generated node id " + std::to_string(mesh.nodes.id[i]) + " already exists");
     }
   }
   for (std::size_t h = first_hex; h < mesh.hex_count(); ++h) {
     if (!hex_ids_.insert(mesh.hex_id[h]).second) {
-      throw InputError(where, "generated element id " + std::to_string(mesh.hex_id[h]) + " already exists");
+      throw InputError(
+          where, "generated element id " + std::to_string(mesh.hex_id[h]) + " already exists");
     }
   }
   mesh_sources.push_back({first_hex, mesh.hex_count(), where});
 }
 
-void DeckReader::add_node(std::int64_t id, const Vec3& p, std::uint8_t fixed, const SourceLocation& where) {
+void DeckReader::add_node(std::int64_t id, const Vec3& p, std::uint8_t fixed,
+                          const SourceLocation& where) {
   const auto index = static_cast<std::int32_t>(model.mesh.nodes.size());
   if (!node_index_.emplace(id, index).second) {
     throw InputError(where, "node " + std::to_string(id) + " is already defined");
@@ -252,7 +277,8 @@ void DeckReader::add_node(std::int64_t id, const Vec3& p, std::uint8_t fixed, co
   model.mesh.nodes.add(id, p, fixed);
 }
 
-void DeckReader::add_element(std::int64_t id, std::int64_t part, const std::array<std::int64_t, 8>& node_ids,
+void DeckReader::add_element(std::int64_t id, std::int64_t part,
+                             const std::array<std::int64_t, 8>& node_ids,
                              const SourceLocation& where) {
   if (!hex_ids_.insert(id).second) {
     throw InputError(where, "element " + std::to_string(id) + " is already defined");
@@ -274,8 +300,8 @@ SourceLocation DeckReader::element_where(const ElementNodes& e, const std::strin
 void DeckReader::claim_id(const std::string& kind, std::int64_t id, const SourceLocation& where) {
   const auto [it, inserted] = claimed_ids_.emplace(std::make_pair(kind, id), where);
   if (!inserted) {
-    throw InputError(where, kind + " " + std::to_string(id) + " is already defined at " + it->second.file +
-                                ":" + std::to_string(it->second.line));
+    throw InputError(where, kind + " " + std::to_string(id) + " is already defined at " +
+                                it->second.file + ":" + std::to_string(it->second.line));
   }
 }
 
@@ -307,8 +333,8 @@ int parse_direction(const Row& r, std::size_t i, bool rotations) {
       return d;
     }
   }
-  r.fail(i, std::string("expected ") + (rotations ? "X, Y, Z, RX, RY or RZ" : "X, Y or Z") + ", got '" +
-                r.text(i) + "'");
+  r.fail(i, std::string("expected ") + (rotations ? "X, Y, Z, RX, RY or RZ" : "X, Y or Z") +
+                ", got '" + r.text(i) + "'");
 }
 
 }  // namespace deck

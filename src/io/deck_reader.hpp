@@ -96,10 +96,16 @@ class DeckReader {
 
   // Ids read from a row with the current include offsets applied.
   std::int64_t node_id(const Row& r, std::size_t i) const { return r.id(i) + frame().offsets.node; }
-  std::int64_t element_id(const Row& r, std::size_t i) const { return r.id(i) + frame().offsets.element; }
+  std::int64_t element_id(const Row& r, std::size_t i) const {
+    return r.id(i) + frame().offsets.element;
+  }
   std::int64_t part_id(const Row& r, std::size_t i) const { return r.id(i) + frame().offsets.part; }
-  std::int64_t material_id(const Row& r, std::size_t i) const { return r.id(i) + frame().offsets.material; }
-  std::int64_t other_id(const Row& r, std::size_t i) const { return r.id(i) + frame().offsets.other; }
+  std::int64_t material_id(const Row& r, std::size_t i) const {
+    return r.id(i) + frame().offsets.material;
+  }
+  std::int64_t other_id(const Row& r, std::size_t i) const {
+    return r.id(i) + frame().offsets.other;
+  }
   std::optional<std::int64_t> optional_other_id(const Row& r, std::size_t i) const;
   std::optional<std::int64_t> function_id(const Row::NumberOrFunction& v) const;
 

@@ -93,8 +93,8 @@ Row::Row(std::vector<std::string> fields, SourceLocation line, std::vector<std::
   if (fields_.size() > names_.size()) {
     std::string list;
     for (const auto& n : names_) list += (list.empty() ? "" : ", ") + n;
-    throw InputError(line_, std::string("expected at most ") + std::to_string(names_.size()) + " fields (" +
-                                list + "), got " + std::to_string(fields_.size()));
+    throw InputError(line_, std::string("expected at most ") + std::to_string(names_.size()) +
+                                " fields (" + list + "), got " + std::to_string(fields_.size()));
   }
 }
 
@@ -149,7 +149,8 @@ std::int64_t Row::id(std::size_t i) const {
 std::optional<std::int64_t> Row::optional_id(std::size_t i) const {
   if (!given(i)) return std::nullopt;
   const auto v = parse_integer(text(i));
-  if (!v || *v < 0) fail(i, "expected a positive integer id (or 0 for none), got '" + text(i) + "'");
+  if (!v || *v < 0)
+    fail(i, "expected a positive integer id (or 0 for none), got '" + text(i) + "'");
   if (*v == 0) return std::nullopt;
   return v;
 }
@@ -174,7 +175,8 @@ Row::NumberOrFunction Row::number_or_function(std::size_t i, double fallback) co
       fail(i, "expected a number or fcn(fid), got '" + text(i) + "'");
     }
     const auto fid = parse_integer(rest.substr(1, rest.size() - 2));
-    if (!fid || *fid <= 0) fail(i, "expected fcn(fid) with a positive function id, got '" + text(i) + "'");
+    if (!fid || *fid <= 0)
+      fail(i, "expected fcn(fid) with a positive function id, got '" + text(i) + "'");
     return {0.0, fid};
   }
   const auto v = parse_number(t);

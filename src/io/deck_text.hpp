@@ -14,7 +14,7 @@ namespace abut::deck {
 
 std::string trim(std::string_view s);
 std::string upper(std::string_view s);
-bool is_quoted(std::string_view s);     // "..." (after trimming)
+bool is_quoted(std::string_view s);       // "..." (after trimming)
 std::string unquote(std::string_view s);  // strips one pair of double quotes, if any
 
 // Splits a data line at commas that are outside double quotes, parentheses and brackets
@@ -38,7 +38,7 @@ class Row {
   bool given(std::size_t i) const { return i < fields_.size() && !fields_[i].empty(); }
   const std::string& text(std::size_t i) const;  // "" when absent
   const SourceLocation& where() const { return line_; }
-  SourceLocation where(std::size_t i) const;     // the line plus the field's name
+  SourceLocation where(std::size_t i) const;  // the line plus the field's name
   [[noreturn]] void fail(std::size_t i, const std::string& message) const;
   // fail(i, expectation + ", got <text>") unless ok.
   void require(bool ok, std::size_t i, const std::string& expectation) const;

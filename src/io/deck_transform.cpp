@@ -8,7 +8,8 @@ constexpr double kTolerance = 1e-12;
 
 double largest_entry(const std::array<Vec3, 3>& a) {
   double m = 0.0;
-  for (const auto& r : a) m = std::fmax(m, std::fmax(std::fabs(r.x), std::fmax(std::fabs(r.y), std::fabs(r.z))));
+  for (const auto& r : a)
+    m = std::fmax(m, std::fmax(std::fabs(r.x), std::fmax(std::fabs(r.y), std::fabs(r.z))));
   return m;
 }
 }  // namespace
@@ -35,7 +36,8 @@ std::optional<double> Transform::uniform_scale() const {
   const double s2 = dot(c0, c0);
   const double tol = 1e-10 * s2;
   if (std::fabs(dot(c1, c1) - s2) > tol || std::fabs(dot(c2, c2) - s2) > tol ||
-      std::fabs(dot(c0, c1)) > tol || std::fabs(dot(c0, c2)) > tol || std::fabs(dot(c1, c2)) > tol) {
+      std::fabs(dot(c0, c1)) > tol || std::fabs(dot(c0, c2)) > tol ||
+      std::fabs(dot(c1, c2)) > tol) {
     return std::nullopt;
   }
   return std::sqrt(s2);

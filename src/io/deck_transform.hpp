@@ -11,7 +11,7 @@ namespace abut::deck {
 
 struct Transform {
   std::array<Vec3, 3> rows{Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};  // A by rows
-  Vec3 shift;                                                          // b
+  Vec3 shift;                                                             // b
 
   Vec3 point(const Vec3& p) const { return linear(p) + shift; }
   Vec3 linear(const Vec3& v) const { return {dot(rows[0], v), dot(rows[1], v), dot(rows[2], v)}; }
@@ -38,7 +38,8 @@ Transform include_transform(const Vec3& scale, const Vec3& from, const Vec3& to,
 struct IdOffsets {
   std::int64_t node = 0, element = 0, part = 0, material = 0, other = 0;
   IdOffsets operator+(const IdOffsets& o) const {
-    return {node + o.node, element + o.element, part + o.part, material + o.material, other + o.other};
+    return {node + o.node, element + o.element, part + o.part, material + o.material,
+            other + o.other};
   }
 };
 

@@ -16,12 +16,16 @@ void read_contact(DeckReader& d, Block& b) {
   c.accuracy_edge = r1.flag(2);
 
   const std::size_t index = d.model.contacts.size();
-  const auto bind = [&](std::int64_t fid, const SourceLocation& where, FunctionRef ContactSpec::*member) {
-    d.bind_function(fid, where, [index, member](Model& m, FunctionRef f) { m.contacts[index].*member = f; });
+  const auto bind = [&](std::int64_t fid, const SourceLocation& where,
+                        FunctionRef ContactSpec::*member) {
+    d.bind_function(fid, where,
+                    [index, member](Model& m, FunctionRef f) { m.contacts[index].*member = f; });
   };
 
-  const Row r2 = b.row({"entype_1", "enid_1", "entype_2", "enid_2", "mu", "pfac", "t_beg", "t_end"});
-  const std::initializer_list<EntityType> surfaces = {EntityType::Part, EntityType::PartSet, EntityType::All};
+  const Row r2 =
+      b.row({"entype_1", "enid_1", "entype_2", "enid_2", "mu", "pfac", "t_beg", "t_end"});
+  const std::initializer_list<EntityType> surfaces = {EntityType::Part, EntityType::PartSet,
+                                                      EntityType::All};
   c.surface1 = d.entity(r2, 0, 1, surfaces);
   c.surface2 = d.entity(r2, 2, 3, surfaces);
   const auto mu = r2.number_or_function(4, 0.0);
@@ -39,7 +43,8 @@ void read_contact(DeckReader& d, Block& b) {
   c.end_time = r2.number_or(7, c.end_time);
   r2.require(c.end_time > c.begin_time, 7, "expected t_end > t_beg");
 
-  if (auto r3 = b.optional_row({"merge", "xi", "gid_0", "gid_1", "delta0_offset", "delta0_max", "delta_edge"})) {
+  if (auto r3 = b.optional_row(
+          {"merge", "xi", "gid_0", "gid_1", "delta0_offset", "delta0_max", "delta_edge"})) {
     c.merge = r3->flag(0);
     c.damping = r3->number_or(1, c.damping);
     r3->require(c.damping >= 0.0, 1, "expected a fraction of critical damping >= 0");
@@ -51,28 +56,34 @@ void read_contact(DeckReader& d, Block& b) {
     r3->require(c.initial_offset >= 0.0, 4, "expected a penetration offset >= 0");
     if (r3->given(5)) {
       c.initial_max = r3->number(5);
-      r3->require(*c.initial_max > 0.0, 5, "expected a maximum initial penetration > 0 (empty: 4% of element thickness)");
+      r3->require(*c.initial_max > 0.0, 5,
+                  "expected a maximum initial penetration > 0 (empty: 4% of element thickness)");
     }
     c.edge_tolerance = r3->number_or(6, 0.0);
     r3->require(c.edge_tolerance >= 0.0, 6, "expected a tolerance >= 0");
   }
 
-  if (auto r4 = b.optional_row({"fid_wear1", "fid_wear2", "fid_thermal", "alpha_edge", "one_way", "no_internal",
-                                "sigma_stick", "fric_heat"})) {
+  if (auto r4 = b.optional_row({"fid_wear1", "fid_wear2", "fid_thermal", "alpha_edge", "one_way",
+                                "no_internal", "sigma_stick", "fric_heat"})) {
     if (const auto fid = d.optional_other_id(*r4, 0)) bind(*fid, r4->where(0), &ContactSpec::wear1);
     if (const auto fid = d.optional_other_id(*r4, 1)) bind(*fid, r4->where(1), &ContactSpec::wear2);
-    r4->unsupported_unless(2, 0.0, "thermal contact conductance (fid_thermal) needs a thermal solution, which");
+    r4->unsupported_unless(
+        2, 0.0, "thermal contact conductance (fid_thermal) needs a thermal solution, which");
     c.edge_angle = r4->number_or(3, c.edge_angle);
-    r4->require(c.edge_angle > 0.0 && c.edge_angle < 180.0, 3, "expected an angle in (0, 180) degrees");
+    r4->require(c.edge_angle > 0.0 && c.edge_angle < 180.0, 3,
+                "expected an angle in (0, 180) degrees");
     c.one_way = r4->flag(4);
     c.no_internal = r4->flag(5);
     if (r4->given(6)) {
       c.stick_stress = r4->number(6);
-      r4->require(*c.stick_stress > 0.0, 6, "expected a sticking failure stress > 0 (empty: no sticking)");
+      r4->require(*c.stick_stress > 0.0, 6,
+                  "expected a sticking failure stress > 0 (empty: no sticking)");
     }
     c.friction_heat = r4->flag(7);
     if (c.friction_heat) {
-      r4->fail(7, "converting friction work to heat needs a thermal solution, which is not supported yet by abut");
+      r4->fail(7,
+               "converting friction work to heat needs a thermal solution, which is not supported "
+               "yet by abut");
     }
   }
   d.entity_references.push_back(c.surface1);

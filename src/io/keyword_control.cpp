@@ -11,7 +11,8 @@ void read_parameter_rows(DeckReader& d, Block& b, bool only_if_undefined) {
   while (!b.done()) {
     const Line line = b.raw_line("%name = expression");
     const SourceLocation where = b.where(line);
-    const Row row(split_fields(line.text), where, {"%name = expression", "description", "rid", "quantity"});
+    const Row row(split_fields(line.text), where,
+                  {"%name = expression", "description", "rid", "quantity"});
     const std::string& definition = row.text(0);
     const auto equals = definition.find('=');
     if (definition.empty() || definition.front() != '%' || equals == std::string::npos) {
@@ -20,7 +21,8 @@ void read_parameter_rows(DeckReader& d, Block& b, bool only_if_undefined) {
     const std::string name = trim(definition.substr(1, equals - 1));
     const std::string expression = trim(definition.substr(equals + 1));
     if (!is_parameter_name(name)) {
-      row.fail(0, "expected a parameter name of letters, digits and '_' after '%', got '" + name + "'");
+      row.fail(
+          0, "expected a parameter name of letters, digits and '_' after '%', got '" + name + "'");
     }
     if (expression.empty()) row.fail(0, "missing expression after '='");
     if (row.given(2)) row.integer(2);
@@ -53,13 +55,15 @@ void read_parameter_default(DeckReader& d, Block& b) { read_parameter_rows(d, b,
 
 void read_unit_system(DeckReader& d, Block& b) {
   if (d.units_where) {
-    throw InputError(b.where(), "the deck already has a *UNIT_SYSTEM at " + d.units_where->file + ":" +
-                                    std::to_string(d.units_where->line));
+    throw InputError(b.where(), "the deck already has a *UNIT_SYSTEM at " + d.units_where->file +
+                                    ":" + std::to_string(d.units_where->line));
   }
   d.units_where = b.where();
   const Row r = b.row({"units", "temperature"});
   const auto units = parse_unit_system(r.word(0));
-  if (!units) r.fail(0, "expected SI, MMTONS, CMGUS, IPS, MMKGMS, CMGS, MMGMS or MMMGMS, got '" + r.text(0) + "'");
+  if (!units)
+    r.fail(0, "expected SI, MMTONS, CMGUS, IPS, MMKGMS, CMGS, MMGMS or MMMGMS, got '" + r.text(0) +
+                  "'");
   d.model.units = units;
   // The temperature unit matters only to thermal solutions, which abut does not have.
   if (r.given(1)) {
@@ -76,13 +80,16 @@ void read_time(DeckReader& d, Block& b) {
   d.time_where = b.where();
   const Row r = b.row({"t_term", "sf_dt", "dt_min", "dt_max", "ms_max", "t_start"});
   TimeControl& t = d.model.time;
-  if (r.number_or_function(0, 0.0).function_id) r.fail(0, "a termination time given by fcn is not supported yet by abut");
+  if (r.number_or_function(0, 0.0).function_id)
+    r.fail(0, "a termination time given by fcn is not supported yet by abut");
   t.end_time = r.number(0);
   r.require(t.end_time > 0.0, 0, "expected a termination time > 0");
   t.step_scale = r.number_or(1, t.step_scale);
-  r.require(t.step_scale > 0.0 && t.step_scale <= 1.0, 1, "expected a time-step scale factor in (0, 1]");
+  r.require(t.step_scale > 0.0 && t.step_scale <= 1.0, 1,
+            "expected a time-step scale factor in (0, 1]");
   for (std::size_t i : {2, 3}) {
-    if (r.number_or_function(i, 0.0).function_id) r.fail(i, "a time-step limit given by fcn is not supported yet by abut");
+    if (r.number_or_function(i, 0.0).function_id)
+      r.fail(i, "a time-step limit given by fcn is not supported yet by abut");
   }
   t.min_step = r.number_or(2, t.min_step);
   r.require(t.min_step >= 0.0, 2, "expected a minimum time step >= 0");
@@ -91,7 +98,8 @@ void read_time(DeckReader& d, Block& b) {
   r.require(t.max_step >= t.min_step, 3, "expected a maximum time step >= dt_min");
   r.unsupported_unless(4, 1e10, "mass scaling (ms_max)");
   t.start_time = r.number_or(5, t.start_time);
-  r.require(t.start_time >= 0.0 && t.start_time < t.end_time, 5, "expected a start time in [0, t_term)");
+  r.require(t.start_time >= 0.0 && t.start_time < t.end_time, 5,
+            "expected a start time in [0, t_term)");
 }
 
 void read_output(DeckReader& d, Block& b) {

@@ -21,9 +21,11 @@ void check_type(const Row& r, std::size_t i, bool abscissa_of_function) {
     r.require(is_one_of(t, {"TIME", "STRAIN", "NONE"}), i, "expected time, strain or none");
     return;
   }
-  r.require(is_one_of(t, {"TIME", "LENGTH", "DISP", "VELO", "ACC", "FORCE", "STRESS", "STRAIN", "PRESSURE",
-                          "TEMP", "ENERGY", "NONE"}),
-            i, "expected time, length, disp, velo, acc, force, stress, strain, pressure, temp, energy or none");
+  r.require(is_one_of(t, {"TIME", "LENGTH", "DISP", "VELO", "ACC", "FORCE", "STRESS", "STRAIN",
+                          "PRESSURE", "TEMP", "ENERGY", "NONE"}),
+            i,
+            "expected time, length, disp, velo, acc, force, stress, strain, pressure, temp, energy "
+            "or none");
 }
 
 // Adds the include's id offset to the literal ids of crv(cid, ...), fcn(fid, ...) and dfcn(fid).
@@ -32,10 +34,12 @@ std::string offset_references(const std::string& expression, std::int64_t offset
   std::string out;
   std::size_t i = 0;
   while (i < expression.size()) {
-    const bool word_start = i == 0 || (std::isalnum(static_cast<unsigned char>(expression[i - 1])) == 0 &&
-                                       expression[i - 1] != '_');
+    const bool word_start =
+        i == 0 || (std::isalnum(static_cast<unsigned char>(expression[i - 1])) == 0 &&
+                   expression[i - 1] != '_');
     std::size_t name_end = i;
-    while (name_end < expression.size() && std::isalpha(static_cast<unsigned char>(expression[name_end])) != 0) {
+    while (name_end < expression.size() &&
+           std::isalpha(static_cast<unsigned char>(expression[name_end])) != 0) {
       ++name_end;
     }
     const std::string name = upper(expression.substr(i, name_end - i));
@@ -46,7 +50,8 @@ std::string offset_references(const std::string& expression, std::int64_t offset
         std::size_t k = j + 1;
         while (k < expression.size() && expression[k] == ' ') ++k;
         std::size_t digits_end = k;
-        while (digits_end < expression.size() && std::isdigit(static_cast<unsigned char>(expression[digits_end])) != 0) {
+        while (digits_end < expression.size() &&
+               std::isdigit(static_cast<unsigned char>(expression[digits_end])) != 0) {
           ++digits_end;
         }
         if (digits_end > k) {
@@ -79,11 +84,13 @@ void read_curve(DeckReader& d, Block& b) {
   check_type(head, 3, false);
   check_type(head, 4, false);
   Curve curve;
-  if (b.done()) throw InputError(b.where(), "missing data line: expected the first x, y point of the curve");
+  if (b.done())
+    throw InputError(b.where(), "missing data line: expected the first x, y point of the curve");
   while (!b.done()) {
     const Row p = b.row({"x", "y"});
     const double x = sf_x * p.number(0);
-    if (!curve.x.empty()) p.require(x > curve.x.back(), 0, "expected abscissas in strictly increasing order");
+    if (!curve.x.empty())
+      p.require(x > curve.x.back(), 0, "expected abscissas in strictly increasing order");
     curve.x.push_back(x);
     curve.y.push_back(sf_y * p.number(1));
   }
@@ -96,14 +103,17 @@ void read_function(DeckReader& d, Block& b) {
   const std::int64_t id = d.other_id(head, 0);
   const std::int64_t derivative = head.integer_or(1, 0);
   head.require(derivative >= 0 && derivative <= 2, 1, "expected 0, 1 or 2");
-  if (derivative > 0) head.fail(1, "functions given by their derivative (derivative > 0) are not supported yet by abut");
+  if (derivative > 0)
+    head.fail(1,
+              "functions given by their derivative (derivative > 0) are not supported yet by abut");
   for (std::size_t i : {2, 3}) {
     head.require(!head.given(i) || parse_number(head.text(i)) == 0.0, i,
                  "initial values apply only when derivative > 0: leave the field empty");
   }
   check_type(head, 4, true);
   check_type(head, 5, false);
-  const std::string expression = offset_references(b.text_line("the expression"), d.frame().offsets.other);
+  const std::string expression =
+      offset_references(b.text_line("the expression"), d.frame().offsets.other);
   SourceLocation where = b.last_where();
   where.field = "expression";
   if (trim(expression).empty()) throw InputError(where, "empty expression");

@@ -7,7 +7,9 @@
 namespace abut::deck {
 namespace {
 
-Vec3 point(const Row& r, std::size_t first) { return {r.number(first), r.number(first + 1), r.number(first + 2)}; }
+Vec3 point(const Row& r, std::size_t first) {
+  return {r.number(first), r.number(first + 1), r.number(first + 2)};
+}
 
 // Title line and `gid, csysid`; returns the entry to fill.
 GeometryEntry head(DeckReader& d, Block& b, bool has_csysid) {
@@ -23,13 +25,18 @@ GeometryEntry head(DeckReader& d, Block& b, bool has_csysid) {
 
 double uniform_scale(const DeckReader& d, const SourceLocation& where) {
   const auto s = d.frame().transform.uniform_scale();
-  if (!s) throw InputError(where, "this geometry inside an *INCLUDE with unequal scale factors is not supported yet by abut");
+  if (!s)
+    throw InputError(
+        where,
+        "this geometry inside an *INCLUDE with unequal scale factors is not supported yet by abut");
   return *s;
 }
 
 void require_axis_aligned(const DeckReader& d, const SourceLocation& where) {
   if (!d.frame().transform.axis_aligned()) {
-    throw InputError(where, "this geometry inside an *INCLUDE that rotates its axes is not supported yet by abut");
+    throw InputError(
+        where,
+        "this geometry inside an *INCLUDE that rotates its axes is not supported yet by abut");
   }
 }
 
@@ -88,9 +95,11 @@ void read_geometry_pipe(DeckReader& d, Block& b) {
     r2->require(pipe.radius4 >= 0.0, 1, "expected a radius >= 0");
     pipe.reference = {r2->number_or(2, 0.0), r2->number_or(3, 0.0), r2->number_or(4, 0.0)};
     pipe.sector_angle = r2->number_or(5, 360.0);
-    r2->require(pipe.sector_angle > 0.0 && pipe.sector_angle <= 360.0, 5, "expected a sector angle in (0, 360] degrees");
+    r2->require(pipe.sector_angle > 0.0 && pipe.sector_angle <= 360.0, 5,
+                "expected a sector angle in (0, 360] degrees");
     if (pipe.sector_angle < 360.0) {
-      r2->require(norm(pipe.reference) > 0.0, 2, "a sector (alpha < 360) needs a non-zero reference vector v");
+      r2->require(norm(pipe.reference) > 0.0, 2,
+                  "a sector (alpha < 360) needs a non-zero reference vector v");
     }
   }
   const double s = uniform_scale(d, b.where());

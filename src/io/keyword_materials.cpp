@@ -17,7 +17,8 @@ double density(const Row& r, std::size_t i) {
 }
 
 void unused_field(const Row& r, std::size_t i) {
-  r.require(!r.given(i) || parse_number(r.text(i)) == 0.0, i, "this field is unused: leave it empty");
+  r.require(!r.given(i) || parse_number(r.text(i)) == 0.0, i,
+            "this field is unused: leave it empty");
 }
 
 void no_thermal(const Row& r, std::size_t thpid) {
@@ -57,7 +58,8 @@ void read_mat_mooney_rivlin(DeckReader& d, Block& b) {
   no_thermal(r1, 5);
   p.c1 = r2.number(0);
   p.c2 = r2.number_or(1, 0.0);
-  r2.require(p.c1 + p.c2 > 0.0, 1, "expected C1 + C2 > 0 (the initial shear modulus is 2 (C1 + C2))");
+  r2.require(p.c1 + p.c2 > 0.0, 1,
+             "expected C1 + C2 > 0 (the initial shear modulus is 2 (C1 + C2))");
   for (std::size_t k = 0; k < 3; ++k) {
     p.alpha[k] = r2.number_or(2 + 2 * k, 0.0);
     r2.require(p.alpha[k] >= 0.0, 2 + 2 * k, "expected a viscous stiffness alpha >= 0");
@@ -89,10 +91,12 @@ void read_part(DeckReader& d, Block& b) {
     if (auto title = b.title()) {
       part.title = *title;
       if (b.done() || b.next_is_title()) {
-        throw InputError(b.where(), "the part title \"" + part.title + "\" must be followed by its pid, mid line");
+        throw InputError(b.where(), "the part title \"" + part.title +
+                                        "\" must be followed by its pid, mid line");
       }
     }
-    const Row r = b.row({"pid", "mid", "-", "h", "alpha_max", "dt_erode", "eps_geo_erode", "eps_v_erode"});
+    const Row r =
+        b.row({"pid", "mid", "-", "h", "alpha_max", "dt_erode", "eps_geo_erode", "eps_v_erode"});
     part.id = d.part_id(r, 0);
     d.claim_id("part", part.id, r.where(0));
     part.material_id = d.material_id(r, 1);
@@ -100,7 +104,8 @@ void read_part(DeckReader& d, Block& b) {
     unused_field(r, 2);
     r.unsupported_unless(3, 1.0, "a thickness h (shells and rebars)");
     const double alpha_max = r.number_or(4, 0.0);
-    r.require(alpha_max >= 0.0 && alpha_max <= 180.0, 4, "expected a smoothing angle in [0, 180] degrees (0: off)");
+    r.require(alpha_max >= 0.0 && alpha_max <= 180.0, 4,
+              "expected a smoothing angle in [0, 180] degrees (0: off)");
     if (alpha_max > 0.0) {
       PendingSmoothing s;
       s.entity = {EntityType::Part, part.id, r.where(0)};

@@ -8,7 +8,9 @@
 namespace abut::deck {
 namespace {
 
-Vec3 point(const Row& r, std::size_t first) { return {r.number(first), r.number(first + 1), r.number(first + 2)}; }
+Vec3 point(const Row& r, std::size_t first) {
+  return {r.number(first), r.number(first + 1), r.number(first + 2)};
+}
 
 // Component line 1 starts `coid, pid`: the component id is checked for uniqueness.
 std::int64_t component_part(DeckReader& d, const Row& r) {
@@ -26,7 +28,9 @@ int element_count(const Row& r, std::size_t i) {
 double uniform_scale(const DeckReader& d, const SourceLocation& where, const std::string& shape) {
   const auto s = d.frame().transform.uniform_scale();
   if (!s) {
-    throw InputError(where, "a " + shape + " inside an *INCLUDE with unequal scale factors is not supported yet by abut");
+    throw InputError(
+        where, "a " + shape +
+                   " inside an *INCLUDE with unequal scale factors is not supported yet by abut");
   }
   return *s;
 }
@@ -69,13 +73,15 @@ void read_component_box(DeckReader& d, Block& b) {
   c.nz = element_count(r1, 4);
   r1.global_coordinates_only(5);
   if (!d.frame().transform.axis_aligned()) {
-    throw InputError(b.where(), "a box inside an *INCLUDE that rotates its axes is not supported yet by abut");
+    throw InputError(b.where(),
+                     "a box inside an *INCLUDE that rotates its axes is not supported yet by abut");
   }
   const Vec3 p1 = d.frame().transform.point(point(r2, 0));
   const Vec3 p2 = d.frame().transform.point(point(r2, 3));
   for (int k = 0; k < 3; ++k) {
-    r2.require(p1[k] != p2[k], static_cast<std::size_t>(k + 3), "expected a box of non-zero size along " +
-                                                                  std::string(1, static_cast<char>('x' + k)));
+    r2.require(
+        p1[k] != p2[k], static_cast<std::size_t>(k + 3),
+        "expected a box of non-zero size along " + std::string(1, static_cast<char>('x' + k)));
     c.corner1[k] = std::min(p1[k], p2[k]);
     c.corner2[k] = std::max(p1[k], p2[k]);
   }
@@ -96,7 +102,8 @@ void read_component_sphere(DeckReader& d, Block& b) {
   const double r_1 = r2.number(3);
   r2.require(r_1 > 0.0, 3, "expected a radius > 0");
   const double r_2 = r2.number_or(4, 0.0);
-  r2.require(r_2 == 0.0 || r_2 > r_1, 4, "expected 0 (solid sphere) or an outer radius > R1 (hollow sphere)");
+  r2.require(r_2 == 0.0 || r_2 > r_1, 4,
+             "expected 0 (solid sphere) or an outer radius > R1 (hollow sphere)");
   const double s = uniform_scale(d, b.where(), "sphere");
   c.centre = d.frame().transform.point(point(r2, 0));
   c.inner_radius = r_2 > 0.0 ? s * r_1 : 0.0;
@@ -153,7 +160,8 @@ void read_smooth_mesh(DeckReader& d, Block& b) {
     PendingSmoothing s;
     s.entity = d.entity(r, 0, 1, {EntityType::Part, EntityType::PartSet, EntityType::All});
     s.max_angle = r.number(2);
-    r.require(s.max_angle > 0.0 && s.max_angle <= 180.0, 2, "expected an angle in (0, 180] degrees");
+    r.require(s.max_angle > 0.0 && s.max_angle <= 180.0, 2,
+              "expected an angle in (0, 180] degrees");
     s.internal = r.flag(3);
     s.region = region(d, r, 4);
     d.smoothing.push_back(s);

@@ -7,10 +7,12 @@ namespace {
 // The member ids of a set, any number per line (IMPETUS writes up to 8).
 template <typename AddMember>
 void read_members(Block& b, AddMember add) {
-  if (b.done()) throw InputError(b.where(), "missing data line: expected the member ids of the set");
+  if (b.done())
+    throw InputError(b.where(), "missing data line: expected the member ids of the set");
   while (!b.done()) {
     std::vector<std::string> names;
-    for (std::size_t k = 1; k <= b.peek_fields().size(); ++k) names.push_back("id" + std::to_string(k));
+    for (std::size_t k = 1; k <= b.peek_fields().size(); ++k)
+      names.push_back("id" + std::to_string(k));
     const Row r = b.row(names);
     for (std::size_t k = 0; k < r.size(); ++k) {
       if (r.given(k)) add(r, k);
@@ -28,7 +30,9 @@ void read_set_node(DeckReader& d, Block& b) {
   d.claim_id("node set", set.id, head.where(0));
   PendingNodeSet pending;
   pending.index = d.model.node_sets.size();
-  read_members(b, [&](const Row& r, std::size_t k) { pending.nodes.push_back({d.node_id(r, k), r.where(k)}); });
+  read_members(b, [&](const Row& r, std::size_t k) {
+    pending.nodes.push_back({d.node_id(r, k), r.where(k)});
+  });
   d.model.node_sets.push_back(set);
   d.node_sets.push_back(std::move(pending));
 }

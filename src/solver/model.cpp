@@ -12,14 +12,16 @@ std::string id_list(const Items& items, Id id_of) {
   for (const auto& item : items) ids.push_back(id_of(item));
   std::sort(ids.begin(), ids.end());
   std::string s;
-  for (std::size_t i = 0; i < ids.size() && i < 20; ++i) s += (i ? ", " : "") + std::to_string(ids[i]);
+  for (std::size_t i = 0; i < ids.size() && i < 20; ++i)
+    s += (i ? ", " : "") + std::to_string(ids[i]);
   if (ids.size() > 20) s += ", ...";
   return s.empty() ? "none" : s;
 }
 
 template <typename Items>
 auto find_by_id(const Items& items, std::int64_t id) -> decltype(&items.front()) {
-  const auto it = std::find_if(items.begin(), items.end(), [id](const auto& x) { return x.id == id; });
+  const auto it =
+      std::find_if(items.begin(), items.end(), [id](const auto& x) { return x.id == id; });
   return it == items.end() ? nullptr : &*it;
 }
 
@@ -32,7 +34,9 @@ void sort_unique(std::vector<std::int32_t>& v) {
 
 const Part* Model::find_part(std::int64_t id) const { return find_by_id(parts, id); }
 const Material* Model::find_material(std::int64_t id) const { return find_by_id(materials, id); }
-const GeometryEntry* Model::find_geometry(std::int64_t id) const { return find_by_id(geometries, id); }
+const GeometryEntry* Model::find_geometry(std::int64_t id) const {
+  return find_by_id(geometries, id);
+}
 
 const MaterialParams& Model::material_of_part(std::int64_t part_id) const {
   const Part* part = find_part(part_id);
@@ -54,7 +58,8 @@ const MaterialParams& Model::material_of_part(std::int64_t part_id) const {
 std::vector<std::int64_t> Model::parts_of(const EntityRef& entity) const {
   const auto require_part = [&](std::int64_t id) {
     if (!find_part(id)) {
-      throw InputError(entity.where, "part " + std::to_string(id) + " does not exist (defined parts: " +
+      throw InputError(entity.where, "part " + std::to_string(id) +
+                                         " does not exist (defined parts: " +
                                          id_list(parts, [](const Part& p) { return p.id; }) + ")");
     }
   };
@@ -65,8 +70,10 @@ std::vector<std::int64_t> Model::parts_of(const EntityRef& entity) const {
     case EntityType::PartSet: {
       const PartSet* set = find_by_id(part_sets, entity.id);
       if (!set) {
-        throw InputError(entity.where, "part set " + std::to_string(entity.id) + " does not exist (defined part sets: " +
-                                           id_list(part_sets, [](const PartSet& s) { return s.id; }) + ")");
+        throw InputError(entity.where,
+                         "part set " + std::to_string(entity.id) +
+                             " does not exist (defined part sets: " +
+                             id_list(part_sets, [](const PartSet& s) { return s.id; }) + ")");
       }
       for (const std::int64_t id : set->parts) require_part(id);
       return set->parts;
@@ -96,8 +103,10 @@ std::vector<std::int32_t> Model::nodes_of(const EntityRef& entity) const {
     case EntityType::NodeSet: {
       const NodeSet* set = find_by_id(node_sets, entity.id);
       if (!set) {
-        throw InputError(entity.where, "node set " + std::to_string(entity.id) + " does not exist (defined node sets: " +
-                                           id_list(node_sets, [](const NodeSet& s) { return s.id; }) + ")");
+        throw InputError(entity.where,
+                         "node set " + std::to_string(entity.id) +
+                             " does not exist (defined node sets: " +
+                             id_list(node_sets, [](const NodeSet& s) { return s.id; }) + ")");
       }
       nodes = set->nodes;
       break;
@@ -113,16 +122,20 @@ std::vector<std::int32_t> Model::nodes_of(const EntityRef& entity) const {
       break;
     }
     case EntityType::All:
-      for (std::size_t i = 0; i < mesh.nodes.size(); ++i) nodes.push_back(static_cast<std::int32_t>(i));
+      for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
+        nodes.push_back(static_cast<std::int32_t>(i));
       return nodes;
     case EntityType::GeometryRegion: {
       const GeometryEntry* g = find_geometry(entity.id);
       if (!g) {
-        throw InputError(entity.where, "geometry " + std::to_string(entity.id) + " does not exist (defined geometries: " +
-                                           id_list(geometries, [](const GeometryEntry& e) { return e.id; }) + ")");
+        throw InputError(
+            entity.where,
+            "geometry " + std::to_string(entity.id) + " does not exist (defined geometries: " +
+                id_list(geometries, [](const GeometryEntry& e) { return e.id; }) + ")");
       }
       for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
-        if (geometry_contains(g->geometry, mesh.nodes.position(i), mesh)) nodes.push_back(static_cast<std::int32_t>(i));
+        if (geometry_contains(g->geometry, mesh.nodes.position(i), mesh))
+          nodes.push_back(static_cast<std::int32_t>(i));
       }
       return nodes;
     }

@@ -9,7 +9,9 @@
 namespace abut {
 namespace {
 
-std::string example(const std::string& name) { return std::string(ABUT_SOURCE_DIR) + "/examples/" + name; }
+std::string example(const std::string& name) {
+  return std::string(ABUT_SOURCE_DIR) + "/examples/" + name;
+}
 
 TEST(DeckExamples, SeedRubberSphereOnSteelBlock) {
   const DeckResult r = read_deck_with_notes(example("rubber_sphere.k"));
@@ -46,7 +48,8 @@ TEST(DeckExamples, SeedRubberSphereOnSteelBlock) {
   // "P, 1, 0.0, 0.0, -100.0": part 1 only.
   const auto sphere_nodes = m.nodes_of({EntityType::Part, 1, {}});
   for (std::size_t i = 0; i < m.mesh.nodes.size(); ++i) {
-    const bool on_sphere = std::binary_search(sphere_nodes.begin(), sphere_nodes.end(), static_cast<std::int32_t>(i));
+    const bool on_sphere =
+        std::binary_search(sphere_nodes.begin(), sphere_nodes.end(), static_cast<std::int32_t>(i));
     EXPECT_DOUBLE_EQ(m.vz0[i], on_sphere ? -100.0 : 0.0);
     EXPECT_DOUBLE_EQ(m.vx0[i], 0.0);
     EXPECT_DOUBLE_EQ(m.vy0[i], 0.0);

@@ -8,8 +8,8 @@
 namespace abut {
 namespace {
 
-using ::testing::HasSubstr;
 using testing::error_of;
+using ::testing::HasSubstr;
 using testing::kBoxModel;
 using testing::model_of;
 using testing::read;
@@ -25,7 +25,8 @@ MM/TON/S, C
 2.0e-3, 0.5, 1.0e-9, 1.0e-5, , 1.0e-4
 *OUTPUT
 1.0e-5, 1.0e-6
-)").model;
+)")
+                      .model;
   EXPECT_EQ(m.title, "Two blocks");
   EXPECT_EQ(m.units, UnitSystem::MMTONS);
   EXPECT_DOUBLE_EQ(m.time.end_time, 2.0e-3);
@@ -49,12 +50,16 @@ TEST(DeckControl, DefaultsOfTimeAndOutput) {
 TEST(DeckControl, RangesAndUnsupportedOptions) {
   EXPECT_EQ(error_of("*TIME\n0\n").where().field, "t_term");
   EXPECT_THAT(error_of("*TIME\n1, 1.5\n").message(), HasSubstr("(0, 1]"));
-  EXPECT_THAT(error_of("*TIME\n1, , , , 100\n").message(), HasSubstr("mass scaling (ms_max) is not supported yet"));
+  EXPECT_THAT(error_of("*TIME\n1, , , , 100\n").message(),
+              HasSubstr("mass scaling (ms_max) is not supported yet"));
   EXPECT_THAT(error_of("*TIME\nfcn(1)\n").message(), HasSubstr("not supported yet"));
-  EXPECT_THAT(error_of("*UNIT_SYSTEM\nFURLONG\n*TIME\n1\n").message(), HasSubstr("expected SI, MMTONS"));
-  EXPECT_THAT(error_of("*TIME\n1\n*TIME\n2\n").message(), HasSubstr("already has a *TIME at t.k:1"));
+  EXPECT_THAT(error_of("*UNIT_SYSTEM\nFURLONG\n*TIME\n1\n").message(),
+              HasSubstr("expected SI, MMTONS"));
+  EXPECT_THAT(error_of("*TIME\n1\n*TIME\n2\n").message(),
+              HasSubstr("already has a *TIME at t.k:1"));
   EXPECT_THAT(error_of("*TIME\n1\n*OUTPUT\n1e-3, 1e-4, 1e-2\n").message(), HasSubstr("dt_db"));
-  EXPECT_THAT(error_of("*TIME\n1\n*OUTPUT\n1e-3\n0, 0, P, 1\n").message(), HasSubstr("state-file output"));
+  EXPECT_THAT(error_of("*TIME\n1\n*OUTPUT\n1e-3\n0, 0, P, 1\n").message(),
+              HasSubstr("state-file output"));
 }
 
 TEST(DeckMesh, NodesWithConstraintsAndSolidElements) {
@@ -75,7 +80,8 @@ TEST(DeckMesh, NodesWithConstraintsAndSolidElements) {
 5, 7800.0
 *PART
 3, 5
-)").model;
+)")
+                      .model;
   ASSERT_EQ(m.mesh.nodes.size(), 8u);
   EXPECT_EQ(m.mesh.nodes.fixed[0], kFixX | kFixY | kFixZ);
   EXPECT_EQ(m.mesh.nodes.fixed[1], kFixX);
@@ -90,16 +96,20 @@ TEST(DeckMesh, NodesWithConstraintsAndSolidElements) {
 }
 
 TEST(DeckMesh, ElementReferencesAreChecked) {
-  const char* nodes = "*TIME\n1\n*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 1, 1, 0\n4, 0, 1, 0\n"
-                      "5, 0, 0, 1\n6, 1, 0, 1\n7, 1, 1, 1\n8, 0, 1, 1\n*MAT_RIGID\n1, 1000\n";
-  const InputError missing_node = error_of(std::string(nodes) + "*PART\n1, 1\n*ELEMENT_SOLID\n1, 1, 1, 2, 9, 4, 5, 6, 7, 8\n");
+  const char* nodes =
+      "*TIME\n1\n*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 1, 1, 0\n4, 0, 1, 0\n"
+      "5, 0, 0, 1\n6, 1, 0, 1\n7, 1, 1, 1\n8, 0, 1, 1\n*MAT_RIGID\n1, 1000\n";
+  const InputError missing_node =
+      error_of(std::string(nodes) + "*PART\n1, 1\n*ELEMENT_SOLID\n1, 1, 1, 2, 9, 4, 5, 6, 7, 8\n");
   EXPECT_EQ(missing_node.where().line, 17u);
   EXPECT_EQ(missing_node.where().field, "n3");
   EXPECT_EQ(missing_node.message(), "node 9 does not exist");
-  const InputError missing_part = error_of(std::string(nodes) + "*PART\n1, 1\n*ELEMENT_SOLID\n1, 2, 1, 2, 3, 4, 5, 6, 7, 8\n");
+  const InputError missing_part =
+      error_of(std::string(nodes) + "*PART\n1, 1\n*ELEMENT_SOLID\n1, 2, 1, 2, 3, 4, 5, 6, 7, 8\n");
   EXPECT_EQ(missing_part.where().field, "pid");
   EXPECT_EQ(missing_part.message(), "part 2 does not exist (defined parts: 1)");
-  EXPECT_THAT(error_of("*TIME\n1\n*NODE\n1, 0, 0, 0, XX\n").message(), HasSubstr("expected 0, X, Y, Z, XY"));
+  EXPECT_THAT(error_of("*TIME\n1\n*NODE\n1, 0, 0, 0, XX\n").message(),
+              HasSubstr("expected 0, X, Y, Z, XY"));
 }
 
 TEST(DeckMesh, BoxComponentOfTwoByTwoByOne) {
@@ -114,7 +124,8 @@ TEST(DeckMesh, BoxComponentOfTwoByTwoByOne) {
   }
   EXPECT_DOUBLE_EQ(lo, 0.0);
   EXPECT_DOUBLE_EQ(hi, 1.0);
-  EXPECT_EQ(error_of("*TIME\n1\n*COMPONENT_BOX\n1, 1, 0, 1, 1\n0, 0, 0, 1, 1, 1\n").where().field, "N_x");
+  EXPECT_EQ(error_of("*TIME\n1\n*COMPONENT_BOX\n1, 1, 0, 1, 1\n0, 0, 0, 1, 1, 1\n").where().field,
+            "N_x");
   EXPECT_THAT(error_of("*TIME\n1\n*COMPONENT_BOX\n1, 1, 1, 1, 1\n0, 0, 0, 1, 1, 0\n").message(),
               HasSubstr("non-zero size along z"));
   EXPECT_THAT(error_of("*TIME\n1\n*COMPONENT_BOX\n1, 1, 1, 1, 1, 4\n0, 0, 0, 1, 1, 1\n").message(),
@@ -136,7 +147,8 @@ TEST(DeckMesh, SphereComponentsSolidAndHollow) {
 *PART
 1, 1
 2, 1
-)").model;
+)")
+                      .model;
   std::size_t part1 = 0, part2 = 0;
   for (const auto p : m.mesh.hex_part) (p == 1 ? part1 : part2) += 1;
   EXPECT_GT(part1, 0u);
@@ -150,22 +162,29 @@ TEST(DeckMesh, SphereComponentsSolidAndHollow) {
 }
 
 TEST(DeckMesh, CylinderComponent) {
-  const Model m = read("*TIME\n1\n*COMPONENT_CYLINDER\n1, 4, 3, 2\n0, 0, 0, 0, 0, 0.1, 0.02\n"
-                       "*MAT_RIGID\n1, 1000\n*PART\n4, 1\n").model;
+  const Model m = read(
+                      "*TIME\n1\n*COMPONENT_CYLINDER\n1, 4, 3, 2\n0, 0, 0, 0, 0, 0.1, 0.02\n"
+                      "*MAT_RIGID\n1, 1000\n*PART\n4, 1\n")
+                      .model;
   EXPECT_GT(m.mesh.hex_count(), 0u);
   for (const auto p : m.mesh.hex_part) EXPECT_EQ(p, 4);
-  EXPECT_EQ(error_of("*TIME\n1\n*COMPONENT_CYLINDER\n1, 4, 3, 2, 0, 3\n0, 0, 0, 0, 0, 0.1, 0.02\n").where().field,
+  EXPECT_EQ(error_of("*TIME\n1\n*COMPONENT_CYLINDER\n1, 4, 3, 2, 0, 3\n0, 0, 0, 0, 0, 0.1, 0.02\n")
+                .where()
+                .field,
             "symmetry");
-  EXPECT_THAT(error_of("*TIME\n1\n*COMPONENT_CYLINDER\n1, 4, 3, 2\n0, 0, 0, 0, 0, 0, 0.02\n").message(),
-              HasSubstr("differ from the first"));
+  EXPECT_THAT(
+      error_of("*TIME\n1\n*COMPONENT_CYLINDER\n1, 4, 3, 2\n0, 0, 0, 0, 0, 0, 0.02\n").message(),
+      HasSubstr("differ from the first"));
 }
 
 TEST(DeckMesh, OrderChangeAndSmoothingAreReportedAsNotes) {
   const DeckResult r = read(with_box("*CHANGE_P-ORDER\nP, 1, 2\n*SMOOTH_MESH\nP, 1, 45.0\n"));
   EXPECT_FALSE(r.notes.empty());
   EXPECT_EQ(error_of(with_box("*CHANGE_P-ORDER\nP, 1, 4\n")).where().field, "order");
-  EXPECT_THAT(error_of(with_box("*CHANGE_P-ORDER\nPS, 3, 2\n")).message(), HasSubstr("part set 3 does not exist"));
-  EXPECT_THAT(error_of(with_box("*CHANGE_P-ORDER\nP, 1, 2, 8\n")).message(), HasSubstr("geometry 8 does not exist"));
+  EXPECT_THAT(error_of(with_box("*CHANGE_P-ORDER\nPS, 3, 2\n")).message(),
+              HasSubstr("part set 3 does not exist"));
+  EXPECT_THAT(error_of(with_box("*CHANGE_P-ORDER\nP, 1, 2, 8\n")).message(),
+              HasSubstr("geometry 8 does not exist"));
   EXPECT_THAT(error_of(with_box("*SMOOTH_MESH\nP, 1, 200\n")).message(), HasSubstr("(0, 180]"));
   EXPECT_THAT(error_of(with_box("*SMOOTH_MESH\nP, 1, 30\n5\n")).message(), HasSubstr("csysid"));
   EXPECT_THAT(error_of(with_box("*SMOOTH_MESH\nNS, 1, 30\n")).message(),
@@ -183,7 +202,8 @@ TEST(DeckMaterials, ElasticMooneyRivlinRigid) {
 5.0, 10.0
 *MAT_RIGID
 3, 2700.0
-)").model;
+)")
+                      .model;
   ASSERT_EQ(m.materials.size(), 3u);
   const auto& e = std::get<ElasticParams>(m.find_material(1)->params);
   EXPECT_DOUBLE_EQ(e.young, 210.0e9);
@@ -201,13 +221,17 @@ TEST(DeckMaterials, RangesAndUnsupportedOptions) {
   EXPECT_STREQ(nu.what(), "t.k:4: *MAT_ELASTIC, field 'nu': poisson must be in [0, 0.5), got 0.5");
   EXPECT_EQ(error_of("*TIME\n1\n*MAT_ELASTIC\n1, 0, 210.0e9, 0.3\n").where().field, "rho");
   EXPECT_EQ(error_of("*TIME\n1\n*MAT_ELASTIC\n1, 7800, -1, 0.3\n").where().field, "E");
-  EXPECT_THAT(error_of("*TIME\n1\n*MAT_ELASTIC\n1, 7800, 1e9, 0.3, 4\n").message(), HasSubstr("damage property"));
+  EXPECT_THAT(error_of("*TIME\n1\n*MAT_ELASTIC\n1, 7800, 1e9, 0.3, 4\n").message(),
+              HasSubstr("damage property"));
   EXPECT_THAT(error_of("*TIME\n1\n*MAT_ELASTIC\n1, 7800, 1e9, 0.3\n0, 0, 0.05\n").message(),
               HasSubstr("material damping (c) is not supported yet"));
   EXPECT_EQ(error_of("*TIME\n1\n*MAT_MOONEY_RIVLIN\n1, 1500, 0\n1e6\n").where().field, "K");
-  EXPECT_THAT(error_of("*TIME\n1\n*MAT_MOONEY_RIVLIN\n1, 1500, 3e9\n0, 0\n").message(), HasSubstr("C1 + C2 > 0"));
-  EXPECT_EQ(error_of("*TIME\n1\n*MAT_MOONEY_RIVLIN\n1, 1500, 3e9\n1e6, 0, -1\n").where().field, "alpha1");
-  EXPECT_THAT(error_of("*TIME\n1\n*MAT_MOONEY_RIVLIN\n1, 1500, 3e9\n").message(), HasSubstr("missing data line"));
+  EXPECT_THAT(error_of("*TIME\n1\n*MAT_MOONEY_RIVLIN\n1, 1500, 3e9\n0, 0\n").message(),
+              HasSubstr("C1 + C2 > 0"));
+  EXPECT_EQ(error_of("*TIME\n1\n*MAT_MOONEY_RIVLIN\n1, 1500, 3e9\n1e6, 0, -1\n").where().field,
+            "alpha1");
+  EXPECT_THAT(error_of("*TIME\n1\n*MAT_MOONEY_RIVLIN\n1, 1500, 3e9\n").message(),
+              HasSubstr("missing data line"));
 }
 
 TEST(DeckParts, TitlesSmoothingAngleAndReferences) {
@@ -237,11 +261,15 @@ TEST(DeckParts, TitlesSmoothingAngleAndReferences) {
   const InputError no_material = error_of("*TIME\n1\n*MAT_RIGID\n1, 1000\n*PART\n1, 2\n");
   EXPECT_EQ(no_material.where().field, "mid");
   EXPECT_EQ(no_material.message(), "material 2 does not exist (defined materials: 1)");
-  const InputError no_part = error_of("*TIME\n1\n*MAT_RIGID\n1, 1000\n*PART\n1, 1\n2, 1\n*COMPONENT_BOX\n1, 7, 1, 1, 1\n0, 0, 0, 1, 1, 1\n");
+  const InputError no_part = error_of(
+      "*TIME\n1\n*MAT_RIGID\n1, 1000\n*PART\n1, 1\n2, 1\n*COMPONENT_BOX\n1, 7, 1, 1, 1\n0, 0, 0, "
+      "1, 1, 1\n");
   EXPECT_EQ(no_part.where().keyword, "*COMPONENT_BOX");
   EXPECT_EQ(no_part.message(), "part 7 does not exist (defined parts: 1, 2)");
-  EXPECT_THAT(error_of("*TIME\n1\n*PART\n\"lonely title\"\n").message(), HasSubstr("must be followed by its pid, mid line"));
-  EXPECT_THAT(error_of(with_box("*PART\n2, 1, , , , 1e-9\n")).message(), HasSubstr("element erosion"));
+  EXPECT_THAT(error_of("*TIME\n1\n*PART\n\"lonely title\"\n").message(),
+              HasSubstr("must be followed by its pid, mid line"));
+  EXPECT_THAT(error_of(with_box("*PART\n2, 1, , , , 1e-9\n")).message(),
+              HasSubstr("element erosion"));
 }
 
 TEST(DeckSets, NodeAndPartSets) {
@@ -261,12 +289,14 @@ TEST(DeckSets, NodeAndPartSets) {
   EXPECT_EQ(m.parts_of({EntityType::PartSet, 2, {}}), (std::vector<std::int64_t>{1}));
   EXPECT_EQ(m.nodes_of({EntityType::PartSet, 2, {}}).size(), 18u);
   EXPECT_EQ(error_of(with_box("*SET_NODE\n4\n1, 99\n")).message(), "node 99 does not exist");
-  EXPECT_EQ(error_of(with_box("*SET_PART\n4\n1, 5\n")).message(), "part 5 does not exist (defined parts: 1)");
+  EXPECT_EQ(error_of(with_box("*SET_PART\n4\n1, 5\n")).message(),
+            "part 5 does not exist (defined parts: 1)");
   EXPECT_THAT(error_of(with_box("*SET_PART\n4\n")).message(), HasSubstr("member ids"));
 }
 
 TEST(DeckInitialVelocity, TranslationPlusRotationAboutACentre) {
-  const Model m = model_of(with_box("*INITIAL_VELOCITY\nP, 1, 1.0, 2.0, 3.0, 0.0, 0.0, 10.0\n1.0, 1.0, 0.0\n"));
+  const Model m =
+      model_of(with_box("*INITIAL_VELOCITY\nP, 1, 1.0, 2.0, 3.0, 0.0, 0.0, 10.0\n1.0, 1.0, 0.0\n"));
   ASSERT_EQ(m.vx0.size(), m.mesh.nodes.size());
   for (std::size_t i = 0; i < m.mesh.nodes.size(); ++i) {
     // v = v0 + omega x (p - p0) with omega = (0, 0, 10), p0 = (1, 1, 0).
@@ -300,15 +330,19 @@ N, 2, fcn(9), 0, -5
   EXPECT_EQ(top, 9u);
   EXPECT_DOUBLE_EQ(m.vx0[0], 4.0);  // node 1
   EXPECT_DOUBLE_EQ(m.vx0[1], 2.5);  // node 2: fcn(9) = 2.5
-  EXPECT_THAT(error_of(with_box("*INITIAL_VELOCITY\nP, 2, 0, 0, 1\n")).message(), HasSubstr("part 2 does not exist"));
+  EXPECT_THAT(error_of(with_box("*INITIAL_VELOCITY\nP, 2, 0, 0, 1\n")).message(),
+              HasSubstr("part 2 does not exist"));
   EXPECT_THAT(error_of(with_box("*INITIAL_VELOCITY\nP, 1, fcn(4)\n")).message(), HasSubstr("4"));
-  EXPECT_THAT(error_of(with_box("*INITIAL_VELOCITY\nP, 1, 0, 0, 1\n0, 0, 0, 1.0\n")).message(), HasSubstr("velocity gradient"));
-  EXPECT_THAT(error_of(with_box("*INITIAL_VELOCITY\nSPH, 1, 0, 0, 1\n")).message(), HasSubstr("not supported yet"));
+  EXPECT_THAT(error_of(with_box("*INITIAL_VELOCITY\nP, 1, 0, 0, 1\n0, 0, 0, 1.0\n")).message(),
+              HasSubstr("velocity gradient"));
+  EXPECT_THAT(error_of(with_box("*INITIAL_VELOCITY\nSPH, 1, 0, 0, 1\n")).message(),
+              HasSubstr("not supported yet"));
 }
 
 // Needs the real FunctionTable (variables in expressions); enable after the merge.
 TEST(DeckInitialVelocity, DISABLED_FunctionOfTheNodeCoordinates) {
-  const Model m = model_of(with_box("*FUNCTION\n1\n3.0 * X + Z\n*INITIAL_VELOCITY\nP, 1, fcn(1)\n"));
+  const Model m =
+      model_of(with_box("*FUNCTION\n1\n3.0 * X + Z\n*INITIAL_VELOCITY\nP, 1, fcn(1)\n"));
   for (std::size_t i = 0; i < m.mesh.nodes.size(); ++i) {
     EXPECT_DOUBLE_EQ(m.vx0[i], 3.0 * m.mesh.nodes.x[i] + m.mesh.nodes.z[i]);
   }
@@ -358,35 +392,48 @@ D, X, 4
 }
 
 TEST(DeckBoundaryMotion, Errors) {
-  EXPECT_THAT(error_of(with_box("*BC_MOTION\nP, 1, X\nV, X, 1\n")).message(), HasSubstr("already constrained"));
-  EXPECT_THAT(error_of(with_box("*BC_MOTION\nP, 1, 0\n")).message(), HasSubstr("neither constrains"));
-  EXPECT_THAT(error_of(with_box("*BC_MOTION\nP, 1, X, XYZ\n")).message(), HasSubstr("part 1 is not rigid"));
-  EXPECT_THAT(error_of(with_box("*BC_MOTION\nN, 1, , , , , 1.0, 0.5\n")).message(), HasSubstr("t_end > t_beg"));
+  EXPECT_THAT(error_of(with_box("*BC_MOTION\nP, 1, X\nV, X, 1\n")).message(),
+              HasSubstr("already constrained"));
+  EXPECT_THAT(error_of(with_box("*BC_MOTION\nP, 1, 0\n")).message(),
+              HasSubstr("neither constrains"));
+  EXPECT_THAT(error_of(with_box("*BC_MOTION\nP, 1, X, XYZ\n")).message(),
+              HasSubstr("part 1 is not rigid"));
+  EXPECT_THAT(error_of(with_box("*BC_MOTION\nN, 1, , , , , 1.0, 0.5\n")).message(),
+              HasSubstr("t_end > t_beg"));
   EXPECT_THAT(error_of(with_box("*BC_MOTION\nP, 1\nV, X, 77\n")).message(), HasSubstr("77"));
-  EXPECT_THAT(error_of(with_box("*BC_MOTION\nV, X, 1\n")).message(), HasSubstr("must follow an entype"));
-  EXPECT_THAT(error_of(with_box("*BC_MOTION\nN, 99, X\n")).message(), HasSubstr("node 99 does not exist"));
-  EXPECT_THAT(error_of(with_box("*BC_MOTION\nGS, 1, X\n")).message(), HasSubstr("not supported yet"));
+  EXPECT_THAT(error_of(with_box("*BC_MOTION\nV, X, 1\n")).message(),
+              HasSubstr("must follow an entype"));
+  EXPECT_THAT(error_of(with_box("*BC_MOTION\nN, 99, X\n")).message(),
+              HasSubstr("node 99 does not exist"));
+  EXPECT_THAT(error_of(with_box("*BC_MOTION\nGS, 1, X\n")).message(),
+              HasSubstr("not supported yet"));
   EXPECT_EQ(error_of(with_box("*BC_MOTION\nP, 1, W\n")).where().field, "bc_tr");
 }
 
 TEST(DeckBoundaryMotion, RotationsOfRigidParts) {
-  const Model m = read("*TIME\n1\n*COMPONENT_BOX\n1, 1, 1, 1, 1\n0, 0, 0, 1, 1, 1\n*MAT_RIGID\n1, 7800\n"
-                       "*PART\n1, 1\n*CURVE\n1\n0, 1\n*BC_MOTION\nP, 1, XY, XY\nV, RZ, 1\n").model;
+  const Model m =
+      read(
+          "*TIME\n1\n*COMPONENT_BOX\n1, 1, 1, 1, 1\n0, 0, 0, 1, 1, 1\n*MAT_RIGID\n1, 7800\n"
+          "*PART\n1, 1\n*CURVE\n1\n0, 1\n*BC_MOTION\nP, 1, XY, XY\nV, RZ, 1\n")
+          .model;
   EXPECT_EQ(m.motions[0].fixed_rotation, kFixX | kFixY);
   EXPECT_EQ(m.motions[0].motions[0].direction, 5);
 }
 
 TEST(DeckCurvesAndFunctions, Errors) {
   EXPECT_EQ(error_of("*TIME\n1\n*CURVE\n1\n0, 0\n1, 1\n0.5, 2\n").where().line, 7u);
-  EXPECT_THAT(error_of("*TIME\n1\n*CURVE\n1, 1, 1, furlongs\n0, 0\n").message(), HasSubstr("expected time, length"));
+  EXPECT_THAT(error_of("*TIME\n1\n*CURVE\n1, 1, 1, furlongs\n0, 0\n").message(),
+              HasSubstr("expected time, length"));
   EXPECT_THAT(error_of("*TIME\n1\n*FUNCTION\n1, 1\nt\n").message(),
               HasSubstr("derivative > 0) are not supported yet"));
   EXPECT_THAT(error_of("*TIME\n1\n*FUNCTION\n1\n").message(), HasSubstr("expression"));
-  EXPECT_THAT(error_of("*TIME\n1\n*CURVE\n1\n0, 0\n*FUNCTION\n1\n2\n").message(), HasSubstr("already defined"));
+  EXPECT_THAT(error_of("*TIME\n1\n*CURVE\n1\n0, 0\n*FUNCTION\n1\n2\n").message(),
+              HasSubstr("id 1 is already used"));
 }
 
 TEST(DeckLoads, Gravity) {
-  const Model m = model_of(with_box("*CURVE\n1\n0.0, -9.81\n1.0, -9.81\n*LOAD_GRAVITY\nZ, 1, , , 2.0\n"));
+  const Model m =
+      model_of(with_box("*CURVE\n1\n0.0, -9.81\n1.0, -9.81\n*LOAD_GRAVITY\nZ, 1, , , 2.0\n"));
   ASSERT_EQ(m.gravity.size(), 1u);
   EXPECT_EQ(m.gravity[0].direction, 2);
   EXPECT_DOUBLE_EQ(m.gravity[0].scale, 2.0);
@@ -427,11 +474,16 @@ TEST(DeckGeometry, AllFiveKinds) {
   EXPECT_DOUBLE_EQ(pipe.sector_angle, 90.0);
   EXPECT_DOUBLE_EQ(std::get<GeometryEllipsoid>(m.find_geometry(4)->geometry).semi_axes.z, 3.0);
   EXPECT_EQ(std::get<GeometryPart>(m.find_geometry(5)->geometry).part_id, 1);
-  EXPECT_THAT(error_of(with_box("*GEOMETRY_PART\n5\n2\n")).message(), HasSubstr("part 2 does not exist"));
-  EXPECT_THAT(error_of(with_box("*GEOMETRY_SPHERE\n2\n0, 0, 0, 1, 0.5\n")).message(), HasSubstr("outer radius > R1"));
-  EXPECT_THAT(error_of(with_box("*GEOMETRY_BOX\n1, 3\n0, 0, 0, 1, 1, 1\n")).message(), HasSubstr("csysid"));
-  EXPECT_THAT(error_of(with_box("*GEOMETRY_BOX\n1\n0, 0, 0, 1, 1, 1\n*GEOMETRY_SPHERE\n1\n0, 0, 0, 1\n")).message(),
-              HasSubstr("geometry 1 is already defined"));
+  EXPECT_THAT(error_of(with_box("*GEOMETRY_PART\n5\n2\n")).message(),
+              HasSubstr("part 2 does not exist"));
+  EXPECT_THAT(error_of(with_box("*GEOMETRY_SPHERE\n2\n0, 0, 0, 1, 0.5\n")).message(),
+              HasSubstr("outer radius > R1"));
+  EXPECT_THAT(error_of(with_box("*GEOMETRY_BOX\n1, 3\n0, 0, 0, 1, 1, 1\n")).message(),
+              HasSubstr("csysid"));
+  EXPECT_THAT(
+      error_of(with_box("*GEOMETRY_BOX\n1\n0, 0, 0, 1, 1, 1\n*GEOMETRY_SPHERE\n1\n0, 0, 0, 1\n"))
+          .message(),
+      HasSubstr("geometry 1 is already defined"));
 }
 
 TEST(DeckContact, AllFourLines) {
@@ -500,11 +552,15 @@ TEST(DeckContact, DefaultsAndErrors) {
   EXPECT_DOUBLE_EQ(c.damping, 0.1);
   EXPECT_FALSE(c.initial_max.has_value());
   EXPECT_DOUBLE_EQ(c.edge_angle, 20.0);
-  EXPECT_THAT(error_of(with_box("*CONTACT\n1\nP, 1, P, 9\n")).message(), HasSubstr("part 9 does not exist"));
-  EXPECT_THAT(error_of(with_box("*CONTACT\n1\nP, 1, N, 9\n")).message(), HasSubstr("not supported yet"));
+  EXPECT_THAT(error_of(with_box("*CONTACT\n1\nP, 1, P, 9\n")).message(),
+              HasSubstr("part 9 does not exist"));
+  EXPECT_THAT(error_of(with_box("*CONTACT\n1\nP, 1, N, 9\n")).message(),
+              HasSubstr("not supported yet"));
   EXPECT_EQ(error_of(with_box("*CONTACT\n1\nP, 1, P, 1, -0.1\n")).where().field, "mu");
-  EXPECT_THAT(error_of(with_box("*CONTACT\n1\nP, 1, P, 1\n0, 0.1, 3\n")).message(), HasSubstr("geometry 3 does not exist"));
-  EXPECT_THAT(error_of(with_box("*CONTACT\n1\nP, 1, P, 1\n0\n0, 0, 7\n")).message(), HasSubstr("fid_thermal"));
+  EXPECT_THAT(error_of(with_box("*CONTACT\n1\nP, 1, P, 1\n0, 0.1, 3\n")).message(),
+              HasSubstr("geometry 3 does not exist"));
+  EXPECT_THAT(error_of(with_box("*CONTACT\n1\nP, 1, P, 1\n0\n0, 0, 7\n")).message(),
+              HasSubstr("fid_thermal"));
   EXPECT_THAT(error_of(with_box("*CONTACT\n1\nP, 1, P, 1\n0\n0, 0, 0, 20, 0, 0, , 1\n")).message(),
               HasSubstr("friction work to heat"));
   EXPECT_THAT(error_of(with_box("*CONTACT\n1\nP, 1, P, 1, fcn(6)\n")).message(), HasSubstr("6"));

@@ -6,9 +6,9 @@
 namespace abut {
 namespace {
 
-using ::testing::HasSubstr;
 using testing::deck_path;
 using testing::error_of;
+using ::testing::HasSubstr;
 using testing::kBoxModel;
 using testing::read;
 
@@ -29,7 +29,8 @@ $ another comment
 *END
 everything after *END is ignored, even *NOT_A_KEYWORD
 *NOT_A_KEYWORD
-)").model;
+)")
+                      .model;
   EXPECT_DOUBLE_EQ(m.time.end_time, 1.0e-3);
   EXPECT_EQ(m.mesh.nodes.size(), 18u);  // 3 x 3 x 2 nodes of a 2 x 2 x 1 box
   EXPECT_EQ(m.mesh.hex_count(), 4u);
@@ -44,11 +45,13 @@ TEST(DeckSyntax, UnknownKeywordNamesFileLineAndSuggestsTheClosest) {
 }
 
 TEST(DeckSyntax, UnknownKeywordFarFromAnyGetsNoSuggestion) {
-  EXPECT_EQ(error_of("*TIME\n1\n*FROBNICATE_EVERYTHING\n").message(), "unknown keyword *FROBNICATE_EVERYTHING");
+  EXPECT_EQ(error_of("*TIME\n1\n*FROBNICATE_EVERYTHING\n").message(),
+            "unknown keyword *FROBNICATE_EVERYTHING");
 }
 
 TEST(DeckSyntax, KnownImpetusKeywordIsNotSupportedYet) {
-  for (const char* kw : {"*MAT_METAL", "*ELEMENT_SHELL", "*BC_SYMMETRY", "*OUTPUT_NODE", "*CONTACT_ACCURACY"}) {
+  for (const char* kw :
+       {"*MAT_METAL", "*ELEMENT_SHELL", "*BC_SYMMETRY", "*OUTPUT_NODE", "*CONTACT_ACCURACY"}) {
     const InputError e = error_of(std::string(kBoxModel) + kw + "\n1\n");
     EXPECT_EQ(e.message(), std::string(kw) + " is not supported yet by abut");
     EXPECT_EQ(e.where().line, 13u);
@@ -85,7 +88,8 @@ TEST(DeckSyntax, TooManyFieldsIsAnError) {
 }
 
 TEST(DeckSyntax, MissingDataLineIsAnError) {
-  EXPECT_THAT(error_of("*TIME\n1\n*COMPONENT_BOX\n1, 1, 2, 2, 1\n").message(), HasSubstr("missing data line"));
+  EXPECT_THAT(error_of("*TIME\n1\n*COMPONENT_BOX\n1, 1, 2, 2, 1\n").message(),
+              HasSubstr("missing data line"));
 }
 
 TEST(DeckSyntax, ExtraDataLineIsAnError) {
@@ -97,7 +101,8 @@ TEST(DeckSyntax, DeckWithoutTimeIsAnError) {
 }
 
 TEST(DeckSyntax, IntegerFieldAcceptsIntegralRealsOnly) {
-  EXPECT_EQ(read("*TIME\n1\n*COMPONENT_BOX\n1, 1, 2.0, 2, 1\n0, 0, 0, 1, 1, 1\n*MAT_RIGID\n1, 7800\n*PART\n1, 1\n")
+  EXPECT_EQ(read("*TIME\n1\n*COMPONENT_BOX\n1, 1, 2.0, 2, 1\n0, 0, 0, 1, 1, 1\n*MAT_RIGID\n1, "
+                 "7800\n*PART\n1, 1\n")
                 .model.mesh.hex_count(),
             4u);
   EXPECT_EQ(error_of("*TIME\n1\n*COMPONENT_BOX\n1, 1, 2.5, 2, 1\n0, 0, 0, 1, 1, 1\n").message(),
@@ -107,9 +112,12 @@ TEST(DeckSyntax, IntegerFieldAcceptsIntegralRealsOnly) {
 TEST(DeckSyntax, DuplicateIdsAreErrors) {
   EXPECT_THAT(error_of(std::string(kBoxModel) + "*MAT_RIGID\n1, 7800\n").message(),
               HasSubstr("material 1 is already defined at t.k:9"));
-  EXPECT_THAT(error_of(std::string(kBoxModel) + "*PART\n1, 1\n").message(), HasSubstr("part 1 is already defined"));
-  EXPECT_THAT(error_of("*TIME\n1\n*NODE\n1, 0, 0, 0\n1, 1, 0, 0\n").message(), HasSubstr("node 1 is already defined"));
-  EXPECT_THAT(error_of(std::string(kBoxModel) + "*COMPONENT_BOX\n1, 1, 1, 1, 1\n0, 0, 5, 1, 1, 6\n").message(),
+  EXPECT_THAT(error_of(std::string(kBoxModel) + "*PART\n1, 1\n").message(),
+              HasSubstr("part 1 is already defined"));
+  EXPECT_THAT(error_of("*TIME\n1\n*NODE\n1, 0, 0, 0\n1, 1, 0, 0\n").message(),
+              HasSubstr("node 1 is already defined"));
+  EXPECT_THAT(error_of(std::string(kBoxModel) + "*COMPONENT_BOX\n1, 1, 1, 1, 1\n0, 0, 5, 1, 1, 6\n")
+                  .message(),
               HasSubstr("component 1 is already defined"));
 }
 
@@ -129,7 +137,8 @@ TEST(DeckParameters, BareParameterAndBracketedValueAreSubstituted) {
 1, 7800.0, 210.0e9, 0.3
 *PART
 1, 1
-)").model;
+)")
+                      .model;
   EXPECT_DOUBLE_EQ(m.time.end_time, 1.0e-3);
   EXPECT_EQ(m.mesh.hex_count(), 4u);  // %n = 2 (the default 7 does not override it)
   double x_max = 0.0, z_max = 0.0;
@@ -148,7 +157,8 @@ TEST(DeckParameters, UndefinedParameterIsAnError) {
 }
 
 TEST(DeckParameters, SecondDefinitionIsAnError) {
-  EXPECT_THAT(error_of("*PARAMETER\n%a = 1\n%A = 2\n").message(), HasSubstr("parameter %A is already defined at t.k:2"));
+  EXPECT_THAT(error_of("*PARAMETER\n%a = 1\n%A = 2\n").message(),
+              HasSubstr("parameter %A is already defined at t.k:2"));
 }
 
 TEST(DeckParameters, MalformedDefinitionIsAnError) {
@@ -211,6 +221,24 @@ TEST(DeckInclude, MirroredHexIsRenumberedToStayRightHanded) {
   EXPECT_GT(dot(cross(n.position(h[1]) - p0, n.position(h[3]) - p0), n.position(h[4]) - p0), 0.0);
 }
 
+TEST(DeckInclude, GidOffsetRenumbersCurvesFunctionsAndTheirReferences) {
+  const Model m = read_deck(deck_path("include_functions.k"));
+  EXPECT_TRUE(m.functions.contains(11));
+  EXPECT_TRUE(m.functions.contains(12));
+  EXPECT_FALSE(m.functions.contains(1));
+  ASSERT_EQ(m.gravity.size(), 1u);
+  EXPECT_EQ(m.gravity[0].curve.index, m.functions.find(12, {}).index);
+}
+
+// Needs the real FunctionTable (crv() in expressions); enable after the merge.
+TEST(DeckInclude, DISABLED_GidOffsetRewritesCrvInsideExpressions) {
+  const Model m = read_deck(deck_path("include_functions.k"));
+  Variables at_half;
+  at_half.t = 0.5;
+  // crv(11, 0.5) = -14.715 (halfway between -9.81 and -19.62), times 2.
+  EXPECT_DOUBLE_EQ(m.functions.value(m.gravity[0].curve, at_half), -29.43);
+}
+
 TEST(DeckInclude, ErrorInIncludedFileNamesThatFileAndLine) {
   try {
     read_deck(deck_path("include_error.k"));
@@ -234,7 +262,8 @@ TEST(DeckInclude, CycleIsAnError) {
 }
 
 TEST(DeckInclude, MissingFileIsAnError) {
-  EXPECT_THAT(error_of("*TIME\n1\n*INCLUDE\nno_such_file.k\n").message(), HasSubstr("cannot open included file"));
+  EXPECT_THAT(error_of("*TIME\n1\n*INCLUDE\nno_such_file.k\n").message(),
+              HasSubstr("cannot open included file"));
 }
 
 TEST(DeckFiles, MissingDeckFileIsAnError) {
