@@ -21,13 +21,8 @@ void read_initial_velocity(DeckReader& d, Block& b) {
         b.row({"entype", "enid", "v_x0", "v_y0", "v_z0", "omega_x", "omega_y", "omega_z"});
     PendingVelocity v;
     v.entity = d.entity(r, 0, 1,
-<<<<<<< HEAD
-                        {EntityType::Node, EntityType::NodeSet, EntityType::Part, EntityType::PartSet,
-                         EntityType::All, EntityType::GeometryRegion});
-=======
                         {EntityType::Node, EntityType::NodeSet, EntityType::Part,
                          EntityType::PartSet, EntityType::All, EntityType::GeometryRegion});
->>>>>>> wt-deck
     bool directional = false;
     for (std::size_t k = 0; k < 3; ++k) {
       v.velocity[k] = r.number_or_function(2 + k, 0.0);
@@ -115,13 +110,8 @@ void read_bc_motion(DeckReader& d, Block& b) {
     m.id = next_id;
     next_id = 0;
     m.entity = d.entity(r, 0, 1,
-<<<<<<< HEAD
-                        {EntityType::Node, EntityType::NodeSet, EntityType::Part, EntityType::PartSet,
-                         EntityType::All, EntityType::GeometryRegion});
-=======
                         {EntityType::Node, EntityType::NodeSet, EntityType::Part,
                          EntityType::PartSet, EntityType::All, EntityType::GeometryRegion});
->>>>>>> wt-deck
     m.fixed_translation = parse_dof_mask(r, 2);
     m.fixed_rotation = parse_dof_mask(r, 3);
     if (m.fixed_translation != 0) d.require_unrotated(r.where(2), "a constraint");

@@ -340,7 +340,7 @@ N, 2, fcn(9), 0, -5
 }
 
 // Needs the real FunctionTable (variables in expressions); enable after the merge.
-TEST(DeckInitialVelocity, DISABLED_FunctionOfTheNodeCoordinates) {
+TEST(DeckInitialVelocity, FunctionOfTheNodeCoordinates) {
   const Model m =
       model_of(with_box("*FUNCTION\n1\n3.0 * X + Z\n*INITIAL_VELOCITY\nP, 1, fcn(1)\n"));
   for (std::size_t i = 0; i < m.mesh.nodes.size(); ++i) {

@@ -167,7 +167,7 @@ TEST(DeckParameters, MalformedDefinitionIsAnError) {
 }
 
 // Needs the real expression engine (evaluate_constant_expression); enable after the merge.
-TEST(DeckParameters, DISABLED_ExpressionsInParametersAndBrackets) {
+TEST(DeckParameters, ExpressionsInParametersAndBrackets) {
   const Model m = read("*PARAMETER\n%a = 2\n%b = %a * 3\n*TIME\n[%b / 4 + sqrt(4)]\n").model;
   EXPECT_DOUBLE_EQ(m.time.end_time, 3.5);
 }
@@ -231,7 +231,7 @@ TEST(DeckInclude, GidOffsetRenumbersCurvesFunctionsAndTheirReferences) {
 }
 
 // Needs the real FunctionTable (crv() in expressions); enable after the merge.
-TEST(DeckInclude, DISABLED_GidOffsetRewritesCrvInsideExpressions) {
+TEST(DeckInclude, GidOffsetRewritesCrvInsideExpressions) {
   const Model m = read_deck(deck_path("include_functions.k"));
   Variables at_half;
   at_half.t = 0.5;
