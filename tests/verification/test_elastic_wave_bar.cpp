@@ -5,7 +5,9 @@
 // t = L/c, where the free end's velocity reverses.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 
 #include "run_to.hpp"
 
@@ -47,18 +49,26 @@ TEST(ElasticWaveBar, StressBehindTheFrontIsRhoCV) {
   sim.von_mises_stress(mises);
   const double expected = kRho * c * kV;
   const Nodes& nodes = model.mesh.nodes;
+  // The discrete front is spread by the bulk viscosity and rings behind it (the dispersion of
+  // the lumped-mass chain); the plateau is checked from 15 elements behind the front on, and
+  // ahead of the front from 10 elements on.
   int behind = 0, ahead = 0;
+  double worst_behind = 0.0, worst_ahead = 0.0;
+  const double front = kL - c * sim.time();
   for (std::size_t e = 0; e < model.mesh.hex_count(); ++e) {
     const double xc = 0.5 * (nodes.x[model.mesh.hexes[e][0]] + nodes.x[model.mesh.hexes[e][6]]);
-    const double front = kL - c * sim.time();
-    if (xc > front + 0.1 && xc < 0.95) {  // behind the front, away from its dispersive tail
-      EXPECT_NEAR(mises[e], expected, 0.02 * expected) << "element at x = " << xc;
+    if (xc > front + 0.15 && xc < 0.95) {
+      worst_behind = std::max(worst_behind, std::abs(mises[e] - expected) / expected);
       ++behind;
-    } else if (xc < front - 0.1) {        // not reached yet
-      EXPECT_LT(mises[e], 0.02 * expected) << "element at x = " << xc;
+    } else if (xc < front - 0.1) {
+      worst_ahead = std::max(worst_ahead, mises[e] / expected);
       ++ahead;
     }
   }
+  std::cout << "plateau stress error " << 100.0 * worst_behind << "%, ahead of the front "
+            << 100.0 * worst_ahead << "% of rho c v\n";
+  EXPECT_LT(worst_behind, 0.02);
+  EXPECT_LT(worst_ahead, 0.02);
   EXPECT_GT(behind, 20);
   EXPECT_GT(ahead, 20);
 }
