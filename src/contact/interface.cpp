@@ -25,6 +25,12 @@ QuadCorners corners_of(const std::array<std::int32_t, 4>& nodes, const ContactIn
   return c;
 }
 
+double longest_edge(const QuadCorners& c) {
+  double longest = 0.0;
+  for (int a = 0; a < 4; ++a) longest = std::max(longest, norm(c[(a + 1) % 4] - c[a]));
+  return longest;
+}
+
 Vec3 velocity_at(const std::array<std::int32_t, 4>& nodes, const std::array<double, 4>& shape,
                  const ContactInput& in) {
   Vec3 v;
@@ -91,7 +97,17 @@ void ContactInterface::build_sides(const ContactInput& in) {
   const ContactSettings& s = settings_;
   margin_ = std::numeric_limits<double>::infinity();
   double omega2_max = 0.0;
-  for (Side& side : sides_) {
+  // Typical facet size of each side (median of the longest edges), for the subdivision below.
+  std::vector<double> typical_size;
+  for (const Side& side : sides_) {
+    std::vector<double> sizes;
+    for (const auto& facet : side.surface.facets) sizes.push_back(longest_edge(corners_of(facet, in)));
+    std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2), sizes.end());
+    typical_size.push_back(sizes[sizes.size() / 2]);
+  }
+  for (std::size_t side_index = 0; side_index < sides_.size(); ++side_index) {
+    Side& side = sides_[side_index];
+    const double other_size = typical_size[sides_.size() == 1 ? 0 : 1 - side_index];
     const ContactSurface& surface = side.surface;
     const std::size_t n = surface.size();
     side.sharp = sharp_edges(surface, in.x, in.y, in.z, s.edge_angle);
@@ -107,8 +123,29 @@ void ContactInterface::build_sides(const ContactInput& in) {
       }
       side.depth[f] = 0.5 * surface.thickness[f];
       margin_ = std::min(margin_, side.depth[f]);
-      std::vector<FacetPoint>& rule = rules[side.sharp[f]];
-      if (rule.empty()) rule = facet_rule(s.accuracy_level, s.accuracy_edge, side.sharp[f]);
+      // A facet two or more times larger than the facets it meets would press its few points into single
+      // small facets of the other side with the stiffness of its whole area. It is split into
+      // m x m cells about the size of the other side's facets, each integrated with the rule of
+      // the accuracy level, so both sides resolve the overlap alike.
+      const int cells = static_cast<int>(std::clamp(std::floor(longest_edge(c) / other_size), 1.0, 32.0));
+      std::vector<FacetPoint> rule;
+      for (int j = 0; j < cells; ++j) {
+        for (int i = 0; i < cells; ++i) {
+          // Sharp-edge strips only in cells on the facet's sharp edges (edge 0: eta = -1,
+          // 1: xi = +1, 2: eta = +1, 3: xi = -1).
+          std::uint8_t sharp = side.sharp[f];
+          if (j > 0) sharp &= ~1u;
+          if (i < cells - 1) sharp &= ~2u;
+          if (j < cells - 1) sharp &= ~4u;
+          if (i > 0) sharp &= ~8u;
+          std::vector<FacetPoint>& cell_rule = rules[sharp];
+          if (cell_rule.empty()) cell_rule = facet_rule(s.accuracy_level, s.accuracy_edge, sharp);
+          const double inv = 1.0 / cells;
+          for (const FacetPoint& q : cell_rule)
+            rule.push_back({-1.0 + (2.0 * i + 1.0 + q.xi) * inv, -1.0 + (2.0 * j + 1.0 + q.eta) * inv,
+                            q.weight * inv * inv});
+        }
+      }
       double facet_area = 0.0;
       for (const FacetPoint& q : rule) {
         side.point_facet.push_back(static_cast<std::int32_t>(f));
@@ -332,8 +369,10 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   auto mass_share = [&](const Side& side, const std::array<std::int32_t, 4>& nodes,
                         const std::array<double, 4>& n) {
     double m = 0.0;
+    // On the other side a point may cover more than a node's area: never more than the node.
     for (int a = 0; a < 4; ++a)
-      if (side.node_area[nodes[a]] > 0.0) m += mass_[nodes[a]] * n[a] * area / side.node_area[nodes[a]];
+      if (side.node_area[nodes[a]] > 0.0)
+        m += mass_[nodes[a]] * std::min(1.0, n[a] * area / side.node_area[nodes[a]]);
     return m;
   };
   const double m_own = mass_share(own, own_nodes, shape);

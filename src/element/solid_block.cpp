@@ -103,6 +103,7 @@ struct SolidBlock::Impl {
   double hourglass_coefficient = kDefaultHourglassCoefficient;
   double bulk_viscosity_quadratic = kDefaultBulkViscosityQuadratic;
   double bulk_viscosity_linear = kDefaultBulkViscosityLinear;
+  double newtonian_viscosity = 0.0;  // sum of alpha_k of the Mooney-Rivlin terms with beta_k = 0
   int viscous_terms = 0;
 
   std::vector<double> reference_volume;    // 1 per element
@@ -307,9 +308,11 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
 
   // 6. Stable step.
   // With bulk viscosity the step shrinks to l / (Q + sqrt(Q^2 + c^2)), Q = C1 c + C0 l |eps_v_dot|
-  // (same manual, "Time Step Control").
+  // (same manual, "Time Step Control"). A Newtonian viscosity eta adds its longitudinal part the
+  // same way: 4/3 eta eps_dot = rho l Q_eta eps_dot, Q_eta = 4 eta / (3 rho l).
   const double l_char = hex8_characteristic_length(cur, g.volume);
-  stable[e] = l_char / (q_speed + std::sqrt(q_speed * q_speed + wave_speed * wave_speed));
+  const double q_total = q_speed + 4.0 * newtonian_viscosity / (3.0 * density * l_char);
+  stable[e] = l_char / (q_total + std::sqrt(q_total * q_total + wave_speed * wave_speed));
   failure[e] = kOk;
 }
 
@@ -353,8 +356,18 @@ SolidBlock::SolidBlock(std::int64_t part_id, const MaterialParams& material,
   m.density = density_of(material);
   const ElasticModuli moduli = initial_moduli(material);
   m.shear_modulus = moduli.shear;
-  m.wave_speed = std::sqrt((moduli.bulk + 4.0 / 3.0 * moduli.shear) / m.density);
   const auto* rubber = std::get_if<MooneyRivlinParams>(&material);
+  // Viscous terms stiffen the element for stability: a term with relaxation time beta_k acts at
+  // most like an extra shear modulus alpha_k / beta_k (its instantaneous response), a Newtonian
+  // term (beta_k = 0) like a viscosity alpha_k, which enters the step as Q below.
+  double viscous_shear = 0.0;
+  if (rubber) {
+    for (int k = 0; k < 4; ++k) {
+      if (rubber->beta[k] > 0.0) viscous_shear += rubber->alpha[k] / rubber->beta[k];
+      else m.newtonian_viscosity += rubber->alpha[k];
+    }
+  }
+  m.wave_speed = std::sqrt((moduli.bulk + 4.0 / 3.0 * (moduli.shear + viscous_shear)) / m.density);
   m.viscous_terms = rubber ? viscous_term_count(*rubber) : 0;
 
   const std::size_t n = m.hexes.size();
@@ -428,7 +441,8 @@ double SolidBlock::initial_stable_step(const Nodes& reference) const {
       x.z[a] = reference.z[node];
     }
     const double length = hex8_characteristic_length(x, impl_->reference_volume[e]);
-    step = std::min(step, length / impl_->wave_speed);
+    const double q = 4.0 * impl_->newtonian_viscosity / (3.0 * impl_->density * length);
+    step = std::min(step, length / (q + std::sqrt(q * q + impl_->wave_speed * impl_->wave_speed)));
   }
   return step;
 }
