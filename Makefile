@@ -4,7 +4,7 @@ BUILD_DIR ?= build
 BUILD_TYPE ?= Release
 JOBS ?= $(shell nproc)
 PACKAGES := $(shell grep -v '^\s*\#' deps/debian-packages.txt)
-EXAMPLE ?= examples/bar_impact.k
+EXAMPLE ?= examples/rubber_sphere.k
 ABUT := $(BUILD_DIR)/apps/abut/abut
 
 .PHONY: all setup build run test bench clean sanitize

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <string>
 
 #include "abut/core/error.hpp"
@@ -28,12 +29,16 @@ double rigid_penalty(double max_initial_speed, UnitSystem units) {
 }
 
 double smallest_element_volume(const Mesh& mesh, std::int64_t part) {
-  double smallest = std::numeric_limits<double>::infinity();
+  // Per user element: the hexes *CHANGE_P-ORDER made of one order-p element count together, so
+  // L_min is the size of the element as defined (seed 000 computes it for its cubic elements).
+  std::map<std::int64_t, double> volume_of_element;
   for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
-    if (mesh.hex_part[h] == part) smallest = std::min(smallest, hex_volume(mesh.nodes, mesh.hexes[h]));
-  if (!(smallest < std::numeric_limits<double>::infinity()))
+    if (mesh.hex_part[h] == part) volume_of_element[mesh.element_of(h)] += hex_volume(mesh.nodes, mesh.hexes[h]);
+  if (volume_of_element.empty())
     throw InputError("part " + std::to_string(part) +
                      " has no solid elements, so its automatic contact penalty is undefined");
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const auto& [element, volume] : volume_of_element) smallest = std::min(smallest, volume);
   return smallest;
 }
 

@@ -13,10 +13,12 @@ std::int64_t Mesh::next_hex_id() const {
 }
 
 void Mesh::add_hex(std::int64_t id, std::int64_t part, const Hex8& nodes_of_hex, std::int32_t shape,
-                   const HexCell& cell) {
+                   const HexCell& cell, std::int64_t element) {
   // Hexes appended by code that does not know hex_shape/hex_cell leave them short: pad first.
   hex_shape.resize(hexes.size(), -1);
   hex_cell.resize(hexes.size());
+  for (std::size_t h = hex_element.size(); h < hexes.size(); ++h) hex_element.push_back(hex_id[h]);
+  hex_element.push_back(element != 0 ? element : id);
   hexes.push_back(nodes_of_hex);
   hex_id.push_back(id);
   hex_part.push_back(part);

@@ -199,7 +199,7 @@ void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
     const int p = order[h];
     if (p == 1) {
       out.add_hex(mesh.hex_id[h], mesh.hex_part[h], mesh.hexes[h], mesh.hex_shape[h],
-                  mesh.hex_cell[h]);
+                  mesh.hex_cell[h], mesh.element_of(h));
       continue;
     }
     const std::int32_t shape = mesh.hex_shape[h];
@@ -254,7 +254,7 @@ void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
               cell.lo + size * Vec3{static_cast<double>(i), static_cast<double>(j),
                                     static_cast<double>(k)},
               size};
-          out.add_hex(next_hex++, mesh.hex_part[h], child, shape, child_cell);
+          out.add_hex(next_hex++, mesh.hex_part[h], child, shape, child_cell, mesh.element_of(h));
         }
       }
     }
@@ -265,6 +265,7 @@ void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
   mesh.hex_part = std::move(out.hex_part);
   mesh.hex_shape = std::move(out.hex_shape);
   mesh.hex_cell = std::move(out.hex_cell);
+  mesh.hex_element = std::move(out.hex_element);
   if (new_nodes != expected_new_nodes) {
     throw InputError("*CHANGE_P-ORDER: refinement produced " + std::to_string(new_nodes) +
                      " new nodes where a conforming mesh has " +

@@ -88,11 +88,19 @@ struct Mesh {
   // grid cell each generated hex covers (unused where hex_shape is -1).
   std::vector<ComponentShape> shapes;
   std::vector<HexCell> hex_cell;
+  // The user's element each hex belongs to: its own id, or for the p x p x p hexes that
+  // *CHANGE_P-ORDER makes of one element, that element's id. May be shorter than `hexes`
+  // (hexes appended without it are their own elements): read it through element_of().
+  std::vector<std::int64_t> hex_element;
+  std::int64_t element_of(std::size_t h) const {
+    return h < hex_element.size() ? hex_element[h] : hex_id[h];
+  }
 
   std::size_t hex_count() const { return hexes.size(); }
   // Appends a hex and keeps all per-hex arrays parallel.
+  // `element`: the user element the hex belongs to (default: itself).
   void add_hex(std::int64_t id, std::int64_t part, const Hex8& nodes_of_hex,
-               std::int32_t shape = -1, const HexCell& cell = {});
+               std::int32_t shape = -1, const HexCell& cell = {}, std::int64_t element = 0);
   std::int64_t next_node_id() const;
   std::int64_t next_hex_id() const;
 };
