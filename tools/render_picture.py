@@ -1,0 +1,100 @@
+#!/usr/bin/python3
+"""Renders states of an abut ParaView series side by side into one PNG (the README picture).
+
+    xvfb-run -a /usr/bin/python3 tools/render_picture.py RESULTS.pvd OUT.png [TIME ...]
+
+Uses Debian's python3-vtk9; without a display run it under xvfb-run (package xvfb).
+Each panel shows the exterior of the model at the state nearest to the time asked for
+(default: the first and the last state), coloured by von Mises stress.
+"""
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import vtk
+
+
+def states(pvd):
+    root = ET.parse(pvd).getroot()
+    return [(float(d.get("timestep")), Path(pvd).parent / d.get("file")) for d in root.iter("DataSet")]
+
+
+def panel(vtu, time, viewport, window, stress_range):
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(str(vtu))
+    surface = vtk.vtkDataSetSurfaceFilter()
+    surface.SetInputConnection(reader.GetOutputPort())
+    mapper = vtk.vtkDataSetMapper()
+    mapper.SetInputConnection(surface.GetOutputPort())
+    mapper.SetScalarModeToUseCellFieldData()
+    mapper.SelectColorArray("von_mises_stress")
+    mapper.SetScalarRange(*stress_range)
+    lut = vtk.vtkLookupTable()
+    lut.SetHueRange(0.66, 0.0)
+    lut.Build()
+    mapper.SetLookupTable(lut)
+    actor = vtk.vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().EdgeVisibilityOn()
+    actor.GetProperty().SetEdgeColor(0.15, 0.15, 0.15)
+    actor.GetProperty().SetLineWidth(0.5)
+    renderer = vtk.vtkRenderer()
+    renderer.SetViewport(*viewport)
+    renderer.SetBackground(1.0, 1.0, 1.0)
+    renderer.AddActor(actor)
+    label = vtk.vtkTextActor()
+    label.SetInput(f"t = {time * 1e3:.2f} ms")
+    label.GetTextProperty().SetColor(0.0, 0.0, 0.0)
+    label.GetTextProperty().SetFontSize(22)
+    label.SetPosition(12, 12)
+    renderer.AddActor2D(label)
+    if viewport[0] == 0.0:
+        bar = vtk.vtkScalarBarActor()
+        bar.SetLookupTable(lut)
+        bar.SetTitle("von Mises [Pa]")
+        bar.SetNumberOfLabels(3)
+        bar.SetOrientationToHorizontal()
+        bar.SetPosition(0.05, 0.84)
+        bar.SetWidth(0.8)
+        bar.SetHeight(0.12)
+        for prop in (bar.GetTitleTextProperty(), bar.GetLabelTextProperty()):
+            prop.SetColor(0.0, 0.0, 0.0)
+            prop.SetFontSize(14)
+            prop.ItalicOff()
+            prop.ShadowOff()
+        renderer.AddActor2D(bar)
+    camera = renderer.GetActiveCamera()
+    camera.SetFocalPoint(0.0, 0.0, 0.016)
+    camera.SetPosition(0.075, -0.11, 0.06)
+    camera.SetViewUp(0.0, 0.0, 1.0)
+    camera.SetViewAngle(30.0)
+    window.AddRenderer(renderer)
+    return renderer
+
+
+def main():
+    if len(sys.argv) < 3:
+        sys.exit(__doc__)
+    pvd, out = sys.argv[1], sys.argv[2]
+    series = states(pvd)
+    wanted = [float(t) for t in sys.argv[3:]] or [series[0][0], series[-1][0]]
+    chosen = [min(series, key=lambda s: abs(s[0] - t)) for t in wanted]
+    window = vtk.vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    width = 520
+    window.SetSize(width * len(chosen), 520)
+    for i, (time, vtu) in enumerate(chosen):
+        panel(vtu, time, (i / len(chosen), 0.0, (i + 1) / len(chosen), 1.0), window, (0.0, 2.0e7))
+    window.Render()
+    image = vtk.vtkWindowToImageFilter()
+    image.SetInput(window)
+    image.Update()
+    writer = vtk.vtkPNGWriter()
+    writer.SetFileName(out)
+    writer.SetInputConnection(image.GetOutputPort())
+    writer.Write()
+    print(f"wrote {out}: states at " + ", ".join(f"{t:.3g}" for t, _ in chosen))
+
+
+if __name__ == "__main__":
+    main()
