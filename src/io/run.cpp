@@ -154,6 +154,7 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
   json.member("nodes", static_cast<std::int64_t>(model.mesh.nodes.size()));
   json.member("elements", static_cast<std::int64_t>(model.mesh.hex_count()));
   json.member("ns_per_element_cycle", report.ns_per_element_cycle);
+  json.member("contact_share_of_wall_time", report.wall_seconds > 0 ? sim.contact_seconds() / report.wall_seconds : 0.0);
   json.member("initial_time_step", sim.initial_time_step());
   json.member("initial_time_step_limited_by", initial_limit);
   json.member("final_time_step_limited_by", sim.time_step_limit());
@@ -259,6 +260,8 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
     log << fmt::format("abut: completed {} cycles to t = {:.6g} in {:.2f} s ({:.1f} ns per element-cycle, {} threads)\n",
                        report.cycles, report.end_time, report.wall_seconds, report.ns_per_element_cycle, threads);
     log << fmt::format("abut: energy balance error {:.3f}%\n", 100.0 * report.energy_balance_error);
+    if (sim.has_contact())
+      log << fmt::format("abut: contact took {:.0f}% of the wall time\n", 100.0 * sim.contact_seconds() / report.wall_seconds);
   } else {
     log << "abut: the run went UNSTABLE and stopped: " << report.message << "\n"
         << fmt::format("abut: the last good state (t = {:.6g}) is in the ParaView series\n", sim.last_good_time());

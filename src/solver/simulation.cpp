@@ -1,6 +1,7 @@
 #include "abut/solver/simulation.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -55,6 +56,7 @@ struct Simulation::Impl {
 
   std::unique_ptr<ContactSet> contacts;
   std::int64_t limiting_contact = -1;
+  double contact_seconds = 0.0;  // wall time spent in contact (for the summary)
 
   std::vector<RigidBody> bodies;
   std::vector<PartInfo> parts;
@@ -265,7 +267,9 @@ void Simulation::Impl::compute_forces(double dt) {
     fz[i] = sz;
   }
   // Contact forces act at x^{n} with the latest velocities v^{n-1/2} (damping, friction).
+  const auto contact_start = std::chrono::steady_clock::now();
   contacts->apply({x, y, z, vhx, vhy, vhz, t, dt}, fx, fy, fz);
+  contact_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_start).count();
   std::int64_t contact_id = -1;
   const double contact_step = contacts->stable_step(&contact_id);
   limiting_contact = -1;
@@ -551,6 +555,7 @@ void Simulation::contact_fields(std::vector<double>& force, std::vector<double>&
 }
 
 bool Simulation::has_contact() const { return !impl_->contacts->empty(); }
+double Simulation::contact_seconds() const { return impl_->contact_seconds; }
 
 double Simulation::energy_balance_error() const {
   const Energies& e = impl_->energy;

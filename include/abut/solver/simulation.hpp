@@ -83,6 +83,7 @@ class Simulation {
   // Contact: per interface penalties and statistics; nodal fields summed over interfaces
   // (force interleaved x, y, z; pressure; accumulated wear).
   bool has_contact() const;
+  double contact_seconds() const;  // wall time spent in contact so far
   std::vector<ContactReport> contact_reports() const;
   void contact_fields(std::vector<double>& force, std::vector<double>& pressure, std::vector<double>& wear) const;
 
