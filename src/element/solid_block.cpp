@@ -34,6 +34,7 @@
 
 #include "abut/core/error.hpp"
 #include "abut/element/hex8.hpp"
+#include "abut/element/stable_step.hpp"
 #include "abut/material/elastic.hpp"
 #include "abut/material/mooney_rivlin.hpp"
 #include "abut/material/sym_tensor.hpp"
@@ -104,6 +105,7 @@ struct SolidBlock::Impl {
   double bulk_viscosity_quadratic = kDefaultBulkViscosityQuadratic;
   double bulk_viscosity_linear = kDefaultBulkViscosityLinear;
   double newtonian_viscosity = 0.0;  // sum of alpha_k of the Mooney-Rivlin terms with beta_k = 0
+  double lame_lambda = 0.0, lame_mu = 0.0;  // initial moduli for the stable step (mu with viscous terms)
   int viscous_terms = 0;
 
   std::vector<double> reference_volume;    // 1 per element
@@ -310,7 +312,7 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
   // With bulk viscosity the step shrinks to l / (Q + sqrt(Q^2 + c^2)), Q = C1 c + C0 l |eps_v_dot|
   // (same manual, "Time Step Control"). A Newtonian viscosity eta adds its longitudinal part the
   // same way: 4/3 eta eps_dot = rho l Q_eta eps_dot, Q_eta = 4 eta / (3 rho l).
-  const double l_char = hex8_characteristic_length(cur, g.volume);
+  const double l_char = hex8_critical_length(g, lame_lambda, lame_mu);
   const double q_total = q_speed + 4.0 * newtonian_viscosity / (3.0 * density * l_char);
   stable[e] = l_char / (q_total + std::sqrt(q_total * q_total + wave_speed * wave_speed));
   failure[e] = kOk;
@@ -367,7 +369,9 @@ SolidBlock::SolidBlock(std::int64_t part_id, const MaterialParams& material,
       else m.newtonian_viscosity += rubber->alpha[k];
     }
   }
-  m.wave_speed = std::sqrt((moduli.bulk + 4.0 / 3.0 * (moduli.shear + viscous_shear)) / m.density);
+  m.lame_mu = moduli.shear + viscous_shear;
+  m.lame_lambda = moduli.bulk - 2.0 / 3.0 * m.lame_mu;
+  m.wave_speed = std::sqrt((m.lame_lambda + 2.0 * m.lame_mu) / m.density);
   m.viscous_terms = rubber ? viscous_term_count(*rubber) : 0;
 
   const std::size_t n = m.hexes.size();
@@ -440,7 +444,9 @@ double SolidBlock::initial_stable_step(const Nodes& reference) const {
       x.y[a] = reference.y[node];
       x.z[a] = reference.z[node];
     }
-    const double length = hex8_characteristic_length(x, impl_->reference_volume[e]);
+    Hex8Gradient g;
+    hex8_gradient(x, g);
+    const double length = hex8_critical_length(g, impl_->lame_lambda, impl_->lame_mu);
     const double q = 4.0 * impl_->newtonian_viscosity / (3.0 * impl_->density * length);
     step = std::min(step, length / (q + std::sqrt(q * q + impl_->wave_speed * impl_->wave_speed)));
   }

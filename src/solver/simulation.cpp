@@ -154,6 +154,10 @@ void Simulation::Impl::setup() {
           throw InputError(part.where, "rigid parts " + std::to_string(bodies[rigid_body_of_node[node]].part_id) +
                                            " and " + std::to_string(part.id) +
                                            " share nodes; give each rigid part its own nodes");
+        if (node_fixed[node] != 0)
+          throw InputError(part.where, "node " + std::to_string(mesh.nodes.id[node]) + " of rigid part " +
+                                           std::to_string(part.id) + " has a *NODE bc; constrain a rigid "
+                                           "part as a whole with *BC_MOTION (entype P)");
         rigid_body_of_node[node] = static_cast<std::int32_t>(bodies.size());
       }
       bodies.push_back(std::move(body));
@@ -199,7 +203,6 @@ void Simulation::Impl::setup() {
       angular_momentum += cross(body.arm0[k], p);
     }
     body.velocity = momentum / body.mass;
-    angular_momentum -= cross(Vec3{}, momentum);  // about the centre of mass (arms are relative)
     body.angular_velocity = inverse(body.inertia0) * angular_momentum;
     for (std::size_t k = 0; k < body.nodes.size(); ++k) {
       const std::int32_t node = body.nodes[k];

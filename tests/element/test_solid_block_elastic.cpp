@@ -266,18 +266,35 @@ TEST(SolidBlockElastic, HourglassModeIsResistedWithTheDocumentedStiffness) {
 // Stable step of a brick 0.5 x 2 x 3: L = V / A_max = 0.5 (LS-DYNA convention) and the
 // dilatational wave speed c = sqrt(E (1 - nu) / ((1 + nu)(1 - 2 nu) rho)) (Kolsky, Stress Waves
 // in Solids, 1963, eq. 1.16).
-TEST(SolidBlockElastic, StableStepIsShortestLengthOverDilatationalWaveSpeed) {
+// Critical step of a one-point hex with lumped mass (include/abut/element/stable_step.hpp):
+// 2/omega_max with omega_max^2 = 8 (lambda tr G + 2 mu lambda_max G) / (rho V^2). For an
+// a x b x c box, b_a = (+-bc, +-ac, +-ab)/4, so G = diag((bc)^2, (ac)^2, (ab)^2) / 2.
+TEST(SolidBlockElastic, StableStepIsTheOnePointHexCriticalStep) {
   std::vector<Hex8> hexes;
   const Nodes nodes = test::box_grid(1, 1, 1, {0.5, 2.0, 3.0}, 0.0, hexes);
   SolidBlock block(1, kSteel, hexes, nodes);
   const double nu = kSteel.poisson;
-  const double c = std::sqrt(kSteel.young * (1 - nu) / ((1 + nu) * (1 - 2 * nu) * kSteel.density));
-  EXPECT_NEAR(block.initial_stable_step(nodes), 0.5 / c, 1e-12 * 0.5 / c);
+  const double mu = kSteel.young / (2 * (1 + nu));
+  const double lambda = kSteel.young * nu / ((1 + nu) * (1 - 2 * nu));
+  const double volume = 3.0, trace = (36.0 + 2.25 + 1.0) / 2.0, largest = 36.0 / 2.0;
+  const double omega = std::sqrt(8.0 * (lambda * trace + 2.0 * mu * largest) / (kSteel.density * volume * volume));
+  EXPECT_NEAR(block.initial_stable_step(nodes), 2.0 / omega, 1e-12 * 2.0 / omega);
   Motion motion(nodes);
-  EXPECT_NEAR(block.update(motion.state(), 0.0).stable_step, 0.5 / c, 1e-12 * 0.5 / c);
+  EXPECT_NEAR(block.update(motion.state(), 0.0).stable_step, 2.0 / omega, 1e-12 * 2.0 / omega);
   std::vector<double> mass(nodes.size(), 0.0);
   block.add_lumped_mass(mass);
   for (double m : mass) EXPECT_NEAR(m, kSteel.density * 3.0 / 8.0, 1e-12);
+}
+
+// For a cube the bound is attained by the checkerboard dilatation mode: dt = h / sqrt(3K/rho),
+// the 3D counterpart of the 1D h/c (cf. the CFL limit c dt / h <= 1/sqrt(3) of 3D acoustics).
+TEST(SolidBlockElastic, StableStepOfACubeIsHOverRootThreeKOverRho) {
+  std::vector<Hex8> hexes;
+  const double h = 0.01;
+  const Nodes nodes = test::box_grid(1, 1, 1, {h, h, h}, 0.0, hexes);
+  SolidBlock block(1, kSteel, hexes, nodes);
+  const double bulk = kSteel.young / (3 * (1 - 2 * kSteel.poisson));
+  EXPECT_NEAR(block.initial_stable_step(nodes), h / std::sqrt(3 * bulk / kSteel.density), 1e-12 * h);
 }
 
 // Bitwise identical forces, stresses and energies with 1 and 2 threads.

@@ -1,0 +1,43 @@
+#include "abut/element/stable_step.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace abut {
+
+namespace {
+
+// Largest eigenvalue of a symmetric 3x3 matrix (closed form; O. K. Smith, "Eigenvalues of a
+// symmetric 3x3 matrix", Comm. ACM 4(4), 1961).
+double largest_eigenvalue(double a00, double a11, double a22, double a01, double a12, double a02) {
+  const double off = a01 * a01 + a12 * a12 + a02 * a02;
+  const double q = (a00 + a11 + a22) / 3.0;
+  if (off <= 1e-300) return std::max({a00, a11, a22});
+  const double b00 = a00 - q, b11 = a11 - q, b22 = a22 - q;
+  const double p = std::sqrt((b00 * b00 + b11 * b11 + b22 * b22 + 2.0 * off) / 6.0);
+  const double det = b00 * (b11 * b22 - a12 * a12) - a01 * (a01 * b22 - a12 * a02) + a02 * (a01 * a12 - b11 * a02);
+  const double r = std::clamp(det / (2.0 * p * p * p), -1.0, 1.0);
+  return q + 2.0 * p * std::cos(std::acos(r) / 3.0);
+}
+
+}  // namespace
+
+double hex8_critical_length(const Hex8Gradient& g, double lambda, double mu) {
+  double gxx = 0, gyy = 0, gzz = 0, gxy = 0, gyz = 0, gxz = 0;
+  for (int a = 0; a < 8; ++a) {
+    gxx += g.bx[a] * g.bx[a];
+    gyy += g.by[a] * g.by[a];
+    gzz += g.bz[a] * g.bz[a];
+    gxy += g.bx[a] * g.by[a];
+    gyz += g.by[a] * g.bz[a];
+    gxz += g.bx[a] * g.bz[a];
+  }
+  const double trace = gxx + gyy + gzz;
+  const double largest = largest_eigenvalue(gxx, gyy, gzz, gxy, gyz, gxz);
+  // A negative lambda (nu < 0) only lowers lambda (tr eps)^2: leave it out, conservatively.
+  const double stiffness = std::max(lambda, 0.0) * trace + 2.0 * mu * largest;
+  return g.volume * std::sqrt((lambda + 2.0 * mu) / (2.0 * stiffness));
+}
+
+}  // namespace abut
