@@ -35,6 +35,7 @@
 #include "abut/core/error.hpp"
 #include "abut/element/hex8.hpp"
 #include "abut/element/stable_step.hpp"
+#include "abut/core/parallel.hpp"
 #include "abut/material/elastic.hpp"
 #include "abut/material/mooney_rivlin.hpp"
 #include "abut/material/sym_tensor.hpp"
@@ -321,7 +322,7 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
 template <class Law>
 BlockStep SolidBlock::Impl::step(const NodalState& s, double dt, const Law& law) {
   const auto n = static_cast<std::int64_t>(hexes.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelMinimum / 8)
   for (std::int64_t e = 0; e < n; ++e) element(static_cast<std::size_t>(e), s, dt, law);
 
   // Serial pass in element order: the first failure decides the message, sums are in a fixed

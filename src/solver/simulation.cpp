@@ -10,6 +10,7 @@
 #include "abut/element/solid_block.hpp"
 #include "boundary_conditions.hpp"
 #include "contact_set.hpp"
+#include "abut/core/parallel.hpp"
 #include "abut/mesh/skin.hpp"
 #include "rigid_body.hpp"
 
@@ -256,7 +257,7 @@ void Simulation::Impl::compute_forces(double dt) {
   }
   const Vec3 g = gravity_at(t);
   const std::int64_t nn = static_cast<std::int64_t>(n_nodes);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nn >= kParallelMinimum)
   for (std::int64_t i = 0; i < nn; ++i) {
     double sx = mass[i] * g.x, sy = mass[i] * g.y, sz = mass[i] * g.z;
     for (std::int32_t s = slot_start[i]; s < slot_start[i + 1]; ++s) {
@@ -304,7 +305,7 @@ void Simulation::Impl::kick() {
 
   std::vector<double> ox = vhx, oy = vhy, oz = vhz;  // v^{n-1/2}
   const std::int64_t nn = static_cast<std::int64_t>(n_nodes);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nn >= kParallelMinimum)
   for (std::int64_t i = 0; i < nn; ++i) {
     vhx[i] += dt_avg * fx[i] * inverse_mass[i];
     vhy[i] += dt_avg * fy[i] * inverse_mass[i];
@@ -461,7 +462,7 @@ void Simulation::Impl::drift() {
   good_t = t;
   const double dt = dt_next;
   const std::int64_t nn = static_cast<std::int64_t>(n_nodes);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nn >= kParallelMinimum)
   for (std::int64_t i = 0; i < nn; ++i) {
     if (rigid_body_of_node[i] >= 0) continue;
     x[i] += dt * vhx[i];
