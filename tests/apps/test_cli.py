@@ -1,0 +1,111 @@
+#!/usr/bin/python3
+"""The abut program as a user meets it: exit codes, error messages with file and line, the
+output directory of a run, and an unstable run that stops with its last good state written."""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ABUT = os.environ["ABUT_EXE"]
+failures = []
+
+
+def check(condition, what):
+    print(("ok    " if condition else "FAIL  ") + what)
+    if not condition:
+        failures.append(what)
+
+
+def run(*args, cwd=None):
+    return subprocess.run([ABUT, *args], capture_output=True, text=True, cwd=cwd, timeout=600)
+
+
+BLOCK = """*UNIT_SYSTEM
+SI
+*TIME
+{t_end}
+*COMPONENT_BOX
+1, 1, 2, 2, 2
+0.0, 0.0, 0.0, 0.01, 0.01, 0.01
+*MAT_ELASTIC
+1, 7800.0, 210.0e9, 0.3
+*PART
+"cube"
+1, 1
+{extra}*END
+"""
+
+with tempfile.TemporaryDirectory() as tmp:
+    tmp = Path(tmp)
+
+    # --version and --help
+    r = run("--version")
+    check(r.returncode == 0 and r.stdout.startswith("abut "), "--version prints 'abut <version>'")
+    r = run("--help")
+    check(r.returncode == 0 and "run" in r.stdout and "check" in r.stdout and "info" in r.stdout,
+          "--help lists run, check and info")
+
+    # A good deck: check, info, run with the default output directory beside the deck.
+    good = tmp / "cube.k"
+    good.write_text(BLOCK.format(t_end="1.0e-5", extra="*INITIAL_VELOCITY\nP, 1, 1.0, 0.0, 0.0\n"))
+    r = run("check", str(good))
+    check(r.returncode == 0 and "OK" in r.stdout, "check accepts a good deck")
+    r = run("info", str(good))
+    check(r.returncode == 0 and "cube" in r.stdout and "mass" in r.stdout, "info lists the part and its mass")
+    r = run("run", str(good), "-q")
+    out = tmp / "cube_out"
+    check(r.returncode == 0, "run exits 0")
+    for name in ["results.pvd", "energy.csv", "parts.csv", "summary.json"]:
+        check((out / name).is_file(), f"run writes {name} into <deck stem>_out/")
+    summary = json.loads((out / "summary.json").read_text())
+    check(summary["status"] == "completed" and summary["cycles"] > 0, "summary.json says completed")
+    check(abs(summary["parts"][0]["mass"] - 7800.0 * 1e-6) < 1e-12, "summary.json has the part's mass")
+    header = (out / "energy.csv").read_text().splitlines()[0]
+    check(header == "time,kinetic,internal,hourglass,contact,friction,external_work,total,balance_error",
+          "energy.csv has the documented columns")
+
+    # A bad number: exit 2, message with file:line, keyword and field.
+    bad = tmp / "bad.k"
+    bad.write_text(BLOCK.format(t_end="1.0e-5", extra="").replace("7800.0", "78OO.0"))
+    r = run("check", str(bad))
+    check(r.returncode == 2, "a bad number exits with 2")
+    check(f"{bad}:9" in r.stderr and "*MAT_ELASTIC" in r.stderr, "the error names file:line and keyword")
+
+    # An unknown keyword.
+    bad.write_text(BLOCK.format(t_end="1.0e-5", extra="*CONTCT\n1\n"))
+    r = run("check", str(bad))
+    check(r.returncode == 2 and "*CONTCT" in r.stderr and ":13" in r.stderr, "an unknown keyword is an error at its line")
+
+    # An unstable run: the top face driven through the cube (bottom held) inverts its elements.
+    unstable = tmp / "crush.k"
+    unstable.write_text(BLOCK.format(t_end="1.0e-4", extra="""*GEOMETRY_BOX
+1
+-1.0, -1.0, 0.0099, 1.0, 1.0, 1.0
+*CURVE
+1
+0.0, -2000.0
+1.0, -2000.0
+*BC_MOTION
+G, 1, XY
+V, Z, 1
+*GEOMETRY_BOX
+2
+-1.0, -1.0, -1.0, 1.0, 1.0, 0.0001
+*BC_MOTION
+G, 2, XYZ
+"""))
+    r = run("run", str(unstable), "-q")
+    out = tmp / "crush_out"
+    check(r.returncode == 3, "an unstable run exits with 3")
+    check("UNSTABLE" in r.stdout or "unstable" in r.stderr, "it says that it went unstable")
+    summary = json.loads((out / "summary.json").read_text())
+    check(summary["status"] == "unstable" and "inverted" in summary["message"], "summary.json records the instability")
+    pvd = (out / "results.pvd").read_text()
+    check(pvd.count("<DataSet") >= 2, "the series holds the states up to the last good one")
+
+if failures:
+    print(f"{len(failures)} check(s) failed")
+    sys.exit(1)
+print("all CLI checks passed")
