@@ -1,5 +1,5 @@
-// ns per element-cycle of SolidBlock::update for elastic hexahedra on a box mesh, 1 and 2
-// threads. Arguments: element count, thread count. The counter `per_element_cycle` is the wall
+// ns per element-cycle of SolidBlock::update for elastic and Mooney-Rivlin hexahedra on a box
+// mesh, 1 and 2 threads. Arguments: element count, thread count. The counter `per_element_cycle` is the wall
 // time of one update divided by the element count (printed in seconds with an SI prefix).
 #include <benchmark/benchmark.h>
 #include <omp.h>
@@ -43,12 +43,13 @@ BoxMesh box_mesh(std::int64_t count) {
   return m;
 }
 
-void BM_ElasticHexUpdate(benchmark::State& state) {
+// Runs update() on a box mesh of state.range(0) elements with state.range(1) threads.
+void run_update(benchmark::State& state, const abut::MaterialParams& material) {
   const std::int64_t count = state.range(0);
   const int saved = omp_get_max_threads();
   omp_set_num_threads(static_cast<int>(state.range(1)));
   const BoxMesh mesh = box_mesh(count);
-  abut::SolidBlock block(1, abut::ElasticParams{7800.0, 210e9, 0.3}, mesh.hexes, mesh.nodes);
+  abut::SolidBlock block(1, material, mesh.hexes, mesh.nodes);
   const abut::NodalState nodal{mesh.nodes.x.data(), mesh.nodes.y.data(), mesh.nodes.z.data(),
                                mesh.vx.data(),      mesh.vy.data(),      mesh.vz.data()};
   const double dt = 1e-8;
@@ -62,7 +63,25 @@ void BM_ElasticHexUpdate(benchmark::State& state) {
   omp_set_num_threads(saved);
 }
 
+void BM_ElasticHexUpdate(benchmark::State& state) {
+  run_update(state, abut::ElasticParams{7800.0, 210e9, 0.3});
+}
+
+// The seed deck's rubber (examples/rubber_sphere.k): K = 3 GPa, C1 = 1 MPa and one Newtonian
+// viscous term (alpha_1 = 100, beta_1 = 0).
+void BM_MooneyRivlinHexUpdate(benchmark::State& state) {
+  abut::MooneyRivlinParams rubber{1500.0, 3.0e9, 1.0e6, 0.0, {}, {}};
+  rubber.alpha[0] = 1.0e2;
+  run_update(state, rubber);
+}
+
 BENCHMARK(BM_ElasticHexUpdate)
+    ->ArgNames({"elements", "threads"})
+    ->ArgsProduct({{1000, 10000, 100000}, {1, 2}})
+    ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
+
+BENCHMARK(BM_MooneyRivlinHexUpdate)
     ->ArgNames({"elements", "threads"})
     ->ArgsProduct({{1000, 10000, 100000}, {1, 2}})
     ->Unit(benchmark::kMicrosecond)
