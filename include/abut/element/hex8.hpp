@@ -37,6 +37,29 @@ struct Hex8Gradient {
 // the volume and B matrix of FB81, checked against 2x2x2 Gauss quadrature in tests).
 void hex8_gradient(const Hex8Coords& x, Hex8Gradient& g);
 
+// Modal (Walsh) form used by the element kernel. The eight functions phi_k = 1, xi, eta, zeta,
+// eta zeta, zeta xi, xi eta, xi eta zeta (k = 0..7; k = 4 + alpha is the hourglass base vector
+// h_alpha) take the values +-1 at the nodes and are orthogonal there: sum_a phi_k(a) phi_l(a) =
+// 8 delta_kl. So any nodal field u_a has the modes u_k = (1/8) sum_a phi_k(a) u_a, and
+// u_a = sum_k phi_k(a) u_k. The transforms are fast Walsh-Hadamard transforms (3 butterfly
+// stages, additions only).
+void hex8_to_modes(const double nodal[8], double modes[8]);    // u_k = 1/8 sum_a phi_k(a) u_a
+void hex8_from_modes(const double modes[8], double nodal[8]);  // u_a = sum_k phi_k(a) u_k
+
+// The modes c_k of the coordinates (component-wise) and the modal gradient G_k = (1/8) dV/dc_k,
+// so that b_a = sum_k phi_k(a) G_k (G_0 = G_7 = 0: translation and the xi eta zeta mode leave V
+// unchanged). By orthogonality, for any nodal vector field u with modes u_k:
+//   sum_a u_a (x) b_a = 8 sum_k u_k (x) G_k,   sum_a b_a . b_a = 8 sum_k G_k . G_k,
+// which is how the element forms velocity gradients, F and the hourglass stiffness without b_a.
+struct Hex8Modes {
+  double x[8], y[8], z[8];
+};
+struct Hex8ModalGradient {
+  double gx[8], gy[8], gz[8];
+  double volume;
+};
+void hex8_modal_gradient(const Hex8Modes& c, Hex8ModalGradient& g);
+
 // FB81 hourglass shape vectors (gamma, with the 1/8 normalisation):
 // gamma_alpha(a) = (1/8) [h_alpha(a) - (sum_c h_alpha(c) x_c) . b_a / V], orthogonal to every
 // linear field (sum_a gamma_alpha(a) x_a = 0, sum_a gamma_alpha(a) = 0).
