@@ -15,10 +15,13 @@ namespace {
 struct BoxMesh {
   abut::Nodes nodes;
   std::vector<abut::Hex8> hexes;
+  std::vector<double> x, y, z;  // current positions: the grid sheared and stretched by a few %
   std::vector<double> vx, vy, vz;
 };
 
-// nx = ny = 10 elements of 1 mm, nz = count / 100, nodes on a grid; a smooth velocity field.
+// nx = ny = 10 elements of 1 mm, nz = count / 100, nodes on a grid (the reference); current
+// positions deformed smoothly (strains of a few %, so that the material sees a general F) and a
+// smooth velocity field.
 BoxMesh box_mesh(std::int64_t count) {
   BoxMesh m;
   const int nx = 10, ny = 10, nz = static_cast<int>(count / 100);
@@ -27,6 +30,9 @@ BoxMesh box_mesh(std::int64_t count) {
     for (int j = 0; j <= ny; ++j)
       for (int i = 0; i <= nx; ++i) {
         m.nodes.add(static_cast<std::int64_t>(m.nodes.size()) + 1, {i * h, j * h, k * h});
+        m.x.push_back(i * h + 0.08 * j * h + 0.03 * k * h + 0.1 * h * std::sin(0.5 * k));
+        m.y.push_back(0.95 * j * h + 0.03 * k * h);
+        m.z.push_back(1.04 * k * h + 0.02 * i * h);
         m.vx.push_back(0.1 * std::sin(300.0 * k * h));
         m.vy.push_back(0.05 * std::cos(200.0 * i * h));
         m.vz.push_back(-0.1 + 0.02 * j * h);
@@ -50,8 +56,8 @@ void run_update(benchmark::State& state, const abut::MaterialParams& material) {
   omp_set_num_threads(static_cast<int>(state.range(1)));
   const BoxMesh mesh = box_mesh(count);
   abut::SolidBlock block(1, material, mesh.hexes, mesh.nodes);
-  const abut::NodalState nodal{mesh.nodes.x.data(), mesh.nodes.y.data(), mesh.nodes.z.data(),
-                               mesh.vx.data(),      mesh.vy.data(),      mesh.vz.data()};
+  const abut::NodalState nodal{mesh.x.data(),  mesh.y.data(),  mesh.z.data(),
+                               mesh.vx.data(), mesh.vy.data(), mesh.vz.data()};
   const double dt = 1e-8;
   block.update(nodal, 0.0);
   for (auto _ : state) {
