@@ -1,6 +1,6 @@
 // ns per element-cycle of SolidBlock::update for elastic and Mooney-Rivlin hexahedra on a box
-// mesh, 1 and 2 threads. Arguments: element count, thread count. The counter `per_element_cycle` is the wall
-// time of one update divided by the element count (printed in seconds with an SI prefix).
+// mesh, 1 and 2 threads. Arguments: element count, thread count. The counter `per_element_cycle` is
+// the wall time of one update divided by the element count (printed in seconds with an SI prefix).
 #include <benchmark/benchmark.h>
 #include <omp.h>
 

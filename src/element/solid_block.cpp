@@ -128,16 +128,16 @@ struct SolidBlock::Impl {
   double newtonian_viscosity = 0.0;  // sum of alpha_k of the Mooney-Rivlin terms with beta_k = 0
   int viscous_terms = 0;
 
-  std::vector<double> reference_volume;    // 1 per element
+  std::vector<double> reference_volume;  // 1 per element
   // Mooney-Rivlin only: R_k = 8 G0_k / V0 of the reference configuration for the modes k = 1..6,
   // stored per element as R[6 j + k - 1] (component j), so that F = sum_k c_k (x) R_k.
   static constexpr std::size_t kReferenceModes = 18;
   std::vector<double> reference_gradient;
-  std::vector<double> stress;              // 6 per element (Sym3 order)
-  std::vector<double> viscous;             // 6 per active viscous term per element
-  std::vector<double> hourglass;           // generalized hourglass forces, 12 per element
-  std::vector<double> forces;              // 24 per element
-  std::vector<double> internal_work;       // per-element increments of the last step
+  std::vector<double> stress;         // 6 per element (Sym3 order)
+  std::vector<double> viscous;        // 6 per active viscous term per element
+  std::vector<double> hourglass;      // generalized hourglass forces, 12 per element
+  std::vector<double> forces;         // 24 per element
+  std::vector<double> internal_work;  // per-element increments of the last step
   std::vector<double> hourglass_work;
   std::vector<double> stable;
   std::vector<unsigned char> failure;
@@ -276,10 +276,12 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
   // part of the stored stress; its work goes to the internal energy.
   double bulk_q = 0.0, q_speed = 0.0;
   if (dt > 0.0) {
-    const double volume_rate = (strain_increment[0] + strain_increment[1] + strain_increment[2]) / dt;
+    const double volume_rate =
+        (strain_increment[0] + strain_increment[1] + strain_increment[2]) / dt;
     if (volume_rate < 0.0) {
       const double length = std::cbrt(g.volume);
-      q_speed = bulk_viscosity_linear * wave_speed - bulk_viscosity_quadratic * length * volume_rate;
+      q_speed =
+          bulk_viscosity_linear * wave_speed - bulk_viscosity_quadratic * length * volume_rate;
       bulk_q = -density * length * q_speed * volume_rate;
       internal_work[e] += -bulk_q * volume_rate * dt * mid_volume;
     }
@@ -323,8 +325,9 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
   // sigma including -q I. With b_a = sum_k phi_k(a) G_k and gamma as above this is
   // f_a = -sum_k phi_k(a) F_k, F_k = T G_k + Q_{k-4}/8 (k >= 4), T = sigma - (1/V) sum_alpha
   // Q_alpha (x) m_alpha: one 3x3 product per mode and the transform back to the nodes.
-  double t[9] = {now[0] - bulk_q, now[3], now[5], now[3], now[1] - bulk_q,
-                 now[4], now[5], now[4], now[2] - bulk_q};
+  double t[9] = {now[0] - bulk_q, now[3],          now[5],  //
+                 now[3],          now[1] - bulk_q, now[4],  //
+                 now[5],          now[4],          now[2] - bulk_q};
   for (int alpha = 0; alpha < 4; ++alpha) {
     const int k = 4 + alpha;
     for (int i = 0; i < 3; ++i) {
@@ -413,8 +416,10 @@ SolidBlock::SolidBlock(std::int64_t part_id, const MaterialParams& material,
   double viscous_shear = 0.0;
   if (rubber) {
     for (int k = 0; k < 4; ++k) {
-      if (rubber->beta[k] > 0.0) viscous_shear += rubber->alpha[k] / rubber->beta[k];
-      else m.newtonian_viscosity += rubber->alpha[k];
+      if (rubber->beta[k] > 0.0)
+        viscous_shear += rubber->alpha[k] / rubber->beta[k];
+      else
+        m.newtonian_viscosity += rubber->alpha[k];
     }
   }
   m.wave_speed = std::sqrt((moduli.bulk + 4.0 / 3.0 * (moduli.shear + viscous_shear)) / m.density);

@@ -16,12 +16,11 @@ Sym3 mooney_rivlin_stress(const MooneyRivlinParams& p, const Mat3& f) {
   // b_bar in Sym3 order xx, yy, zz, xy, yz, zx.
   const double b[6] = {row_dot(0, 0), row_dot(1, 1), row_dot(2, 2),
                        row_dot(0, 1), row_dot(1, 2), row_dot(2, 0)};
-  const double b2[6] = {b[0] * b[0] + b[3] * b[3] + b[5] * b[5],  // b_bar^2
-                        b[3] * b[3] + b[1] * b[1] + b[4] * b[4],
-                        b[5] * b[5] + b[4] * b[4] + b[2] * b[2],
-                        b[0] * b[3] + b[3] * b[1] + b[5] * b[4],
-                        b[3] * b[5] + b[1] * b[4] + b[4] * b[2],
-                        b[5] * b[0] + b[4] * b[3] + b[2] * b[5]};
+  // b_bar^2, same order.
+  const double b2[6] = {
+      b[0] * b[0] + b[3] * b[3] + b[5] * b[5], b[3] * b[3] + b[1] * b[1] + b[4] * b[4],
+      b[5] * b[5] + b[4] * b[4] + b[2] * b[2], b[0] * b[3] + b[3] * b[1] + b[5] * b[4],
+      b[3] * b[5] + b[1] * b[4] + b[4] * b[2], b[5] * b[0] + b[4] * b[3] + b[2] * b[5]};
   const double i1 = b[0] + b[1] + b[2];
   const double factor = p.c1 + p.c2 * i1;
   const double two_over_j = 2.0 / det;

@@ -129,9 +129,9 @@ TEST(Hex8, MeanGradientIsExactForLinearFieldsAndGammaIsOrthogonalToThem) {
 // The nodal values of phi_k (the tables kHex8Xi, ..., kHex8Hourglass) are the unit mode k, and
 // from_modes inverts to_modes.
 TEST(Hex8, WalshTransformsMapTheBaseFunctionsToUnitModesAndBack) {
-  const std::array<double, 8> phi[8] = {{1, 1, 1, 1, 1, 1, 1, 1}, kHex8Xi, kHex8Eta, kHex8Zeta,
-                                        kHex8Hourglass[0],        kHex8Hourglass[1],
-                                        kHex8Hourglass[2],        kHex8Hourglass[3]};
+  const std::array<double, 8> phi[8] = {
+      {1, 1, 1, 1, 1, 1, 1, 1}, kHex8Xi,           kHex8Eta,          kHex8Zeta,
+      kHex8Hourglass[0],        kHex8Hourglass[1], kHex8Hourglass[2], kHex8Hourglass[3]};
   for (int k = 0; k < 8; ++k) {
     double modes[8], back[8];
     hex8_to_modes(phi[k].data(), modes);

@@ -68,14 +68,15 @@ inline void hex8_to_modes(const double u[8], double m[8]) {
   const double a4 = u[5] + u[4], a5 = u[5] - u[4], a6 = u[6] + u[7], a7 = u[6] - u[7];
   const double b0 = a2 + a0, b2 = a2 - a0, b1 = a3 + a1, b3 = a3 - a1;  // zeta = -1 face
   const double b4 = a6 + a4, b6 = a6 - a4, b5 = a7 + a5, b7 = a7 - a5;  // zeta = +1 face
-  m[0] = 0.125 * (b4 + b0);  // 1
-  m[1] = 0.125 * (b5 + b1);  // xi
-  m[2] = 0.125 * (b6 + b2);  // eta
-  m[3] = 0.125 * (b4 - b0);  // zeta
-  m[4] = 0.125 * (b6 - b2);  // eta zeta
-  m[5] = 0.125 * (b5 - b1);  // zeta xi
-  m[6] = 0.125 * (b7 + b3);  // xi eta
-  m[7] = 0.125 * (b7 - b3);  // xi eta zeta
+  // In the order 1, xi, eta, zeta, eta zeta, zeta xi, xi eta, xi eta zeta.
+  m[0] = 0.125 * (b4 + b0);
+  m[1] = 0.125 * (b5 + b1);
+  m[2] = 0.125 * (b6 + b2);
+  m[3] = 0.125 * (b4 - b0);
+  m[4] = 0.125 * (b6 - b2);
+  m[5] = 0.125 * (b5 - b1);
+  m[6] = 0.125 * (b7 + b3);
+  m[7] = 0.125 * (b7 - b3);
 }
 
 // u_a = sum_k phi_k(a) u_k.
@@ -115,9 +116,9 @@ inline void hex8_modal_gradient(const Hex8Modes& c, Hex8ModalGradient& g) {
     double* gi = gs[i];
     const double* p = ps[i];
     gi[0] = 0.0;
-    gi[1] = p[0] + third * p[1];  // c2 x c3 + (c6 x c5) / 3
-    gi[2] = p[2] + third * p[3];  // c3 x c1 + (c4 x c6) / 3
-    gi[3] = p[4] + third * p[5];  // c1 x c2 + (c5 x c4) / 3
+    gi[1] = p[0] + third * p[1];      // c2 x c3 + (c6 x c5) / 3
+    gi[2] = p[2] + third * p[3];      // c3 x c1 + (c4 x c6) / 3
+    gi[3] = p[4] + third * p[5];      // c1 x c2 + (c5 x c4) / 3
     gi[4] = third * (p[6] + p[7]);    // (c6 x c2 + c3 x c5) / 3
     gi[5] = third * (p[8] + p[9]);    // (c4 x c3 + c1 x c6) / 3
     gi[6] = third * (p[10] + p[11]);  // (c2 x c4 + c5 x c1) / 3
