@@ -24,6 +24,12 @@
 //     Hourglass work: (Q_rot + Q_new)/2 . qdot dt, which is the work of the nodal hourglass forces.
 //  5. Nodal forces at x^n: f_a = -(sigma b_a + sum_alpha Q_alpha gamma_alpha(a)).
 //  6. Stable step V / (largest face area) / c, c = sqrt((K + 4/3 G)/rho) from the initial moduli.
+//
+// Evaluation: the kernel works in the modal (Walsh) form of hex8.hpp. Positions and velocities
+// are transformed once; the mid-step modes are c - dt/2 w; all sums over nodes (sum_a v_a (x) b_a,
+// F, b:b, the hourglass rates) are sums over the six modes with a nonzero gradient, and the
+// nodal forces are one transform back. This is the same algebra as the nodal form (identical up
+// to round-off) with one geometry evaluation per configuration and no b_a or gamma arrays.
 #include "abut/element/solid_block.hpp"
 
 #include <algorithm>
@@ -54,6 +60,22 @@ struct RubberLaw {
   const MooneyRivlinParams* params;
   ViscousStep viscous;  // factors for this step (count = number of active terms)
 };
+
+// sum_a u_a (x) b_a = 8 sum_k u_k (x) G_k (hex8.hpp), row-major: l[3 i + j] = sum_a u_ai b_aj.
+void gradient_times_volume(const Hex8Modes& u, const Hex8ModalGradient& g, double l[9]) {
+  const double* us[3] = {u.x, u.y, u.z};
+  for (int i = 0; i < 3; ++i) {
+    double sx = 0.0, sy = 0.0, sz = 0.0;
+    for (int k = 1; k < 7; ++k) {  // G_0 = G_7 = 0
+      sx += us[i][k] * g.gx[k];
+      sy += us[i][k] * g.gy[k];
+      sz += us[i][k] * g.gz[k];
+    }
+    l[3 * i] = 8.0 * sx;
+    l[3 * i + 1] = 8.0 * sy;
+    l[3 * i + 2] = 8.0 * sz;
+  }
+}
 
 Sym3 add(const Sym3& a, const Sym3& b) {
   Sym3 s;
@@ -109,13 +131,16 @@ struct SolidBlock::Impl {
   double lame_lambda = 0.0, lame_mu = 0.0;  // initial moduli for the stable step (mu with viscous terms)
   int viscous_terms = 0;
 
-  std::vector<double> reference_volume;    // 1 per element
-  std::vector<double> reference_gradient;  // Mooney-Rivlin only: B0 = b0/V0, 24 per element
-  std::vector<double> stress;              // 6 per element (Sym3 order)
-  std::vector<double> viscous;             // 6 per active viscous term per element
-  std::vector<double> hourglass;           // generalized hourglass forces, 12 per element
-  std::vector<double> forces;              // 24 per element
-  std::vector<double> internal_work;       // per-element increments of the last step
+  std::vector<double> reference_volume;  // 1 per element
+  // Mooney-Rivlin only: R_k = 8 G0_k / V0 of the reference configuration for the modes k = 1..6,
+  // stored per element as R[6 j + k - 1] (component j), so that F = sum_k c_k (x) R_k.
+  static constexpr std::size_t kReferenceModes = 18;
+  std::vector<double> reference_gradient;
+  std::vector<double> stress;         // 6 per element (Sym3 order)
+  std::vector<double> viscous;        // 6 per active viscous term per element
+  std::vector<double> hourglass;      // generalized hourglass forces, 12 per element
+  std::vector<double> forces;         // 24 per element
+  std::vector<double> internal_work;  // per-element increments of the last step
   std::vector<double> hourglass_work;
   std::vector<double> stable;
   std::vector<unsigned char> failure;
@@ -149,6 +174,8 @@ std::string SolidBlock::Impl::element_name(std::size_t e) const {
 
 template <class Law>
 void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, const Law& law) {
+  // Gather the nodal data once and go to the modal form (hex8.hpp): every per-node sum below
+  // (velocity gradients, F, hourglass rates, b:b) becomes a sum over the six modes with G_k != 0.
   const Hex8& hex = hexes[e];
   Hex8Coords cur;
   double v[3][8];
@@ -161,39 +188,40 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
     v[1][a] = s.vy[n];
     v[2][a] = s.vz[n];
   }
-  Hex8Gradient g;
-  hex8_gradient(cur, g);
+  Hex8Modes c, w;  // modes of x^n and of v^{n-1/2}
+  hex8_to_modes(cur.x, c.x);
+  hex8_to_modes(cur.y, c.y);
+  hex8_to_modes(cur.z, c.z);
+  hex8_to_modes(v[0], w.x);
+  hex8_to_modes(v[1], w.y);
+  hex8_to_modes(v[2], w.z);
+  Hex8ModalGradient g;
+  hex8_modal_gradient(c, g);
   if (!(g.volume > 0.0)) {
     failure[e] = std::isfinite(g.volume) ? kInverted : kNonFinite;
     return;
   }
 
-  // 1. Mid-step rates.
+  // 1. Mid-step rates. The transform is linear, so the modes of x^{n-1/2} are c - dt/2 w.
   Sym3 strain_increment;
   Mat3 rotation{1, 0, 0, 0, 1, 0, 0, 0, 1};
   double mid_volume = g.volume;
   if (dt > 0.0) {
-    Hex8Coords mid;
-    for (int a = 0; a < 8; ++a) {
-      mid.x[a] = cur.x[a] - 0.5 * dt * v[0][a];
-      mid.y[a] = cur.y[a] - 0.5 * dt * v[1][a];
-      mid.z[a] = cur.z[a] - 0.5 * dt * v[2][a];
+    Hex8Modes mid;
+    for (int k = 0; k < 8; ++k) {
+      mid.x[k] = c.x[k] - 0.5 * dt * w.x[k];
+      mid.y[k] = c.y[k] - 0.5 * dt * w.y[k];
+      mid.z[k] = c.z[k] - 0.5 * dt * w.z[k];
     }
-    Hex8Gradient gm;
-    hex8_gradient(mid, gm);
+    Hex8ModalGradient gm;
+    hex8_modal_gradient(mid, gm);
     if (!(gm.volume > 0.0)) {
       failure[e] = std::isfinite(gm.volume) ? kInverted : kNonFinite;
       return;
     }
     mid_volume = gm.volume;
-    double l[9] = {};  // velocity gradient times V_mid
-    for (int a = 0; a < 8; ++a) {
-      for (int i = 0; i < 3; ++i) {
-        l[3 * i] += v[i][a] * gm.bx[a];
-        l[3 * i + 1] += v[i][a] * gm.by[a];
-        l[3 * i + 2] += v[i][a] * gm.bz[a];
-      }
-    }
+    double l[9];  // velocity gradient times V_mid
+    gradient_times_volume(w, gm, l);
     const double scale = dt / gm.volume;
     strain_increment = {{scale * l[0], scale * l[4], scale * l[8], 0.5 * scale * (l[1] + l[3]),
                          0.5 * scale * (l[5] + l[7]), 0.5 * scale * (l[6] + l[2])}};
@@ -213,13 +241,14 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
   if constexpr (std::is_same_v<Law, ElasticLaw>) {
     now = dt > 0.0 ? add(rotated, hooke(law.lame, strain_increment)) : old;
   } else {
-    const double* b0 = &reference_gradient[24 * e];
-    const double* xs[3] = {cur.x, cur.y, cur.z};
+    // F = sum_a x_a (x) B0_a = sum_k c_k (x) R_k with R_k = 8 G0_k / V0 (hex8.hpp).
+    const double* r0 = &reference_gradient[kReferenceModes * e];
+    const double* cs[3] = {c.x, c.y, c.z};
     Mat3 f{};
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) {
         double sum = 0.0;
-        for (int a = 0; a < 8; ++a) sum += xs[i][a] * b0[8 * j + a];
+        for (int k = 1; k < 7; ++k) sum += cs[i][k] * r0[6 * j + k - 1];
         f[3 * i + j] = sum;
       }
     }
@@ -231,15 +260,15 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
       Sym3 h{{hk[0], hk[1], hk[2], hk[3], hk[4], hk[5]}};
       if (dt > 0.0) {
         const Sym3 hr = rotate(rotation, h);
-        for (int c = 0; c < 6; ++c) {
-          h[c] = law.viscous.decay[k] * hr[c] + law.viscous.gain[k] * dev_increment[c];
-          hk[c] = h[c];
+        for (int comp = 0; comp < 6; ++comp) {
+          h[comp] = law.viscous.decay[k] * hr[comp] + law.viscous.gain[k] * dev_increment[comp];
+          hk[comp] = h[comp];
         }
       }
       now = add(now, h);
     }
   }
-  for (int c = 0; c < 6; ++c) stored[c] = now[c];
+  for (int comp = 0; comp < 6; ++comp) stored[comp] = now[comp];
   internal_work[e] =
       dt > 0.0 ? 0.5 * double_dot(add(rotated, now), strain_increment) * mid_volume : 0.0;
 
@@ -248,31 +277,38 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
   //   q = rho l (C0 l eps_v_dot^2 - C1 c eps_v_dot),  eps_v_dot < 0,  l = V^(1/3),
   // that spreads shock fronts over a few elements and damps the ringing behind them. It is not
   // part of the stored stress; its work goes to the internal energy.
-  const double length = std::cbrt(g.volume);
   double bulk_q = 0.0, q_speed = 0.0;
   if (dt > 0.0) {
-    const double volume_rate = (strain_increment[0] + strain_increment[1] + strain_increment[2]) / dt;
+    const double volume_rate =
+        (strain_increment[0] + strain_increment[1] + strain_increment[2]) / dt;
     if (volume_rate < 0.0) {
-      q_speed = bulk_viscosity_linear * wave_speed - bulk_viscosity_quadratic * length * volume_rate;
+      const double length = std::cbrt(g.volume);
+      q_speed =
+          bulk_viscosity_linear * wave_speed - bulk_viscosity_quadratic * length * volume_rate;
       bulk_q = -density * length * q_speed * volume_rate;
       internal_work[e] += -bulk_q * volume_rate * dt * mid_volume;
     }
   }
 
-  // 4. Hourglass forces.
-  double gamma[4][8];
-  hex8_hourglass_shape(g, gamma);
+  // 4. Hourglass forces. With gamma_alpha(a) = h_alpha(a)/8 - (m_alpha . b_a)/V and the moment
+  // m_alpha = c_{4+alpha}, the rate sum_a v_a gamma_alpha(a) is w_{4+alpha} - L^n m_alpha, where
+  // L^n V = sum_a v_a (x) b_a is the velocity gradient at x^n times V; b:b = 8 sum_k G_k . G_k.
+  double ln[9];
+  gradient_times_volume(w, g, ln);
+  const double inv_volume = 1.0 / g.volume;
   double bb = 0.0;
-  for (int a = 0; a < 8; ++a) bb += g.bx[a] * g.bx[a] + g.by[a] * g.by[a] + g.bz[a] * g.bz[a];
+  for (int k = 0; k < 8; ++k) bb += g.gx[k] * g.gx[k] + g.gy[k] * g.gy[k] + g.gz[k] * g.gz[k];
+  bb *= 8.0;
   const double stiffness = hourglass_coefficient * 2.0 * shear_modulus * bb / g.volume;
+  const double* ws[3] = {w.x, w.y, w.z};
   double* q = &hourglass[12 * e];
   double work = 0.0;
   for (int alpha = 0; alpha < 4; ++alpha) {
+    const int k = 4 + alpha;
     double rate[3];
     for (int i = 0; i < 3; ++i) {
-      double sum = 0.0;
-      for (int a = 0; a < 8; ++a) sum += v[i][a] * gamma[alpha][a];
-      rate[i] = sum;
+      rate[i] = ws[i][k] -
+                (ln[3 * i] * c.x[k] + ln[3 * i + 1] * c.y[k] + ln[3 * i + 2] * c.z[k]) * inv_volume;
     }
     double* qa = q + 3 * alpha;
     double qr[3] = {qa[0], qa[1], qa[2]};
@@ -288,21 +324,38 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
   }
   hourglass_work[e] = work;
 
-  // 5. Nodal forces (acting on the nodes).
+  // 5. Nodal forces (acting on the nodes) f_a = -(sigma b_a + sum_alpha Q_alpha gamma_alpha(a)),
+  // sigma including -q I. With b_a = sum_k phi_k(a) G_k and gamma as above this is
+  // f_a = -sum_k phi_k(a) F_k, F_k = T G_k + Q_{k-4}/8 (k >= 4), T = sigma - (1/V) sum_alpha
+  // Q_alpha (x) m_alpha: one 3x3 product per mode and the transform back to the nodes.
+  double t[9] = {now[0] - bulk_q, now[3],          now[5],  //
+                 now[3],          now[1] - bulk_q, now[4],  //
+                 now[5],          now[4],          now[2] - bulk_q};
+  for (int alpha = 0; alpha < 4; ++alpha) {
+    const int k = 4 + alpha;
+    for (int i = 0; i < 3; ++i) {
+      const double qi = q[3 * alpha + i] * inv_volume;
+      t[3 * i] -= qi * c.x[k];
+      t[3 * i + 1] -= qi * c.y[k];
+      t[3 * i + 2] -= qi * c.z[k];
+    }
+  }
+  double modal_force[3][8];
+  for (int i = 0; i < 3; ++i) {
+    for (int k = 0; k < 8; ++k) {
+      modal_force[i][k] = t[3 * i] * g.gx[k] + t[3 * i + 1] * g.gy[k] + t[3 * i + 2] * g.gz[k];
+    }
+    for (int alpha = 0; alpha < 4; ++alpha) modal_force[i][4 + alpha] += 0.125 * q[3 * alpha + i];
+  }
+  double nodal_force[3][8];
+  for (int i = 0; i < 3; ++i) hex8_from_modes(modal_force[i], nodal_force[i]);
   double* fe = &forces[24 * e];
   double check = 0.0;
   for (int a = 0; a < 8; ++a) {
-    const double fx = (now[0] - bulk_q) * g.bx[a] + now[3] * g.by[a] + now[5] * g.bz[a];
-    const double fy = now[3] * g.bx[a] + (now[1] - bulk_q) * g.by[a] + now[4] * g.bz[a];
-    const double fz = now[5] * g.bx[a] + now[4] * g.by[a] + (now[2] - bulk_q) * g.bz[a];
-    double h[3] = {0.0, 0.0, 0.0};
-    for (int alpha = 0; alpha < 4; ++alpha) {
-      for (int i = 0; i < 3; ++i) h[i] += q[3 * alpha + i] * gamma[alpha][a];
+    for (int i = 0; i < 3; ++i) {
+      fe[3 * a + i] = -nodal_force[i][a];
+      check += std::abs(nodal_force[i][a]);
     }
-    fe[3 * a] = -(fx + h[0]);
-    fe[3 * a + 1] = -(fy + h[1]);
-    fe[3 * a + 2] = -(fz + h[2]);
-    check += std::abs(fe[3 * a]) + std::abs(fe[3 * a + 1]) + std::abs(fe[3 * a + 2]);
   }
   if (!std::isfinite(check + internal_work[e] + work)) {
     failure[e] = kNonFinite;
@@ -366,8 +419,10 @@ SolidBlock::SolidBlock(std::int64_t part_id, const MaterialParams& material,
   double viscous_shear = 0.0;
   if (rubber) {
     for (int k = 0; k < 4; ++k) {
-      if (rubber->beta[k] > 0.0) viscous_shear += rubber->alpha[k] / rubber->beta[k];
-      else m.newtonian_viscosity += rubber->alpha[k];
+      if (rubber->beta[k] > 0.0)
+        viscous_shear += rubber->alpha[k] / rubber->beta[k];
+      else
+        m.newtonian_viscosity += rubber->alpha[k];
     }
   }
   m.lame_mu = moduli.shear + viscous_shear;
@@ -377,7 +432,7 @@ SolidBlock::SolidBlock(std::int64_t part_id, const MaterialParams& material,
 
   const std::size_t n = m.hexes.size();
   m.reference_volume.resize(n);
-  if (rubber) m.reference_gradient.resize(24 * n);
+  if (rubber) m.reference_gradient.resize(Impl::kReferenceModes * n);
   for (std::size_t e = 0; e < n; ++e) {
     Hex8Coords x;
     for (int a = 0; a < 8; ++a) {
@@ -393,8 +448,12 @@ SolidBlock::SolidBlock(std::int64_t part_id, const MaterialParams& material,
       x.y[a] = reference.y[node];
       x.z[a] = reference.z[node];
     }
-    Hex8Gradient g;
-    hex8_gradient(x, g);
+    Hex8Modes c;
+    hex8_to_modes(x.x, c.x);
+    hex8_to_modes(x.y, c.y);
+    hex8_to_modes(x.z, c.z);
+    Hex8ModalGradient g;
+    hex8_modal_gradient(c, g);
     if (!(g.volume > 0.0)) {
       throw InputError(m.element_name(e) +
                        ": volume <= 0 in the initial configuration; expected nodes 1-4 "
@@ -402,11 +461,11 @@ SolidBlock::SolidBlock(std::int64_t part_id, const MaterialParams& material,
     }
     m.reference_volume[e] = g.volume;
     if (rubber) {
-      double* b0 = &m.reference_gradient[24 * e];
-      for (int a = 0; a < 8; ++a) {
-        b0[a] = g.bx[a] / g.volume;
-        b0[8 + a] = g.by[a] / g.volume;
-        b0[16 + a] = g.bz[a] / g.volume;
+      double* r0 = &m.reference_gradient[Impl::kReferenceModes * e];
+      for (int k = 1; k < 7; ++k) {
+        r0[k - 1] = 8.0 * g.gx[k] / g.volume;
+        r0[6 + k - 1] = 8.0 * g.gy[k] / g.volume;
+        r0[12 + k - 1] = 8.0 * g.gz[k] / g.volume;
       }
     }
   }

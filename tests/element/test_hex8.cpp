@@ -3,7 +3,9 @@
 // coordinate; Hughes, The Finite Element Method, 2000, §3.8).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include "abut/element/hex8.hpp"
 #include "element_fixtures.hpp"
@@ -122,6 +124,67 @@ TEST(Hex8, MeanGradientIsExactForLinearFieldsAndGammaIsOrthogonalToThem) {
       EXPECT_NEAR(linear, 0.0, 1e-15);
     }
   }
+}
+
+// The nodal values of phi_k (the tables kHex8Xi, ..., kHex8Hourglass) are the unit mode k, and
+// from_modes inverts to_modes.
+TEST(Hex8, WalshTransformsMapTheBaseFunctionsToUnitModesAndBack) {
+  const std::array<double, 8> phi[8] = {
+      {1, 1, 1, 1, 1, 1, 1, 1}, kHex8Xi,           kHex8Eta,          kHex8Zeta,
+      kHex8Hourglass[0],        kHex8Hourglass[1], kHex8Hourglass[2], kHex8Hourglass[3]};
+  for (int k = 0; k < 8; ++k) {
+    double modes[8], back[8];
+    hex8_to_modes(phi[k].data(), modes);
+    for (int l = 0; l < 8; ++l) EXPECT_EQ(modes[l], l == k ? 1.0 : 0.0) << k << " " << l;
+    hex8_from_modes(modes, back);
+    for (int a = 0; a < 8; ++a) EXPECT_EQ(back[a], phi[k][a]);
+  }
+  const double u[8] = {0.3, -1.7, 2.5, 0.01, -0.4, 1.1, 7.0, -3.3};
+  double modes[8], back[8];
+  hex8_to_modes(u, modes);
+  hex8_from_modes(modes, back);
+  for (int a = 0; a < 8; ++a) EXPECT_NEAR(back[a], u[a], 1e-15 * 8.0);
+}
+
+// The modal identities the element relies on, checked with b_a from Gauss quadrature:
+// sum_a u_a (x) b_a = 8 sum_k u_k (x) G_k and sum_a b_a . b_a = 8 sum_k G_k . G_k.
+TEST(Hex8, ModalGradientGivesTheNodalSumsOfTheQuadratureGradient) {
+  std::vector<Hex8> hexes;
+  const Nodes nodes = test::distorted_hex(hexes);
+  const Hex8Coords x = coords(nodes, hexes[0]);
+  const Quadrature q = gauss_2x2x2(x);
+  Hex8Modes c;
+  hex8_to_modes(x.x, c.x);
+  hex8_to_modes(x.y, c.y);
+  hex8_to_modes(x.z, c.z);
+  Hex8ModalGradient g;
+  hex8_modal_gradient(c, g);
+  EXPECT_NEAR(g.volume, q.volume, 1e-13 * q.volume);
+  // A non-linear nodal field u.
+  const double u[3][8] = {{0.3, -1.7, 2.5, 0.01, -0.4, 1.1, 7.0, -3.3},
+                          {1.0, 2.0, -0.5, 0.25, 3.0, -2.0, 0.7, 0.9},
+                          {-0.6, 0.8, 1.9, -2.2, 0.05, 0.4, -1.0, 2.6}};
+  double um[3][8];
+  for (int i = 0; i < 3; ++i) hex8_to_modes(u[i], um[i]);
+  const double* gs[3] = {g.gx, g.gy, g.gz};
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      double nodal = 0.0, modal = 0.0;
+      for (int a = 0; a < 8; ++a) nodal += u[i][a] * q.b[a][j];
+      for (int k = 0; k < 8; ++k) modal += 8.0 * um[i][k] * gs[j][k];
+      EXPECT_NEAR(modal, nodal, 1e-13 * 10.0) << i << " " << j;
+    }
+  }
+  double bb_nodal = 0.0, bb_modal = 0.0;
+  for (int a = 0; a < 8; ++a) {
+    bb_nodal += q.b[a][0] * q.b[a][0] + q.b[a][1] * q.b[a][1] + q.b[a][2] * q.b[a][2];
+  }
+  for (int k = 0; k < 8; ++k) {
+    bb_modal += 8.0 * (g.gx[k] * g.gx[k] + g.gy[k] * g.gy[k] + g.gz[k] * g.gz[k]);
+  }
+  EXPECT_NEAR(bb_modal, bb_nodal, 1e-13 * bb_nodal);
+  EXPECT_EQ(g.gx[0], 0.0);  // translation and the xi eta zeta mode do not change V
+  EXPECT_EQ(g.gx[7], 0.0);
 }
 
 // For a brick a x b x c the largest face is b*c (a <= b <= c), so L = V / (b c) = a.

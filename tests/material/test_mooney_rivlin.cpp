@@ -1,10 +1,14 @@
-// Mooney-Rivlin material point: spectral IMPETUS form against the invariant form of the same
-// potential, and the viscous exponential-integrator factors.
+// Mooney-Rivlin material point: the invariant-form evaluation against the IMPETUS spectral
+// definition, and the viscous exponential-integrator factors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 
 #include "abut/material/mooney_rivlin.hpp"
+#include "abut/material/sym_tensor.hpp"
 
 namespace abut {
 namespace {
@@ -14,31 +18,38 @@ double determinant(const Mat3& f) {
          f[2] * (f[3] * f[7] - f[4] * f[6]);
 }
 
-// Holzapfel, Nonlinear Solid Mechanics (2000), eqs. 6.103 and 6.146 for
-// W = C1 (I1_bar - 3) + C2 (I2_bar - 3) + K/2 (J - 1)^2:
-//   sigma = (2/J) dev[(C1 + C2 I1_bar) b_bar - C2 b_bar^2] + K (J - 1) I.
-Sym3 invariant_form(const MooneyRivlinParams& p, const Mat3& f) {
+// The IMPETUS definition itself (impetus-keywords.md §4, mooney_rivlin.hpp): principal values
+//   tau_1 = (2 C1/3)(2 l1 - l2 - l3) - (2 C2/3)(2/l1 - 1/l2 - 1/l3)   (cyclic)
+// on the eigenvalues l_i and eigenvectors n_i of b_bar = J^(-2/3) F F^T (Jacobi, sym_tensor.hpp,
+// tested in test_sym_tensor.cpp), sigma = (1/J) sum_i tau_i n_i (x) n_i + K (J - 1) I.
+Sym3 impetus_spectral_form(const MooneyRivlinParams& p, const Mat3& f) {
   const double j = determinant(f);
-  double b[3][3];
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c)
-      b[r][c] = std::pow(j, -2.0 / 3.0) *
-                (f[3 * r] * f[3 * c] + f[3 * r + 1] * f[3 * c + 1] + f[3 * r + 2] * f[3 * c + 2]);
-  const double i1 = b[0][0] + b[1][1] + b[2][2];
-  double t[3][3];
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) {
-      double b2 = 0.0;
-      for (int k = 0; k < 3; ++k) b2 += b[r][k] * b[k][c];
-      t[r][c] = (p.c1 + p.c2 * i1) * b[r][c] - p.c2 * b2;
-    }
-  const double mean = (t[0][0] + t[1][1] + t[2][2]) / 3.0;
-  const double vol = p.bulk * (j - 1.0);
-  return {{2 / j * (t[0][0] - mean) + vol, 2 / j * (t[1][1] - mean) + vol,
-           2 / j * (t[2][2] - mean) + vol, 2 / j * t[0][1], 2 / j * t[1][2], 2 / j * t[2][0]}};
+  const double iso = std::pow(j, -2.0 / 3.0);
+  const auto row_dot = [&](int r, int c) {
+    return iso * (f[3 * r] * f[3 * c] + f[3 * r + 1] * f[3 * c + 1] + f[3 * r + 2] * f[3 * c + 2]);
+  };
+  const SymEigen e = eigen_symmetric(
+      {{row_dot(0, 0), row_dot(1, 1), row_dot(2, 2), row_dot(0, 1), row_dot(1, 2), row_dot(2, 0)}});
+  std::array<double, 3> tau{};
+  for (int i = 0; i < 3; ++i) {
+    const double l1 = e.values[i], l2 = e.values[(i + 1) % 3], l3 = e.values[(i + 2) % 3];
+    tau[i] = (2 * p.c1 / 3 * (2 * l1 - l2 - l3) - 2 * p.c2 / 3 * (2 / l1 - 1 / l2 - 1 / l3)) / j;
+  }
+  Sym3 s = from_spectral(tau, e.vectors);
+  for (int c = 0; c < 3; ++c) s[c] += p.bulk * (j - 1.0);
+  return s;
 }
 
-TEST(MooneyRivlin, SpectralFormEqualsInvariantFormOfTheSamePotential) {
+// Largest stress component, the scale for round-off.
+double magnitude(const Sym3& s) {
+  double m = 0.0;
+  for (int c = 0; c < 6; ++c) m = std::max(m, std::abs(s[c]));
+  return m;
+}
+
+// mooney_rivlin_stress evaluates the invariant form of the same potential (Holzapfel 2000,
+// eqs. 6.103 and 6.146); it must reproduce the IMPETUS spectral definition to round-off.
+TEST(MooneyRivlin, InvariantFormEqualsTheImpetusSpectralForm) {
   const MooneyRivlinParams p{1100.0, 2.0e7, 4.0e5, 1.5e5, {}, {}};
   const Mat3 cases[] = {
       {1.5, 0, 0, 0, 0.85, 0, 0, 0, 0.8},                 // stretch
@@ -48,12 +59,39 @@ TEST(MooneyRivlin, SpectralFormEqualsInvariantFormOfTheSamePotential) {
   };
   for (const Mat3& f : cases) {
     const Sym3 s = mooney_rivlin_stress(p, f);
-    const Sym3 ref = invariant_form(p, f);
-    for (int c = 0; c < 6; ++c) EXPECT_NEAR(s[c], ref[c], 1e-9 * p.c1);
+    const Sym3 ref = impetus_spectral_form(p, f);
+    for (int c = 0; c < 6; ++c) EXPECT_NEAR(s[c], ref[c], 1e-13 * magnitude(ref));
   }
   // Undeformed: no stress.
   const Sym3 zero = mooney_rivlin_stress(p, {1, 0, 0, 0, 1, 0, 0, 0, 1});
   for (int c = 0; c < 6; ++c) EXPECT_NEAR(zero[c], 0.0, 1e-9);
+}
+
+// The same on 1000 pseudo-random deformation gradients F = I + A, |A_ij| <= 0.6, det F >= 0.2,
+// with C2 of both signs and without the volumetric term (K = 0), so that the isochoric part is
+// compared on its own scale.
+TEST(MooneyRivlin, InvariantFormEqualsTheSpectralFormOnRandomDeformations) {
+  std::uint32_t seed = 2024u;
+  const auto uniform = [&]() {  // deterministic LCG in [-1, 1]
+    seed = seed * 1664525u + 1013904223u;
+    return (static_cast<double>(seed >> 8) / static_cast<double>(1u << 24)) * 2.0 - 1.0;
+  };
+  const MooneyRivlinParams params[] = {{1100.0, 0.0, 4.0e5, 1.5e5, {}, {}},
+                                       {1100.0, 0.0, 1.0e6, -2.0e5, {}, {}},
+                                       {1100.0, 3.0e9, 1.0e6, 0.0, {}, {}}};
+  int checked = 0;
+  while (checked < 1000) {
+    Mat3 f;
+    for (int i = 0; i < 9; ++i) f[i] = (i % 4 == 0 ? 1.0 : 0.0) + 0.6 * uniform();
+    if (determinant(f) < 0.2) continue;
+    const MooneyRivlinParams& p = params[checked % 3];
+    const Sym3 s = mooney_rivlin_stress(p, f);
+    const Sym3 ref = impetus_spectral_form(p, f);
+    for (int c = 0; c < 6; ++c) {
+      ASSERT_NEAR(s[c], ref[c], 1e-13 * magnitude(ref)) << "case " << checked << " component " << c;
+    }
+    ++checked;
+  }
 }
 
 // h(t) for constant rate r: 2 alpha r (1 - exp(-t/beta)); one step of the recursion reproduces

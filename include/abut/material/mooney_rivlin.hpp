@@ -13,6 +13,12 @@
 // values are the tau_i above), so the model conserves energy. Near incompressibility (J ~ 1) it
 // coincides with the IMPETUS expression read as a Cauchy stress.
 //
+// Evaluation: mooney_rivlin_stress uses that invariant form, sigma_e = (2/J) dev[(C1 + C2 I1_bar)
+// b_bar - C2 b_bar^2] + K (J - 1) I, which needs no eigenvectors. Its principal values are the
+// tau_i / J above: with det b_bar = l1 l2 l3 = 1, (C1 + C2 I1_bar) l1 - C2 l1^2 = C1 l1 +
+// C2 (1/l2 + 1/l3), whose deviator is tau_1 / 2. test_mooney_rivlin.cpp checks it against the
+// spectral definition to round-off.
+//
 // Viscous part: sigma_v = sum_k h_k with, for alpha_k > 0,
 //   h_k(t) = (2 alpha_k / beta_k) int_0^t dev(D)(tau) exp((tau - t)/beta_k) dtau,
 // updated over a step with constant D by the exact recursion
@@ -27,7 +33,7 @@
 
 namespace abut {
 
-// Elastic Cauchy stress of the deformation gradient F (spectral form above).
+// Elastic Cauchy stress of the deformation gradient F (invariant evaluation above).
 Sym3 mooney_rivlin_stress(const MooneyRivlinParams& p, const Mat3& deformation_gradient);
 
 // The active viscous terms and their exponential-integrator factors for one step of length dt,
