@@ -21,6 +21,16 @@ double largest_eigenvalue(double a00, double a11, double a22, double a01, double
   return q + 2.0 * p * std::cos(std::acos(r) / 3.0);
 }
 
+// G = sum_a b_a b_a^T given by its six components.
+double critical_length(double gxx, double gyy, double gzz, double gxy, double gyz, double gxz,
+                       double volume, double lambda, double mu) {
+  const double trace = gxx + gyy + gzz;
+  const double largest = largest_eigenvalue(gxx, gyy, gzz, gxy, gyz, gxz);
+  // A negative lambda (nu < 0) only lowers lambda (tr eps)^2: leave it out, conservatively.
+  const double stiffness = std::max(lambda, 0.0) * trace + 2.0 * mu * largest;
+  return volume * std::sqrt((lambda + 2.0 * mu) / (2.0 * stiffness));
+}
+
 }  // namespace
 
 double hex8_critical_length(const Hex8Gradient& g, double lambda, double mu) {
@@ -33,11 +43,20 @@ double hex8_critical_length(const Hex8Gradient& g, double lambda, double mu) {
     gyz += g.by[a] * g.bz[a];
     gxz += g.bx[a] * g.bz[a];
   }
-  const double trace = gxx + gyy + gzz;
-  const double largest = largest_eigenvalue(gxx, gyy, gzz, gxy, gyz, gxz);
-  // A negative lambda (nu < 0) only lowers lambda (tr eps)^2: leave it out, conservatively.
-  const double stiffness = std::max(lambda, 0.0) * trace + 2.0 * mu * largest;
-  return g.volume * std::sqrt((lambda + 2.0 * mu) / (2.0 * stiffness));
+  return critical_length(gxx, gyy, gzz, gxy, gyz, gxz, g.volume, lambda, mu);
+}
+
+double hex8_critical_length(const Hex8ModalGradient& g, double lambda, double mu) {
+  double gxx = 0, gyy = 0, gzz = 0, gxy = 0, gyz = 0, gxz = 0;
+  for (int k = 1; k < 7; ++k) {
+    gxx += g.gx[k] * g.gx[k];
+    gyy += g.gy[k] * g.gy[k];
+    gzz += g.gz[k] * g.gz[k];
+    gxy += g.gx[k] * g.gy[k];
+    gyz += g.gy[k] * g.gz[k];
+    gxz += g.gx[k] * g.gz[k];
+  }
+  return critical_length(8 * gxx, 8 * gyy, 8 * gzz, 8 * gxy, 8 * gyz, 8 * gxz, g.volume, lambda, mu);
 }
 
 }  // namespace abut

@@ -1,5 +1,7 @@
 #include "abut/solver/simulation.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -17,6 +19,9 @@
 namespace abut {
 
 namespace {
+
+// A run whose step falls below this fraction of its initial step stops (unless *TIME dt_min is set).
+constexpr double kStepCollapse = 1e-3;
 
 // Where one element's force on one node sits: block and offset into its element_forces().
 struct ForceSlot {
@@ -89,6 +94,7 @@ struct Simulation::Impl {
                               const std::vector<double>& ox, const std::vector<double>& oy,
                               const std::vector<double>& oz, double dt_avg);
   void apply_rigid_boundaries(double dt_avg);
+  std::string limit_description() const;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -295,9 +301,16 @@ void Simulation::Impl::compute_forces(double dt) {
 void Simulation::Impl::kick() {
   const double remaining = model.time.end_time - t;
   dt_next = std::min({model.time.step_scale * stable, model.time.max_step, remaining});
-  if (model.time.step_scale * stable < model.time.min_step)
-    throw InstabilityError("the stable time step " + std::to_string(model.time.step_scale * stable) +
-                           " fell below dt_min = " + std::to_string(model.time.min_step) + " of *TIME");
+  const double scaled = model.time.step_scale * stable;
+  if (scaled < model.time.min_step)
+    throw InstabilityError(fmt::format("the stable time step {:.4g} fell below dt_min = {:.4g} of *TIME (limited by {})",
+                                       scaled, model.time.min_step, limit_description()));
+  // Without dt_min a collapsing step would let the run crawl on forever (an element crushed
+  // flat shortens its own step in proportion): stop it, and say what limits the step.
+  if (model.time.min_step <= 0.0 && n > 0 && scaled < kStepCollapse * dt_initial)
+    throw InstabilityError(fmt::format("the stable time step collapsed to {:.4g}, below {} of the initial {:.4g} "
+                                       "(limited by {}); set dt_min of *TIME to choose this limit yourself",
+                                       scaled, kStepCollapse, dt_initial, limit_description()));
   // At the end time (dt^{n+1/2} = 0) the kick still uses a notional step dt^{n-1/2}: nothing
   // moves with it, but v^n and the kinetic energy at t^n are then defined as at every other t^n.
   const double dt_kick = dt_next > 0.0 ? dt_next : dt_prev;
@@ -516,11 +529,13 @@ double Simulation::end_time() const { return impl_->model.time.end_time; }
 std::int64_t Simulation::cycle() const { return impl_->n; }
 double Simulation::time_step() const { return impl_->dt_next; }
 double Simulation::initial_time_step() const { return impl_->dt_initial; }
-std::string Simulation::time_step_limit() const {
-  if (impl_->limiting_contact >= 0) return "contact " + std::to_string(impl_->limiting_contact) + " springs";
-  if (impl_->limiting_block < 0) return "dt_max of *TIME";
-  return "elements of part " + std::to_string(impl_->blocks[impl_->limiting_block].part_id());
+std::string Simulation::Impl::limit_description() const {
+  if (limiting_contact >= 0) return "contact " + std::to_string(limiting_contact) + " springs";
+  if (limiting_block < 0) return "dt_max of *TIME";
+  return "elements of part " + std::to_string(blocks[limiting_block].part_id());
 }
+
+std::string Simulation::time_step_limit() const { return impl_->limit_description(); }
 const Model& Simulation::model() const { return impl_->model; }
 std::size_t Simulation::node_count() const { return impl_->n_nodes; }
 const std::vector<double>& Simulation::x() const { return impl_->x; }
