@@ -254,7 +254,7 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
     }
     now = mooney_rivlin_stress(*law.params, f);
     const Sym3 dev_increment = deviator(strain_increment);
-    double* history = &viscous[6 * static_cast<std::size_t>(viscous_terms) * e];
+    double* history = viscous.data() + 6 * static_cast<std::size_t>(viscous_terms) * e;  // may be empty
     for (int k = 0; k < viscous_terms; ++k) {
       double* hk = history + 6 * k;
       Sym3 h{{hk[0], hk[1], hk[2], hk[3], hk[4], hk[5]}};
