@@ -19,6 +19,7 @@
 #include <string>
 
 #include "run_to.hpp"
+#include "test_contact_one_thread.hpp"
 
 namespace abut {
 namespace {
@@ -34,11 +35,15 @@ SI
 *TIME
 1.2e-4
 *COMPONENT_BOX
-1, 1, )" + count + R"(, 1, 1
--0.20005, 0.0, 0.0, -0.00005, )" + side + ", " + side + R"(
+1, 1, )" +
+         count + R"(, 1, 1
+-0.20005, 0.0, 0.0, -0.00005, )" +
+         side + ", " + side + R"(
 *COMPONENT_BOX
-2, 2, )" + count + R"(, 1, 1
-0.00005, 0.0, 0.0, 0.20005, )" + side + ", " + side + R"(
+2, 2, )" +
+         count + R"(, 1, 1
+0.00005, 0.0, 0.0, 0.20005, )" +
+         side + ", " + side + R"(
 *MAT_ELASTIC
 1, 7800.0, 210.0e9, 0.0
 *PART
@@ -53,7 +58,8 @@ P, 2, -10.0, 0.0, 0.0
 *CONTACT
 "bar ends"
 1
-P, 1, P, 2, 0.0, )" + std::to_string(kE * n / kL) + R"(
+P, 1, P, 2, 0.0, )" +
+         std::to_string(kE * n / kL) + R"(
 *END
 )";
 }
@@ -87,15 +93,16 @@ Impact collide(int n, double b) {
 }
 
 TEST(ContactBars, ContactLastsTwoLOverCAndTheVelocitiesSwap) {
+  const verification::OneThread one_thread;
   const Impact r = collide(200, 0.001);  // cubic 1 mm elements
   const double c = std::sqrt(kE / kRho);
   const double expected = 2.0 * kL / c;
   const double duration = r.end - r.begin;
   std::cout << "contact duration " << duration << " s, 2L/c = " << expected << " s, error "
             << 100.0 * (duration - expected) / expected << "%\n"
-            << "velocities after: left " << r.v_left << " m/s, right " << r.v_right << " m/s (before: +"
-            << kV << ", -" << kV << "), errors " << 100.0 * (r.v_left + kV) / kV << "%, "
-            << 100.0 * (kV - r.v_right) / kV << "%\n";
+            << "velocities after: left " << r.v_left << " m/s, right " << r.v_right
+            << " m/s (before: +" << kV << ", -" << kV << "), errors "
+            << 100.0 * (r.v_left + kV) / kV << "%, " << 100.0 * (kV - r.v_right) / kV << "%\n";
   EXPECT_EQ(r.periods, 1);  // one uninterrupted contact
   ASSERT_GT(r.begin, 0.0);
   ASSERT_GT(r.end, r.begin);
@@ -110,11 +117,13 @@ TEST(ContactBars, ContactLastsTwoLOverCAndTheVelocitiesSwap) {
 // ends meet (after gap / 2v = 5 us) and last 2L/c. (The velocity deficit is larger here: the
 // bulk viscosity's length scale is the cube root of the element volume, 3.1 mm.)
 TEST(ContactBars, SlenderElementsTouchOnlyWhenTheEndsMeet) {
+  const verification::OneThread one_thread;
   const Impact r = collide(160, 0.005);
   const double c = std::sqrt(kE / kRho);
   const double expected = 2.0 * kL / c;
   std::cout << "slender elements: contact from " << r.begin << " s (ends meet at 5e-06 s) for "
-            << r.end - r.begin << " s, error " << 100.0 * (r.end - r.begin - expected) / expected << "%\n";
+            << r.end - r.begin << " s, error " << 100.0 * (r.end - r.begin - expected) / expected
+            << "%\n";
   EXPECT_EQ(r.periods, 1);
   EXPECT_NEAR(r.begin, 5e-6, 2e-7);
   EXPECT_NEAR(r.end - r.begin, expected, 0.02 * expected);

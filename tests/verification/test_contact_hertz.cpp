@@ -44,6 +44,7 @@
 #include "abut/contact/penalty.hpp"
 #include "abut/mesh/generators.hpp"
 #include "run_to.hpp"
+#include "test_contact_one_thread.hpp"
 
 namespace abut {
 namespace {
@@ -75,8 +76,9 @@ std::string quarter_sphere_deck_lines(double& automatic_pfac) {
     Vec3 centre;
     for (auto n : hex) centre += mesh.nodes.position(n) / 8.0;
     if (centre.x < 0.0 || centre.y < 0.0) continue;
-    std::snprintf(line, sizeof line, "%d, 1, %d, %d, %d, %d, %d, %d, %d, %d\n", ++eid, hex[0] + 1, hex[1] + 1,
-                  hex[2] + 1, hex[3] + 1, hex[4] + 1, hex[5] + 1, hex[6] + 1, hex[7] + 1);
+    std::snprintf(line, sizeof line, "%d, 1, %d, %d, %d, %d, %d, %d, %d, %d\n", ++eid, hex[0] + 1,
+                  hex[1] + 1, hex[2] + 1, hex[3] + 1, hex[4] + 1, hex[5] + 1, hex[6] + 1,
+                  hex[7] + 1);
     elements += line;
     for (auto n : hex) used[n] = 1;
   }
@@ -85,8 +87,8 @@ std::string quarter_sphere_deck_lines(double& automatic_pfac) {
     if (!used[i]) continue;
     const bool on_x = std::abs(mesh.nodes.x[i]) < tol, on_y = std::abs(mesh.nodes.y[i]) < tol;
     const char* bc = on_x ? (on_y ? "XY" : "X") : (on_y ? "Y" : "0");
-    std::snprintf(line, sizeof line, "%zu, %.17g, %.17g, %.17g, %s\n", i + 1, on_x ? 0.0 : mesh.nodes.x[i],
-                  on_y ? 0.0 : mesh.nodes.y[i], mesh.nodes.z[i], bc);
+    std::snprintf(line, sizeof line, "%zu, %.17g, %.17g, %.17g, %s\n", i + 1,
+                  on_x ? 0.0 : mesh.nodes.x[i], on_y ? 0.0 : mesh.nodes.y[i], mesh.nodes.z[i], bc);
     nodes += line;
   }
   return nodes + elements;
@@ -101,7 +103,8 @@ std::string hertz_deck(double& pfac) {
 SI
 *TIME
 3.0e-5
-)" + mesh + R"(
+)" + mesh +
+         R"(
 *COMPONENT_BOX
 2, 2, 8, 8, 1
 0.0, 0.0, -0.004, 0.008, 0.008, 0.0
@@ -121,13 +124,15 @@ P, 2, XYZ, XYZ
 *CONTACT
 "sphere on wall"
 1
-P, 1, P, 2, 0.0, )" + pfac_text + R"(
+P, 1, P, 2, 0.0, )" +
+         pfac_text + R"(
 0, 0.0
 *END
 )";
 }
 
 TEST(ContactHertz, ContactTimeAndReboundOfASphereOnARigidWall) {
+  const verification::OneThread one_thread;
   double pfac = 0.0;
   const Model model = read_deck_string(hertz_deck(pfac), "hertz.k");
   Simulation sim(model);
@@ -141,7 +146,8 @@ TEST(ContactHertz, ContactTimeAndReboundOfASphereOnARigidWall) {
   while (!sim.finished()) {
     sim.advance();
     const double t = sim.time(), z = sim.part_states()[0].centre_of_mass.z;
-    if (down < 0.0 && z < z_touch) down = t_previous + (t - t_previous) * (z_previous - z_touch) / (z_previous - z);
+    if (down < 0.0 && z < z_touch)
+      down = t_previous + (t - t_previous) * (z_previous - z_touch) / (z_previous - z);
     if (down > 0.0 && z >= z_touch && z_previous < z_touch)
       up = t_previous + (t - t_previous) * (z_touch - z_previous) / (z - z_previous);
     const bool active = sim.contact_reports()[0].stats.active_points > 0;
@@ -164,8 +170,9 @@ TEST(ContactHertz, ContactTimeAndReboundOfASphereOnARigidWall) {
   std::cout << "pfac " << pfac << " Pa/m; contact time (centre of mass below first touch) " << t_c
             << " s, Hertz " << expected << " s, error " << 100.0 * (t_c - expected) / expected
             << "%; span of non-zero contact force " << force_span << " s, error "
-            << 100.0 * (force_span - expected) / expected << "%; rebound " << rebound << " m/s = "
-            << 100.0 * rebound / kV << "% of the impact speed; " << sim.cycle() << " cycles\n";
+            << 100.0 * (force_span - expected) / expected << "%; rebound " << rebound
+            << " m/s = " << 100.0 * rebound / kV << "% of the impact speed; " << sim.cycle()
+            << " cycles\n";
   EXPECT_NEAR(t_c, expected, 0.05 * expected);
   EXPECT_NEAR(force_span, expected, 0.05 * expected);
   EXPECT_GT(rebound, 0.95 * kV);

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "run_to.hpp"
+#include "test_contact_one_thread.hpp"
 
 namespace abut {
 namespace {
@@ -42,12 +43,14 @@ P, 2, XYZ, XYZ
 *CONTACT
 1
 P, 1, P, 2, 0.0, 1.0e10
-0, 0.1, , , )" + offset + R"(
+0, 0.1, , , )" +
+         offset + R"(
 *END
 )";
 }
 
 TEST(ContactInitialOffset, NoForceAtTimeZeroForAnInitialPenetration) {
+  const verification::OneThread one_thread;
   const Model model = read_deck_string(sunk_block_deck("0.0002"), "offset.k");
   Simulation sim(model);
   const ContactStats at_start = sim.contact_reports().at(0).stats;
@@ -57,8 +60,9 @@ TEST(ContactInitialOffset, NoForceAtTimeZeroForAnInitialPenetration) {
     largest_force = std::max(largest_force, std::abs(sim.contact_reports()[0].stats.force.z));
   }
   const double speed = norm(sim.part_states()[0].velocity);
-  std::cout << "delta0_offset 0.2 mm: force at t = 0 " << at_start.force.z << " N, largest over 100 cycles "
-            << largest_force << " N, block speed after them " << speed << " m/s\n";
+  std::cout << "delta0_offset 0.2 mm: force at t = 0 " << at_start.force.z
+            << " N, largest over 100 cycles " << largest_force << " N, block speed after them "
+            << speed << " m/s\n";
   EXPECT_EQ(at_start.force.z, 0.0);
   EXPECT_EQ(at_start.normal_force, 0.0);
   EXPECT_EQ(largest_force, 0.0);
@@ -66,12 +70,14 @@ TEST(ContactInitialOffset, NoForceAtTimeZeroForAnInitialPenetration) {
 }
 
 TEST(ContactInitialOffset, WithoutOffsetTheInitialPenetrationPushesAtOnce) {
+  const verification::OneThread one_thread;
   const Model model = read_deck_string(sunk_block_deck(""), "no_offset.k");
   Simulation sim(model);
   const ContactReport report = sim.contact_reports().at(0);
   const double expected = kPfac * kArea * kD0;
-  std::cout << "delta0_offset 0: force at t = 0 " << report.stats.force.z << " N, pfac A d0 = " << expected
-            << " N, relative error " << (report.stats.force.z - expected) / expected << "\n";
+  std::cout << "delta0_offset 0: force at t = 0 " << report.stats.force.z
+            << " N, pfac A d0 = " << expected << " N, relative error "
+            << (report.stats.force.z - expected) / expected << "\n";
   EXPECT_EQ(report.released_points, 0u);
   EXPECT_NEAR(report.stats.force.z, expected, 1e-6 * expected);  // pushes surface 1 (the block) up
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "run_to.hpp"
+#include "test_contact_one_thread.hpp"
 
 namespace abut {
 namespace {
@@ -55,27 +56,31 @@ PS, 1, P, 3, 0.0, 1.0e9
 )";
 
 TEST(ContactInitialRegion, FacesOutsideGidZeroNeverContact) {
+  const verification::OneThread one_thread;
   const Model model = read_deck_string(kDeck, "gid0.k");
   Simulation sim(model);
   std::vector<int> outside_nodes;  // the nodes of block 2 (part 2)
   for (std::size_t e = 0; e < model.mesh.hex_count(); ++e)
-    if (model.mesh.hex_part[e] == 2) outside_nodes.insert(outside_nodes.end(), model.mesh.hexes[e].begin(), model.mesh.hexes[e].end());
+    if (model.mesh.hex_part[e] == 2)
+      outside_nodes.insert(outside_nodes.end(), model.mesh.hexes[e].begin(),
+                           model.mesh.hexes[e].end());
   double largest_force_outside = 0.0, lowest_z2 = 1.0;
   std::vector<double> force, pressure, wear;
   verification::run_to(sim, sim.end_time(), [&](const Simulation& s) {
     s.contact_fields(force, pressure, wear);
     for (int i : outside_nodes)
-      largest_force_outside = std::max(
-          {largest_force_outside, std::abs(force[3 * i]), std::abs(force[3 * i + 1]), std::abs(force[3 * i + 2])});
+      largest_force_outside = std::max({largest_force_outside, std::abs(force[3 * i]),
+                                        std::abs(force[3 * i + 1]), std::abs(force[3 * i + 2])});
     lowest_z2 = std::min(lowest_z2, s.part_states()[1].centre_of_mass.z);
   });
   const auto parts = sim.part_states();
-  std::cout << "block inside gid_0: v_z " << parts[0].velocity.z << " m/s after the impact; block outside: v_z "
-            << parts[1].velocity.z << " m/s, centre down to z = " << lowest_z2
-            << " m, largest contact force on its nodes " << largest_force_outside << " N\n";
+  std::cout << "block inside gid_0: v_z " << parts[0].velocity.z
+            << " m/s after the impact; block outside: v_z " << parts[1].velocity.z
+            << " m/s, centre down to z = " << lowest_z2 << " m, largest contact force on its nodes "
+            << largest_force_outside << " N\n";
   EXPECT_GT(parts[0].velocity.z, 0.5);  // bounced
   EXPECT_EQ(parts[1].velocity.z, -1.0);
-  EXPECT_LT(lowest_z2, -0.005);         // its centre went below the plate's surface
+  EXPECT_LT(lowest_z2, -0.005);  // its centre went below the plate's surface
   EXPECT_EQ(largest_force_outside, 0.0);
 }
 

@@ -5,8 +5,8 @@
 //
 // Model: a rigid hexahedron whose bottom face is tilted by 10 degrees about y (surface 1) is
 // driven down at 1 m/s (*BC_MOTION, no rotation) into a flat rigid plate z <= 0 (surface 2):
-// its low edge digs in (by 7 mm at the end). The force on surface 1 must be exactly along z with one_way = 1, and
-// have an x component with symmetric contact, up to tan(10 deg) of f_z.
+// its low edge digs in (by 7 mm at the end). The force on surface 1 must be exactly along z with
+// one_way = 1, and have an x component with symmetric contact, up to tan(10 deg) of f_z.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +14,7 @@
 #include <string>
 
 #include "run_to.hpp"
+#include "test_contact_one_thread.hpp"
 
 namespace abut {
 namespace {
@@ -58,7 +59,8 @@ P, 2, XYZ, XYZ
 1
 P, 1, P, 2, 0.0, 1.0e10
 0, 0.0
-, , , , )" + std::to_string(one_way) + R"(
+, , , , )" +
+         std::to_string(one_way) + R"(
 *END
 )";
 }
@@ -83,12 +85,13 @@ ForceDirection run(int one_way) {
 }
 
 TEST(ContactOneWay, FrictionlessForceIsExactlyNormalToSurfaceTwo) {
+  const verification::OneThread one_thread;
   const ForceDirection one_way = run(1);
   const ForceDirection symmetric = run(0);
   const auto precision = std::cout.precision(9);
   std::cout << "one-way: largest |fx|/fz " << one_way.max_ratio << " (fz up to " << one_way.max_fz
-            << " N); symmetric: largest |fx|/fz " << symmetric.max_ratio << " (fz up to " << symmetric.max_fz
-            << " N), bottom face slope " << kSlope << "\n";
+            << " N); symmetric: largest |fx|/fz " << symmetric.max_ratio << " (fz up to "
+            << symmetric.max_fz << " N), bottom face slope " << kSlope << "\n";
   std::cout.precision(precision);
   EXPECT_GT(one_way.max_fz, 100.0);  // the block did dig in
   EXPECT_TRUE(one_way.exactly_normal);

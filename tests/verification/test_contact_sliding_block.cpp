@@ -20,6 +20,7 @@
 #include <iostream>
 
 #include "run_to.hpp"
+#include "test_contact_one_thread.hpp"
 
 namespace abut {
 namespace {
@@ -64,23 +65,26 @@ P, 1, P, 2, 0.5, 6.2e9
 )";
 
 TEST(ContactSlidingBlock, StopsAfterVSquaredOverTwoMuG) {
+  const verification::OneThread one_thread;
   const Model model = read_deck_string(kDeck, "sliding_block.k");
   Simulation sim(model);
   const double x0 = sim.part_states().at(0).centre_of_mass.x;
   double t_stop = -1.0, t_previous = sim.time(), v_previous = kV0;
   verification::run_to(sim, sim.end_time(), [&](const Simulation& s) {
     const double v = s.part_states()[0].velocity.x;
-    if (t_stop < 0.0 && v <= 0.0) t_stop = t_previous + (s.time() - t_previous) * v_previous / (v_previous - v);
+    if (t_stop < 0.0 && v <= 0.0)
+      t_stop = t_previous + (s.time() - t_previous) * v_previous / (v_previous - v);
     t_previous = s.time();
     v_previous = v;
   });
   const PartState block = sim.part_states()[0];
   const double distance = block.centre_of_mass.x - x0;
   const double expected_distance = kV0 * kV0 / (2.0 * kMu * kG), expected_time = kV0 / (kMu * kG);
-  std::cout << "stopping distance " << distance << " m, v0^2/(2 mu g) = " << expected_distance << " m, error "
-            << 100.0 * (distance - expected_distance) / expected_distance << "%; stopped at " << t_stop
-            << " s, v0/(mu g) = " << expected_time << " s, error "
-            << 100.0 * (t_stop - expected_time) / expected_time << "%; " << sim.cycle() << " cycles\n";
+  std::cout << "stopping distance " << distance << " m, v0^2/(2 mu g) = " << expected_distance
+            << " m, error " << 100.0 * (distance - expected_distance) / expected_distance
+            << "%; stopped at " << t_stop << " s, v0/(mu g) = " << expected_time << " s, error "
+            << 100.0 * (t_stop - expected_time) / expected_time << "%; " << sim.cycle()
+            << " cycles\n";
   EXPECT_NEAR(distance, expected_distance, 0.01 * expected_distance);
   ASSERT_GT(t_stop, 0.0);
   EXPECT_NEAR(t_stop, expected_time, 0.01 * expected_time);

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "run_to.hpp"
+#include "test_contact_one_thread.hpp"
 
 namespace abut {
 namespace {
@@ -49,12 +50,14 @@ P, 2, XYZ, XYZ
 1
 P, 1, P, 2, 0.0, 1.0e10
 0, 0.0
-, , , , 0, 0, )" + sigma_stick + R"(
+, , , , 0, 0, )" +
+         sigma_stick + R"(
 *END
 )";
 }
 
 TEST(ContactSticking, TiedUntilTheTractionExceedsSigmaStick) {
+  const verification::OneThread one_thread;
   const Model model = read_deck_string(lifted_block_deck("1.0e5"), "sticking.k");
   Simulation sim(model);
   const double t_fail = kStick / (kPfac * kV);
@@ -78,8 +81,8 @@ TEST(ContactSticking, TiedUntilTheTractionExceedsSigmaStick) {
   });
   std::cout << "tie: pull = pfac A v t within " << worst_pull << " (relative) over " << tied_cycles
             << " cycles, largest pull " << largest_pull << " N (sigma_stick A = " << kStick * kArea
-            << " N); failed at " << failed_at << " s (sigma_stick / (pfac v) = " << t_fail << " s); cycles with a force after: "
-            << forces_after << "\n";
+            << " N); failed at " << failed_at << " s (sigma_stick / (pfac v) = " << t_fail
+            << " s); cycles with a force after: " << forces_after << "\n";
   EXPECT_GT(tied_cycles, 50);
   EXPECT_LT(worst_pull, 1e-6);
   ASSERT_GT(failed_at, 0.0);
@@ -90,6 +93,7 @@ TEST(ContactSticking, TiedUntilTheTractionExceedsSigmaStick) {
 }
 
 TEST(ContactSticking, WithoutSigmaStickALiftedBlockFeelsNoForce) {
+  const verification::OneThread one_thread;
   const Model model = read_deck_string(lifted_block_deck(""), "no_sticking.k");
   Simulation sim(model);
   int cycles_with_force = 0;

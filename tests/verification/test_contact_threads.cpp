@@ -64,8 +64,9 @@ ContactRun run(int threads, int cycles) {
     r.state.insert(r.state.end(), v->begin(), v->end());
   const Energies e = sim.energies();
   const ContactStats c = sim.contact_reports()[0].stats;
-  r.state.insert(r.state.end(), {e.internal, e.hourglass, e.contact, e.friction, c.force.x, c.force.y, c.force.z,
-                                 c.tangential_force, c.friction_energy, c.damping_energy, c.max_penetration});
+  r.state.insert(r.state.end(),
+                 {e.internal, e.hourglass, e.contact, e.friction, c.force.x, c.force.y, c.force.z,
+                  c.tangential_force, c.friction_energy, c.damping_energy, c.max_penetration});
   r.friction_energy = c.friction_energy;
   return r;
 }
@@ -79,7 +80,8 @@ TEST(ContactThreads, OneAndTwoThreadsGiveBitwiseIdenticalContactRuns) {
   EXPECT_GT(one.friction_energy, 0.0);
   EXPECT_EQ(one.active_cycles, two.active_cycles);
   ASSERT_EQ(one.state.size(), two.state.size());
-  for (std::size_t i = 0; i < one.state.size(); ++i) ASSERT_EQ(one.state[i], two.state[i]) << "entry " << i;
+  for (std::size_t i = 0; i < one.state.size(); ++i)
+    ASSERT_EQ(one.state[i], two.state[i]) << "entry " << i;
 }
 
 }  // namespace

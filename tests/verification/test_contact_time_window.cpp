@@ -11,6 +11,7 @@
 #include <iostream>
 
 #include "run_to.hpp"
+#include "test_contact_one_thread.hpp"
 
 namespace abut {
 namespace {
@@ -49,12 +50,13 @@ P, 1, P, 2, 0.0, 1.0e9, 0.01, 0.03
 )";
 
 TEST(ContactTimeWindow, NoForceBeforeTBeginNorAfterTEnd) {
+  const verification::OneThread one_thread;
   const Model model = read_deck_string(kDeck, "time_window.k");
   Simulation sim(model);
   int forces_outside = 0, active_inside = 0;
-  double worst_free_fall = 0.0;  // |v_z + g t| / (g t) before t_beg
+  double worst_free_fall = 0.0;          // |v_z + g t| / (g t) before t_beg
   double t_after = -1.0, v_after = 0.0;  // first state after t_end
-  double v_at_end = 0.0;                  // last state inside the window
+  double v_at_end = 0.0;                 // last state inside the window
   verification::run_to(sim, sim.end_time(), [&](const Simulation& s) {
     const ContactStats& stats = s.contact_reports()[0].stats;
     const double t = s.time(), vz = s.part_states()[0].velocity.z;
@@ -73,8 +75,9 @@ TEST(ContactTimeWindow, NoForceBeforeTBeginNorAfterTEnd) {
   });
   const double v_end = sim.part_states()[0].velocity.z;
   const double acceleration_after = (v_end - v_after) / (sim.time() - t_after);
-  std::cout << "cycles with contact force outside the window: " << forces_outside << "; active cycles inside: "
-            << active_inside << ", block v_z at t_end " << v_at_end << " m/s; free fall before t_beg: worst relative error of v_z " << worst_free_fall
+  std::cout << "cycles with contact force outside the window: " << forces_outside
+            << "; active cycles inside: " << active_inside << ", block v_z at t_end " << v_at_end
+            << " m/s; free fall before t_beg: worst relative error of v_z " << worst_free_fall
             << "; acceleration after t_end " << acceleration_after << " m/s^2\n";
   EXPECT_EQ(forces_outside, 0);
   EXPECT_GT(active_inside, 0);
