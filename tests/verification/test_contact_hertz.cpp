@@ -16,9 +16,10 @@
 //
 // Penalty: the sphere's own automatic value (seed 000: K / L_min * (1 + (v/100 m/s)^2)), given
 // as pfac because the pair would otherwise take the rigid wall's 1e13 Pa/m-based value, which
-// is too soft for steel at this size. Stiffer penalties shorten the contact by up to 3.5%
-// (10x: -2.6%, 30x: -3.5% with this mesh): the 2x2 integration points per facet then
-// over-constrain the coarse contact patch (about 3 facets across a).
+// is too soft for steel at this size (5.7e14 Pa/m here, about 2.7 E/h with h the surface element
+// size). Stiffer penalties shorten the contact (10 E/h: -2.6%, 30 E/h: -3.5% with this mesh):
+// the 2x2 integration points per facet then over-constrain the coarse contact patch (about
+// 3 facets across a).
 //
 // What is measured: delta = the drop of the centre of mass below its height at first touch
 // (the theory's approach; the centre of mass moves under the contact force alone), so t_c is
