@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -36,6 +38,14 @@ Vec3 velocity_at(const std::array<std::int32_t, 4>& nodes, const std::array<doub
   Vec3 v;
   for (int a = 0; a < 4; ++a) v += Vec3{in.vx[nodes[a]], in.vy[nodes[a]], in.vz[nodes[a]]} * shape[a];
   return v;
+}
+
+// How far beyond a smooth edge, per unit distance from the facet's plane, a point may lie and
+// still belong to the facet: tan(alpha_edge), the widest dead zone of a convex edge whose
+// normals turn by at most alpha_edge. From 90 degrees on every crossing is accepted.
+double smooth_edge_reach(double alpha_edge_degrees) {
+  if (alpha_edge_degrees >= 90.0) return std::numeric_limits<double>::infinity();
+  return std::tan(alpha_edge_degrees * std::numbers::pi / 180.0);
 }
 
 bool share_a_node(const std::array<std::int32_t, 4>& a, const std::array<std::int32_t, 4>& b) {
@@ -96,6 +106,7 @@ ContactInterface::ContactInterface(ContactSettings settings, ContactSurface surf
 void ContactInterface::build_sides(const ContactInput& in) {
   const ContactSettings& s = settings_;
   margin_ = std::numeric_limits<double>::infinity();
+  smooth_reach_ = smooth_edge_reach(s.edge_angle);
   double omega2_max = 0.0;
   // Typical facet size of each side (median of the longest edges), for the subdivision below.
   std::vector<double> typical_size;
@@ -301,9 +312,17 @@ ContactInterface::Hit ContactInterface::closest_facet(const Pass& pass, std::siz
     if (box_distance2 > reach * reach || box_distance2 > best_distance * best_distance) continue;
     const QuadProjection q = project_onto_quad(c, x_p);
     if (dot(n_p, q.normal) >= 0.0) continue;  // the surfaces must face each other
-    // Beyond a sharp (or free) edge only within delta_edge; beyond a smooth edge the
-    // neighbouring facet is closer and wins.
-    if ((q.crossed_edges & target.sharp[f]) != 0 && q.overshoot > edge_tolerance) continue;
+    // Beyond a sharp (or free) edge only within delta_edge. Beyond a smooth edge the
+    // neighbouring facet is normally closer and wins, but not when the neighbour itself is
+    // rejected (the point lies beyond the surface's border, next to a sharp edge of the
+    // neighbour): so a smooth edge is passed only within the dead zone of a convex edge, the
+    // wedge between the two facets' normals, whose width at distance |gap| is at most
+    // |gap| tan(alpha_edge) since the normals turn by at most alpha_edge there.
+    if (q.crossed_edges != 0) {
+      const bool sharp = (q.crossed_edges & target.sharp[f]) != 0;
+      const double allowed = sharp ? edge_tolerance : std::max(edge_tolerance, std::abs(q.gap) * smooth_reach_);
+      if (q.overshoot > allowed) continue;
+    }
     if (q.gap < -target.depth[f]) continue;  // deeper than half the element: the far side
     if (q.distance < best_distance) {
       best_distance = q.distance;

@@ -128,6 +128,7 @@ class ContactInterface {
   std::vector<double> bx_, by_, bz_;         // their positions at the last broad-phase build
   std::vector<double> wear_, pressure_;
   double margin_ = 0.0;
+  double smooth_reach_ = 0.0;  // overshoot beyond a smooth edge per unit |gap|: tan(alpha_edge)
   double initial_stable_step_ = std::numeric_limits<double>::infinity();
   std::size_t builds_ = 0;
   ContactStats stats_;

@@ -1,0 +1,184 @@
+// Elastic sphere hitting a rigid wall: Hertz impact (Johnson, "Contact Mechanics", 1985,
+// section 11.1, eq. 11.24). With the quasi-static Hertz law F = (4/3) E* sqrt(R) delta^(3/2),
+// delta the approach of the sphere's centre of mass towards the wall, and m delta'' = -F, the
+// contact (delta > 0) lasts
+//   t_c = 2.87 (m^2 / (R E*^2 v))^(1/5),   E* = E / (1 - nu^2) against a rigid wall,
+// and the sphere leaves with the impact speed (no loss in the quasi-static limit).
+//
+// Model: steel sphere R = 10 mm at v = 50 m/s (v/c = 0.01: contact radius a = 0.2 R, the
+// quasi-static Hertz regime), one quarter of it by symmetry (planes x = 0 and y = 0 held in
+// their normal direction: the quarter carries a quarter of the mass and of the force, so it
+// moves like the whole sphere; m in t_c is the whole sphere's). The quarter is cut from the
+// mesh of *COMPONENT_SPHERE with N = 16 (surface elements about R/10) and given to the deck as
+// *NODE / *ELEMENT_SOLID. The wall is a *MAT_RIGID box held by *BC_MOTION; its density is
+// large so that its light nodes do not lower the contact's stable step (it does not move).
+// xi = 0: no contact damping.
+//
+// Penalty: the sphere's own automatic value (seed 000: K / L_min * (1 + (v/100 m/s)^2)), given
+// as pfac because the pair would otherwise take the rigid wall's 1e13 Pa/m-based value, which
+// is too soft for steel at this size (5.7e14 Pa/m here, about 2.7 E/h with h the surface element
+// size). Stiffer penalties shorten the contact (10 E/h: -2.6%, 30 E/h: -3.5% with this mesh):
+// the 2x2 integration points per facet then over-constrain the coarse contact patch (about
+// 3 facets across a).
+//
+// What is measured: delta = the drop of the centre of mass below its height at first touch
+// (the theory's approach; the centre of mass moves under the contact force alone), so t_c is
+// the time it spends below that height. The span of non-zero contact force is shorter by the
+// time the sphere needs to cross the first few micrometres: the facets are chords of the
+// sphere and their integration points lie above the pole node. It is printed and held to 5%
+// too.
+//
+// Rebound bound: with xi = 0 the contact spring is conservative, so the sphere cannot leave
+// faster than it came (0.1% allowance for the explicit integration); it leaves slower by the
+// energy left in its vibrations (and taken by the bulk viscosity). For an impact at v/c = 0.01
+// that is a few percent of the kinetic energy at most (the order of Hunter's elastic-wave loss,
+// 1.04 (v/c)^(3/5), J. Mech. Phys. Solids 5, 1957), so the rebound speed is checked to 5%.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "abut/contact/penalty.hpp"
+#include "abut/mesh/generators.hpp"
+#include "run_to.hpp"
+#include "test_contact_one_thread.hpp"
+
+namespace abut {
+namespace {
+
+constexpr double kRho = 7800.0, kE = 210e9, kNu = 0.3, kR = 0.01, kV = 50.0;
+constexpr double kGap = 1e-5;  // initial distance between the sphere and the wall
+constexpr int kDensity = 16;   // *COMPONENT_SPHERE N (even: x = 0 and y = 0 are mesh planes)
+
+// The quarter x >= 0, y >= 0 of the cube-sphere mesh as *NODE and *ELEMENT_SOLID lines; nodes
+// on the planes carry their symmetry constraint in the *NODE bc field. Also returns the
+// sphere's automatic penalty.
+std::string quarter_sphere_deck_lines(double& automatic_pfac) {
+  Mesh mesh;
+  SphereComponent sphere;
+  sphere.part_id = 1;
+  sphere.density = kDensity;
+  sphere.centre = {0.0, 0.0, kR + kGap};
+  sphere.outer_radius = kR;
+  generate_sphere(mesh, sphere);
+  const double bulk = kE / (3.0 * (1.0 - 2.0 * kNu));
+  automatic_pfac = automatic_penalty(bulk, smallest_element_volume(mesh, 1), kV, UnitSystem::SI);
+
+  const double tol = 1e-9 * kR;
+  std::vector<int> used(mesh.nodes.size(), 0);
+  std::string elements = "*ELEMENT_SOLID\n";
+  char line[512];
+  int eid = 0;
+  for (const Hex8& hex : mesh.hexes) {
+    Vec3 centre;
+    for (auto n : hex) centre += mesh.nodes.position(n) / 8.0;
+    if (centre.x < 0.0 || centre.y < 0.0) continue;
+    std::snprintf(line, sizeof line, "%d, 1, %d, %d, %d, %d, %d, %d, %d, %d\n", ++eid, hex[0] + 1,
+                  hex[1] + 1, hex[2] + 1, hex[3] + 1, hex[4] + 1, hex[5] + 1, hex[6] + 1,
+                  hex[7] + 1);
+    elements += line;
+    for (auto n : hex) used[n] = 1;
+  }
+  std::string nodes = "*NODE\n";
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+    if (!used[i]) continue;
+    const bool on_x = std::abs(mesh.nodes.x[i]) < tol, on_y = std::abs(mesh.nodes.y[i]) < tol;
+    const char* bc = on_x ? (on_y ? "XY" : "X") : (on_y ? "Y" : "0");
+    std::snprintf(line, sizeof line, "%zu, %.17g, %.17g, %.17g, %s\n", i + 1,
+                  on_x ? 0.0 : mesh.nodes.x[i], on_y ? 0.0 : mesh.nodes.y[i], mesh.nodes.z[i], bc);
+    nodes += line;
+  }
+  return nodes + elements;
+}
+
+std::string hertz_deck(double& pfac) {
+  const std::string mesh = quarter_sphere_deck_lines(pfac);
+  char pfac_text[64];
+  std::snprintf(pfac_text, sizeof pfac_text, "%.6g", pfac);
+  return R"(
+*UNIT_SYSTEM
+SI
+*TIME
+3.0e-5
+)" + mesh +
+         R"(
+*COMPONENT_BOX
+2, 2, 8, 8, 1
+0.0, 0.0, -0.004, 0.008, 0.008, 0.0
+*MAT_ELASTIC
+1, 7800.0, 210.0e9, 0.3
+*MAT_RIGID
+2, 7.8e7
+*PART
+"sphere"
+1, 1
+"wall"
+2, 2
+*INITIAL_VELOCITY
+P, 1, 0.0, 0.0, -50.0
+*BC_MOTION
+P, 2, XYZ, XYZ
+*CONTACT
+"sphere on wall"
+1
+P, 1, P, 2, 0.0, )" +
+         pfac_text + R"(
+0, 0.0
+*END
+)";
+}
+
+TEST(ContactHertz, ContactTimeAndReboundOfASphereOnARigidWall) {
+  const verification::OneThread one_thread;
+  double pfac = 0.0;
+  const Model model = read_deck_string(hertz_deck(pfac), "hertz.k");
+  Simulation sim(model);
+  // Centre of mass below its height at first touch: crossings interpolated within a step.
+  const double z_touch = sim.part_states().at(0).centre_of_mass.z - kGap;
+  double z_previous = z_touch + kGap, t_previous = sim.time(), down = -1.0, up = -1.0;
+  // Non-zero contact force: from the first touch to the last separation (the first facet to
+  // touch may bounce off and touch again within a few cycles: that chatter lies inside).
+  double first_force = -1.0, last_force = -1.0;
+  bool active_previous = false;
+  while (!sim.finished()) {
+    sim.advance();
+    const double t = sim.time(), z = sim.part_states()[0].centre_of_mass.z;
+    if (down < 0.0 && z < z_touch)
+      down = t_previous + (t - t_previous) * (z_previous - z_touch) / (z_previous - z);
+    if (down > 0.0 && z >= z_touch && z_previous < z_touch)
+      up = t_previous + (t - t_previous) * (z_touch - z_previous) / (z - z_previous);
+    const bool active = sim.contact_reports()[0].stats.active_points > 0;
+    if (active && first_force < 0.0) first_force = 0.5 * (t_previous + t);
+    if (!active && active_previous) last_force = 0.5 * (t_previous + t);
+    active_previous = active;
+    z_previous = z;
+    t_previous = t;
+  }
+  ASSERT_FALSE(active_previous) << "still in contact at the end time";
+  ASSERT_GT(down, 0.0);
+  ASSERT_GT(up, down);
+  ASSERT_GT(last_force, first_force);
+
+  const double e_star = kE / (1.0 - kNu * kNu);
+  const double mass = 4.0 / 3.0 * std::numbers::pi * kR * kR * kR * kRho;
+  const double expected = 2.87 * std::pow(mass * mass / (kR * e_star * e_star * kV), 0.2);
+  const double t_c = up - down, force_span = last_force - first_force;
+  const double rebound = sim.part_states()[0].velocity.z;
+  std::cout << "pfac " << pfac << " Pa/m; contact time (centre of mass below first touch) " << t_c
+            << " s, Hertz " << expected << " s, error " << 100.0 * (t_c - expected) / expected
+            << "%; span of non-zero contact force " << force_span << " s, error "
+            << 100.0 * (force_span - expected) / expected << "%; rebound " << rebound
+            << " m/s = " << 100.0 * rebound / kV << "% of the impact speed; " << sim.cycle()
+            << " cycles\n";
+  EXPECT_NEAR(t_c, expected, 0.05 * expected);
+  EXPECT_NEAR(force_span, expected, 0.05 * expected);
+  EXPECT_GT(rebound, 0.95 * kV);
+  EXPECT_LT(rebound, 1.001 * kV);
+}
+
+}  // namespace
+}  // namespace abut
