@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "abut/core/parallel.hpp"
+
 namespace abut {
 
 void BucketGrid::build(std::span<const Box> boxes) {
@@ -97,7 +99,7 @@ void BucketGrid::query(std::span<const double> x, std::span<const double> y,
       for (std::size_t p = 0; p < n; ++p) out.offsets[p + 1] += out.offsets[p];
       out.facets.resize(out.offsets[n]);
     }
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= static_cast<std::size_t>(kParallelMinimum))
     for (std::size_t p = 0; p < n; ++p) {
       std::size_t cell = 0;
       if (!cell_of(x[p], y[p], z[p], cell)) continue;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "abut/contact/friction.hpp"
+#include "abut/core/parallel.hpp"
 #include "abut/contact/integration.hpp"
 #include "abut/contact/penalty.hpp"
 #include "abut/contact/quad.hpp"
@@ -237,7 +238,7 @@ bool ContactInterface::needs_rebuild(const ContactInput& in) const {
   // m/2 since the build, a point and a facet cannot have approached each other by more than m.
   double moved2 = 0.0;
   const std::size_t n = surface_nodes_.size();
-#pragma omp parallel for schedule(static) reduction(max : moved2)
+#pragma omp parallel for schedule(static) reduction(max : moved2) if (n >= static_cast<std::size_t>(kParallelMinimum))
   for (std::size_t k = 0; k < n; ++k) {
     const auto i = surface_nodes_[k];
     const double dx = in.x[i] - bx_[k], dy = in.y[i] - by_[k], dz = in.z[i] - bz_[k];
@@ -263,7 +264,7 @@ void ContactInterface::rebuild_broad_phase(const ContactInput& in) {
     }
     pass.grid.build(boxes);
     const std::size_t n = own.point_facet.size();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= static_cast<std::size_t>(kParallelMinimum))
     for (std::size_t p = 0; p < n; ++p) {
       const Vec3 x = quad_point(corners_of(own.surface.facets[own.point_facet[p]], in), own.point_xi[p],
                                 own.point_eta[p]);
@@ -337,7 +338,7 @@ void ContactInterface::initial_penetrations(const ContactInput& in) {
   for (Pass& pass : passes_) {
     const Side& own = sides_[pass.own];
     const std::size_t n = own.point_facet.size();
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel for schedule(dynamic, 256) if (n >= static_cast<std::size_t>(kParallelMinimum) / 4)
     for (std::size_t p = 0; p < n; ++p) {
       const std::int32_t f = own.point_facet[p];
       if (!own.active[f]) continue;
@@ -535,7 +536,7 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   if (needs_rebuild(in)) rebuild_broad_phase(in);
   for (Pass& pass : passes_) {
     const std::size_t n = pass.state.size();
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel for schedule(dynamic, 256) if (n >= static_cast<std::size_t>(kParallelMinimum) / 4)
     for (std::size_t p = 0; p < n; ++p) evaluate_point(pass, p, in);
   }
   scatter(in, out);
