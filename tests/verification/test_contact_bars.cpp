@@ -19,7 +19,6 @@
 #include <string>
 
 #include "run_to.hpp"
-#include "test_contact_one_thread.hpp"
 
 namespace abut {
 namespace {
@@ -93,7 +92,6 @@ Impact collide(int n, double b) {
 }
 
 TEST(ContactBars, ContactLastsTwoLOverCAndTheVelocitiesSwap) {
-  const verification::OneThread one_thread;
   const Impact r = collide(200, 0.001);  // cubic 1 mm elements
   const double c = std::sqrt(kE / kRho);
   const double expected = 2.0 * kL / c;
@@ -117,7 +115,6 @@ TEST(ContactBars, ContactLastsTwoLOverCAndTheVelocitiesSwap) {
 // ends meet (after gap / 2v = 5 us) and last 2L/c. (The velocity deficit is larger here: the
 // bulk viscosity's length scale is the cube root of the element volume, 3.1 mm.)
 TEST(ContactBars, SlenderElementsTouchOnlyWhenTheEndsMeet) {
-  const verification::OneThread one_thread;
   const Impact r = collide(160, 0.005);
   const double c = std::sqrt(kE / kRho);
   const double expected = 2.0 * kL / c;

@@ -45,7 +45,6 @@
 #include "abut/contact/penalty.hpp"
 #include "abut/mesh/generators.hpp"
 #include "run_to.hpp"
-#include "test_contact_one_thread.hpp"
 
 namespace abut {
 namespace {
@@ -133,7 +132,6 @@ P, 1, P, 2, 0.0, )" +
 }
 
 TEST(ContactHertz, ContactTimeAndReboundOfASphereOnARigidWall) {
-  const verification::OneThread one_thread;
   double pfac = 0.0;
   const Model model = read_deck_string(hertz_deck(pfac), "hertz.k");
   Simulation sim(model);

@@ -14,7 +14,6 @@
 #include <string>
 
 #include "run_to.hpp"
-#include "test_contact_one_thread.hpp"
 
 namespace abut {
 namespace {
@@ -50,7 +49,6 @@ P, 1, P, 2, 0.0, 1.0e10
 }
 
 TEST(ContactInitialOffset, NoForceAtTimeZeroForAnInitialPenetration) {
-  const verification::OneThread one_thread;
   const Model model = read_deck_string(sunk_block_deck("0.0002"), "offset.k");
   Simulation sim(model);
   const ContactStats at_start = sim.contact_reports().at(0).stats;
@@ -70,7 +68,6 @@ TEST(ContactInitialOffset, NoForceAtTimeZeroForAnInitialPenetration) {
 }
 
 TEST(ContactInitialOffset, WithoutOffsetTheInitialPenetrationPushesAtOnce) {
-  const verification::OneThread one_thread;
   const Model model = read_deck_string(sunk_block_deck(""), "no_offset.k");
   Simulation sim(model);
   const ContactReport report = sim.contact_reports().at(0);

@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "run_to.hpp"
-#include "test_contact_one_thread.hpp"
 
 namespace abut {
 namespace {
@@ -56,7 +55,6 @@ PS, 1, P, 3, 0.0, 1.0e9
 )";
 
 TEST(ContactInitialRegion, FacesOutsideGidZeroNeverContact) {
-  const verification::OneThread one_thread;
   const Model model = read_deck_string(kDeck, "gid0.k");
   Simulation sim(model);
   std::vector<int> outside_nodes;  // the nodes of block 2 (part 2)

@@ -14,7 +14,6 @@
 #include <string>
 
 #include "run_to.hpp"
-#include "test_contact_one_thread.hpp"
 
 namespace abut {
 namespace {
@@ -85,7 +84,6 @@ ForceDirection run(int one_way) {
 }
 
 TEST(ContactOneWay, FrictionlessForceIsExactlyNormalToSurfaceTwo) {
-  const verification::OneThread one_thread;
   const ForceDirection one_way = run(1);
   const ForceDirection symmetric = run(0);
   const auto precision = std::cout.precision(9);

@@ -20,7 +20,6 @@
 #include <iostream>
 
 #include "run_to.hpp"
-#include "test_contact_one_thread.hpp"
 
 namespace abut {
 namespace {
@@ -65,7 +64,6 @@ P, 1, P, 2, 0.5, 6.2e9
 )";
 
 TEST(ContactSlidingBlock, StopsAfterVSquaredOverTwoMuG) {
-  const verification::OneThread one_thread;
   const Model model = read_deck_string(kDeck, "sliding_block.k");
   Simulation sim(model);
   const double x0 = sim.part_states().at(0).centre_of_mass.x;

@@ -13,7 +13,6 @@
 #include <string>
 
 #include "run_to.hpp"
-#include "test_contact_one_thread.hpp"
 
 namespace abut {
 namespace {
@@ -57,7 +56,6 @@ P, 1, P, 2, 0.0, 1.0e10
 }
 
 TEST(ContactSticking, TiedUntilTheTractionExceedsSigmaStick) {
-  const verification::OneThread one_thread;
   const Model model = read_deck_string(lifted_block_deck("1.0e5"), "sticking.k");
   Simulation sim(model);
   const double t_fail = kStick / (kPfac * kV);
@@ -93,7 +91,6 @@ TEST(ContactSticking, TiedUntilTheTractionExceedsSigmaStick) {
 }
 
 TEST(ContactSticking, WithoutSigmaStickALiftedBlockFeelsNoForce) {
-  const verification::OneThread one_thread;
   const Model model = read_deck_string(lifted_block_deck(""), "no_sticking.k");
   Simulation sim(model);
   int cycles_with_force = 0;

@@ -11,7 +11,6 @@
 #include <iostream>
 
 #include "run_to.hpp"
-#include "test_contact_one_thread.hpp"
 
 namespace abut {
 namespace {
@@ -50,7 +49,6 @@ P, 1, P, 2, 0.0, 1.0e9, 0.01, 0.03
 )";
 
 TEST(ContactTimeWindow, NoForceBeforeTBeginNorAfterTEnd) {
-  const verification::OneThread one_thread;
   const Model model = read_deck_string(kDeck, "time_window.k");
   Simulation sim(model);
   int forces_outside = 0, active_inside = 0;
