@@ -1,0 +1,105 @@
+// *CONTACT set-up in the solver: the automatic penalty needs a unit system (seed 000: "a value
+// for the penalty stiffness or a unit system must be defined"); thermal options are refused
+// until abut has a thermal solution; the automatic values follow the seed's formula.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "abut/io/deck.hpp"
+#include "abut/solver/simulation.hpp"
+
+namespace abut {
+namespace {
+
+std::string two_blocks(const std::string& units, const std::string& contact_lines) {
+  return units + R"(*TIME
+1.0e-4
+*COMPONENT_BOX
+1, 1, 2, 2, 1
+0.0, 0.0, 0.0, 0.02, 0.02, 0.01
+*COMPONENT_BOX
+2, 2, 2, 2, 1
+0.0, 0.0, 0.011, 0.02, 0.02, 0.021
+*MAT_ELASTIC
+1, 7800.0, 210.0e9, 0.3
+*PART
+1, 1
+2, 1
+*INITIAL_VELOCITY
+P, 2, 0.0, 0.0, -50.0
+*CONTACT
+1
+)" + contact_lines + "*END\n";
+}
+
+std::string message_of(const std::string& deck) {
+  try {
+    const Model model = read_deck_string(deck, "contact.k");
+    Simulation sim(model);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ContactSetup, AutomaticPenaltyWithoutUnitSystemIsAnError) {
+  const std::string message = message_of(two_blocks("", "P, 1, P, 2\n"));
+  EXPECT_NE(message.find("*UNIT_SYSTEM"), std::string::npos) << message;
+  EXPECT_NE(message.find("contact.k:"), std::string::npos) << message;
+}
+
+TEST(ContactSetup, GivenPenaltyNeedsNoUnitSystem) {
+  EXPECT_EQ(message_of(two_blocks("", "P, 1, P, 2, 0.0, 1.0e13\n")), "");
+}
+
+TEST(ContactSetup, ThermalOptionsAreNotSupportedYet) {
+  const std::string units = "*UNIT_SYSTEM\nSI\n*FUNCTION\n5\n1.0\n";
+  EXPECT_NE(message_of(two_blocks(units, "P, 1, P, 2\n0\n0, 0, 5\n")).find("not supported yet"), std::string::npos);
+  EXPECT_NE(message_of(two_blocks(units, "P, 1, P, 2\n0\n0, 0, , 20.0, 0, 0, , 1\n")).find("not supported yet"),
+            std::string::npos);
+}
+
+TEST(ContactSetup, AutomaticPenaltyFollowsTheSeedFormula) {
+  // K = E / (3 (1 - 2 nu)) = 175 GPa, L_min = (0.01^3)^(1/3) = 0.01 m, v_max = 50 m/s:
+  // pfac = K / L_min * (1 + 0.5^2) (seed 000).
+  const Model model = read_deck_string(two_blocks("*UNIT_SYSTEM\nSI\n", "P, 1, P, 2\n"), "contact.k");
+  Simulation sim(model);
+  const double expected = 175.0e9 / 0.01 * 1.25;
+  const std::vector<ContactReport> reports = sim.contact_reports();
+  for (const PartPenalty& p : reports[0].parts) EXPECT_NEAR(p.penalty, expected, 1e-9 * expected);
+}
+
+TEST(ContactSetup, AutomaticPenaltyIsConvertedToTheUnitSystem) {
+  // The same model in [mm, ton, s]: 50 m/s = 5e4 mm/s, E = 2.1e5 MPa, rho = 7.8e-9 t/mm^3;
+  // pfac = 1.75e5 MPa / 10 mm * 1.25 = 2.1875e4 MPa/mm.
+  const std::string deck = R"(*UNIT_SYSTEM
+MMTONS
+*TIME
+1.0e-4
+*COMPONENT_BOX
+1, 1, 2, 2, 1
+0.0, 0.0, 0.0, 20.0, 20.0, 10.0
+*COMPONENT_BOX
+2, 2, 2, 2, 1
+0.0, 0.0, 11.0, 20.0, 20.0, 21.0
+*MAT_ELASTIC
+1, 7.8e-9, 2.1e5, 0.3
+*PART
+1, 1
+2, 1
+*INITIAL_VELOCITY
+P, 2, 0.0, 0.0, -5.0e4
+*CONTACT
+1
+P, 1, P, 2
+*END
+)";
+  const Model model = read_deck_string(deck, "contact_mm.k");
+  Simulation sim(model);
+  const std::vector<ContactReport> reports = sim.contact_reports();
+  for (const PartPenalty& p : reports[0].parts) EXPECT_NEAR(p.penalty, 2.1875e4, 1e-6 * 2.1875e4);
+}
+
+}  // namespace
+}  // namespace abut
