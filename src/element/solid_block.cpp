@@ -504,8 +504,12 @@ double SolidBlock::initial_stable_step(const Nodes& reference) const {
       x.y[a] = reference.y[node];
       x.z[a] = reference.z[node];
     }
-    Hex8Gradient g;
-    hex8_gradient(x, g);
+    Hex8Modes c;
+    hex8_to_modes(x.x, c.x);
+    hex8_to_modes(x.y, c.y);
+    hex8_to_modes(x.z, c.z);
+    Hex8ModalGradient g;
+    hex8_modal_gradient(c, g);
     const double length = hex8_critical_length(g, impl_->lame_lambda, impl_->lame_mu);
     const double q = 4.0 * impl_->newtonian_viscosity / (3.0 * impl_->density * length);
     step = std::min(step, length / (q + std::sqrt(q * q + impl_->wave_speed * impl_->wave_speed)));

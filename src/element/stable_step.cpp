@@ -33,19 +33,6 @@ double critical_length(double gxx, double gyy, double gzz, double gxy, double gy
 
 }  // namespace
 
-double hex8_critical_length(const Hex8Gradient& g, double lambda, double mu) {
-  double gxx = 0, gyy = 0, gzz = 0, gxy = 0, gyz = 0, gxz = 0;
-  for (int a = 0; a < 8; ++a) {
-    gxx += g.bx[a] * g.bx[a];
-    gyy += g.by[a] * g.by[a];
-    gzz += g.bz[a] * g.bz[a];
-    gxy += g.bx[a] * g.by[a];
-    gyz += g.by[a] * g.bz[a];
-    gxz += g.bx[a] * g.bz[a];
-  }
-  return critical_length(gxx, gyy, gzz, gxy, gyz, gxz, g.volume, lambda, mu);
-}
-
 double hex8_critical_length(const Hex8ModalGradient& g, double lambda, double mu) {
   double gxx = 0, gyy = 0, gzz = 0, gxy = 0, gyz = 0, gxz = 0;
   for (int k = 1; k < 7; ++k) {

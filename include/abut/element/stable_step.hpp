@@ -13,9 +13,8 @@
 
 namespace abut {
 
-// The length L such that L / c, c = sqrt((lambda + 2 mu) / rho), equals 2 / omega_max above.
-double hex8_critical_length(const Hex8Gradient& g, double lambda, double mu);
-// The same from the modal gradient (G = 8 sum_k G_k G_k^T, hex8.hpp).
+// The length L such that L / c, c = sqrt((lambda + 2 mu) / rho), equals 2 / omega_max above,
+// from the modal gradient (G = sum_a b_a b_a^T = 8 sum_k G_k G_k^T, hex8.hpp).
 double hex8_critical_length(const Hex8ModalGradient& g, double lambda, double mu);
 
 }  // namespace abut
