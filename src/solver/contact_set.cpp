@@ -155,7 +155,7 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass, st
                              make_contact_surface(faces2, penalty_of), node_mass, initial);
     report.points = interfaces_.back().point_count();
     report.released_points = interfaces_.back().released_points();
-    base_reports_.push_back(std::move(report));
+    reports_.push_back(std::move(report));
   }
   cfx_.assign(nodes.size(), 0.0);
   cfy_.assign(nodes.size(), 0.0);
@@ -168,7 +168,10 @@ void ContactSet::apply(const ContactInput& in, std::span<double> fx, std::span<d
   std::fill(cfy_.begin(), cfy_.end(), 0.0);
   std::fill(cfz_.begin(), cfz_.end(), 0.0);
   ContactForces forces{cfx_, cfy_, cfz_};
-  for (ContactInterface& c : interfaces_) c.apply(in, forces);
+  for (std::size_t c = 0; c < interfaces_.size(); ++c) {
+    interfaces_[c].apply(in, forces);
+    reports_[c].stats = interfaces_[c].stats();
+  }
   for (std::size_t i = 0; i < cfx_.size(); ++i) {
     fx[i] += cfx_[i];
     fy[i] += cfy_[i];
@@ -182,7 +185,7 @@ double ContactSet::stable_step(std::int64_t* limiting_contact) const {
     const double s = std::min(interfaces_[c].initial_stable_step(), interfaces_[c].stats().stable_step);
     if (s < step) {
       step = s;
-      if (limiting_contact) *limiting_contact = base_reports_[c].id;
+      if (limiting_contact) *limiting_contact = reports_[c].id;
     }
   }
   return step;
@@ -198,12 +201,6 @@ double ContactSet::friction_energy() const {
   double e = 0.0;
   for (const ContactInterface& c : interfaces_) e += c.stats().friction_energy;
   return e;
-}
-
-std::vector<ContactReport> ContactSet::reports() const {
-  std::vector<ContactReport> out = base_reports_;
-  for (std::size_t c = 0; c < interfaces_.size(); ++c) out[c].stats = interfaces_[c].stats();
-  return out;
 }
 
 void ContactSet::nodal_fields(std::vector<double>& force, std::vector<double>& pressure,

@@ -26,13 +26,14 @@ class ContactSet {
   double elastic_and_damping_energy() const;  // "contact" column of energy.csv
   double friction_energy() const;
 
-  std::vector<ContactReport> reports() const;
+  // Penalties and the statistics of the last apply(), one per interface.
+  const std::vector<ContactReport>& reports() const { return reports_; }
   // Nodal output fields summed over all interfaces (force interleaved x, y, z).
   void nodal_fields(std::vector<double>& force, std::vector<double>& pressure, std::vector<double>& wear) const;
 
  private:
   const Model& model_;
-  std::vector<ContactReport> base_reports_;
+  std::vector<ContactReport> reports_;
   std::vector<ContactInterface> interfaces_;
   std::vector<double> cfx_, cfy_, cfz_;  // contact force per node, last step
 };

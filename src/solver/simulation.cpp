@@ -566,7 +566,7 @@ void Simulation::pressure(std::vector<double>& out) const {
 
 Energies Simulation::energies() const { return impl_->energy; }
 
-std::vector<ContactReport> Simulation::contact_reports() const { return impl_->contacts->reports(); }
+const std::vector<ContactReport>& Simulation::contact_reports() const { return impl_->contacts->reports(); }
 
 void Simulation::contact_fields(std::vector<double>& force, std::vector<double>& pressure,
                                 std::vector<double>& wear) const {

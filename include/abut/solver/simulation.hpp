@@ -84,7 +84,7 @@ class Simulation {
   // (force interleaved x, y, z; pressure; accumulated wear).
   bool has_contact() const;
   double contact_seconds() const;  // wall time spent in contact so far
-  std::vector<ContactReport> contact_reports() const;
+  const std::vector<ContactReport>& contact_reports() const;  // valid until the next advance()
   void contact_fields(std::vector<double>& force, std::vector<double>& pressure, std::vector<double>& wear) const;
 
   // The state saved before the step that failed (positions and velocities), for output.
