@@ -114,6 +114,24 @@ void check_material(std::int64_t part_id, const MaterialParams& material) {
   }
 }
 
+// Modal gradient (hex8.hpp) of a hex at the given node coordinates.
+Hex8ModalGradient modal_gradient_at(const Hex8& hex, const Nodes& nodes) {
+  Hex8Coords x;
+  for (int a = 0; a < 8; ++a) {
+    const auto node = static_cast<std::size_t>(hex[a]);
+    x.x[a] = nodes.x[node];
+    x.y[a] = nodes.y[node];
+    x.z[a] = nodes.z[node];
+  }
+  Hex8Modes c;
+  hex8_to_modes(x.x, c.x);
+  hex8_to_modes(x.y, c.y);
+  hex8_to_modes(x.z, c.z);
+  Hex8ModalGradient g;
+  hex8_modal_gradient(c, g);
+  return g;
+}
+
 }  // namespace
 
 struct SolidBlock::Impl {
@@ -153,6 +171,11 @@ struct SolidBlock::Impl {
   template <class Law>
   BlockStep step(const NodalState& s, double dt, const Law& law);
   std::string element_name(std::size_t e) const;
+  // l / (Q + sqrt(Q^2 + c^2)) with Q = q_speed (bulk viscosity) plus the Newtonian Q_eta.
+  double critical_step(double length, double q_speed) const {
+    const double q = q_speed + 4.0 * newtonian_viscosity / (3.0 * density * length);
+    return length / (q + std::sqrt(q * q + wave_speed * wave_speed));
+  }
 };
 
 std::string SolidBlock::Impl::element_name(std::size_t e) const {
@@ -366,9 +389,7 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
   // With bulk viscosity the step shrinks to l / (Q + sqrt(Q^2 + c^2)), Q = C1 c + C0 l |eps_v_dot|
   // (same manual, "Time Step Control"). A Newtonian viscosity eta adds its longitudinal part the
   // same way: 4/3 eta eps_dot = rho l Q_eta eps_dot, Q_eta = 4 eta / (3 rho l).
-  const double l_char = hex8_critical_length(g, lame_lambda, lame_mu);
-  const double q_total = q_speed + 4.0 * newtonian_viscosity / (3.0 * density * l_char);
-  stable[e] = l_char / (q_total + std::sqrt(q_total * q_total + wave_speed * wave_speed));
+  stable[e] = critical_step(hex8_critical_length(g, lame_lambda, lame_mu), q_speed);
   failure[e] = kOk;
 }
 
@@ -434,9 +455,7 @@ SolidBlock::SolidBlock(std::int64_t part_id, const MaterialParams& material,
   m.reference_volume.resize(n);
   if (rubber) m.reference_gradient.resize(Impl::kReferenceModes * n);
   for (std::size_t e = 0; e < n; ++e) {
-    Hex8Coords x;
-    for (int a = 0; a < 8; ++a) {
-      const std::int32_t node = m.hexes[e][a];
+    for (const std::int32_t node : m.hexes[e]) {
       if (node < 0 || static_cast<std::size_t>(node) >= reference.size()) {
         std::string message = m.element_name(e);
         message += ": node index ";
@@ -444,16 +463,8 @@ SolidBlock::SolidBlock(std::int64_t part_id, const MaterialParams& material,
         message += " is outside the node list";
         throw InputError(message);
       }
-      x.x[a] = reference.x[node];
-      x.y[a] = reference.y[node];
-      x.z[a] = reference.z[node];
     }
-    Hex8Modes c;
-    hex8_to_modes(x.x, c.x);
-    hex8_to_modes(x.y, c.y);
-    hex8_to_modes(x.z, c.z);
-    Hex8ModalGradient g;
-    hex8_modal_gradient(c, g);
+    const Hex8ModalGradient g = modal_gradient_at(m.hexes[e], reference);
     if (!(g.volume > 0.0)) {
       throw InputError(m.element_name(e) +
                        ": volume <= 0 in the initial configuration; expected nodes 1-4 "
@@ -496,23 +507,9 @@ void SolidBlock::add_lumped_mass(std::vector<double>& nodal_mass) const {
 
 double SolidBlock::initial_stable_step(const Nodes& reference) const {
   double step = std::numeric_limits<double>::infinity();
-  for (std::size_t e = 0; e < impl_->hexes.size(); ++e) {
-    Hex8Coords x;
-    for (int a = 0; a < 8; ++a) {
-      const auto node = static_cast<std::size_t>(impl_->hexes[e][a]);
-      x.x[a] = reference.x[node];
-      x.y[a] = reference.y[node];
-      x.z[a] = reference.z[node];
-    }
-    Hex8Modes c;
-    hex8_to_modes(x.x, c.x);
-    hex8_to_modes(x.y, c.y);
-    hex8_to_modes(x.z, c.z);
-    Hex8ModalGradient g;
-    hex8_modal_gradient(c, g);
-    const double length = hex8_critical_length(g, impl_->lame_lambda, impl_->lame_mu);
-    const double q = 4.0 * impl_->newtonian_viscosity / (3.0 * impl_->density * length);
-    step = std::min(step, length / (q + std::sqrt(q * q + impl_->wave_speed * impl_->wave_speed)));
+  for (const Hex8& hex : impl_->hexes) {
+    const double length = hex8_critical_length(modal_gradient_at(hex, reference), impl_->lame_lambda, impl_->lame_mu);
+    step = std::min(step, impl_->critical_step(length, 0.0));
   }
   return step;
 }
