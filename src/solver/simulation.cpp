@@ -49,6 +49,7 @@ struct Simulation::Impl {
   std::vector<double> x0, y0, z0;              // reference
   std::vector<double> vhx, vhy, vhz;           // v^{n+1/2} after kick
   std::vector<double> vx, vy, vz;              // v^n
+  std::vector<double> ox, oy, oz;              // v^{n-1/2} during the kick
   std::vector<double> fx, fy, fz;              // f^n
   std::vector<double> mass, inverse_mass;      // lumped
   std::vector<std::uint8_t> node_fixed;        // *NODE bc
@@ -90,9 +91,7 @@ struct Simulation::Impl {
   void kick();
   void drift();
   Vec3 gravity_at(double time) const;
-  void apply_nodal_boundaries(std::vector<double>& rx, std::vector<double>& ry, std::vector<double>& rz,
-                              const std::vector<double>& ox, const std::vector<double>& oy,
-                              const std::vector<double>& oz, double dt_avg);
+  void apply_nodal_boundaries(double dt_avg);  // on v^{n+1/2}, from v^{n-1/2} in ox, oy, oz
   void apply_rigid_boundaries(double dt_avg);
   std::string limit_description() const;
 };
@@ -299,9 +298,8 @@ void Simulation::Impl::compute_forces(double dt) {
 
 // v^{n+1/2} from v^{n-1/2} and f^n, then boundary motions; energies at t^n.
 void Simulation::Impl::kick() {
-  const double remaining = model.time.end_time - t;
-  dt_next = std::min({model.time.step_scale * stable, model.time.max_step, remaining});
   const double scaled = model.time.step_scale * stable;
+  dt_next = std::min({scaled, model.time.max_step, model.time.end_time - t});
   if (scaled < model.time.min_step)
     throw InstabilityError(fmt::format("the stable time step {:.4g} fell below dt_min = {:.4g} of *TIME (limited by {})",
                                        scaled, model.time.min_step, limit_description()));
@@ -316,7 +314,9 @@ void Simulation::Impl::kick() {
   const double dt_kick = dt_next > 0.0 ? dt_next : dt_prev;
   const double dt_avg = n == 0 ? 0.5 * dt_kick : 0.5 * (dt_prev + dt_kick);
 
-  std::vector<double> ox = vhx, oy = vhy, oz = vhz;  // v^{n-1/2}
+  ox.assign(vhx.begin(), vhx.end());  // v^{n-1/2} (same size every cycle: no allocation)
+  oy.assign(vhy.begin(), vhy.end());
+  oz.assign(vhz.begin(), vhz.end());
   const std::int64_t nn = static_cast<std::int64_t>(n_nodes);
 #pragma omp parallel for schedule(static) if (nn >= kParallelMinimum)
   for (std::int64_t i = 0; i < nn; ++i) {
@@ -345,7 +345,7 @@ void Simulation::Impl::kick() {
       vhz[node] = v.z;
     }
   }
-  apply_nodal_boundaries(vhx, vhy, vhz, ox, oy, oz, dt_avg);
+  apply_nodal_boundaries(dt_avg);
 
   // Work of the external forces over [t^{n-1/2}, t^{n+1/2}]: every force that is not internal
   // (gravity and boundary reactions) equals m dv/dt - f_internal; its work with the mid velocity.
@@ -381,11 +381,8 @@ void Simulation::Impl::kick() {
   energy.kinetic = kinetic;
 }
 
-void Simulation::Impl::apply_nodal_boundaries(std::vector<double>& rx, std::vector<double>& ry,
-                                              std::vector<double>& rz, const std::vector<double>& ox,
-                                              const std::vector<double>& oy, const std::vector<double>& oz,
-                                              double dt_avg) {
-  double* v[3] = {rx.data(), ry.data(), rz.data()};
+void Simulation::Impl::apply_nodal_boundaries(double dt_avg) {
+  double* v[3] = {vhx.data(), vhy.data(), vhz.data()};
   const double* vold[3] = {ox.data(), oy.data(), oz.data()};
   const double* pos[3] = {x.data(), y.data(), z.data()};
   const double* ref[3] = {x0.data(), y0.data(), z0.data()};
