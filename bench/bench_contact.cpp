@@ -41,7 +41,7 @@ void BM_ContactPointCycle(benchmark::State& state) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
   Plates p(100);
   abut::ContactSettings s;
-  s.friction = 0.2;
+  s.tangential_law = abut::Coulomb{0.2, 0.2, {}, {}};
   abut::ContactInterface contact(s, p.upper, p.lower, p.mass, p.input(0.0));
   const std::size_t upper_first = (101 * 101);
   for (std::size_t i = upper_first; i < p.x.size(); ++i) p.z[i] -= 2e-4, p.vx[i] = 1.0;  // 1e-4 penetration

@@ -27,7 +27,8 @@ void BucketGrid::build(std::span<const Box> boxes) {
   origin_ = all.lo;
 
   // Cells about the size of a box; coarser if that would give more than ~2 cells per box.
-  const double largest = std::max({all.hi[0] - all.lo[0], all.hi[1] - all.lo[1], all.hi[2] - all.lo[2]});
+  const double largest =
+      std::max({all.hi[0] - all.lo[0], all.hi[1] - all.lo[1], all.hi[2] - all.lo[2]});
   cell_size_ = mean_extent > 0.0 ? mean_extent : (largest > 0.0 ? largest : 1.0);
   const auto max_cells = static_cast<double>(2 * boxes_.size() + 64);
   for (;;) {
@@ -99,7 +100,7 @@ void BucketGrid::query(std::span<const double> x, std::span<const double> y,
       for (std::size_t p = 0; p < n; ++p) out.offsets[p + 1] += out.offsets[p];
       out.facets.resize(out.offsets[n]);
     }
-#pragma omp parallel for schedule(static) if (n >= static_cast<std::size_t>(kParallelMinimum))
+#pragma omp parallel for schedule(static) if (n >= static_cast <std::size_t>(kParallelMinimum))
     for (std::size_t p = 0; p < n; ++p) {
       std::size_t cell = 0;
       if (!cell_of(x[p], y[p], z[p], cell)) continue;

@@ -99,7 +99,8 @@ std::vector<std::uint8_t> sharp_edges(const ContactSurface& surface, std::span<c
     for (std::size_t k = i; k < j; ++k) {
       bool is_sharp = (j - i == 1);  // free edge
       for (std::size_t m = i; m < j; ++m)
-        if (m != k && dot(normal[uses[k].facet], normal[uses[m].facet]) < cos_limit) is_sharp = true;
+        if (m != k && dot(normal[uses[k].facet], normal[uses[m].facet]) < cos_limit)
+          is_sharp = true;
       if (is_sharp) sharp[uses[k].facet] |= static_cast<std::uint8_t>(1u << uses[k].local);
     }
     i = j;

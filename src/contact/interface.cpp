@@ -1,3 +1,5 @@
+// ContactInterface: set-up (sides, contact points, parts, passes), broad phase, the step driver.
+// Enforcement is in enforcement.cpp, the scatter of forces and statistics in scatter.cpp.
 #include "abut/contact/interface.hpp"
 
 #include <algorithm>
@@ -7,20 +9,16 @@
 #include <stdexcept>
 #include <string>
 
-#include "abut/contact/friction.hpp"
-#include "abut/core/parallel.hpp"
 #include "abut/contact/integration.hpp"
-#include "abut/contact/penalty.hpp"
 #include "abut/contact/quad.hpp"
+#include "abut/core/parallel.hpp"
 
 namespace abut {
 namespace {
 
-// A point within this fraction of its element thickness counts as touching when sticking
-// contact ties it (absorbs round-off of initially coincident surfaces).
-constexpr double kTieGapFraction = 1e-6;
 // Default delta0_max: 4% of the element thickness (seed 000).
 constexpr double kDefaultInitialMaxFraction = 0.04;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 QuadCorners corners_of(const std::array<std::int32_t, 4>& nodes, const ContactInput& in) {
   QuadCorners c;
@@ -34,162 +32,339 @@ double longest_edge(const QuadCorners& c) {
   return longest;
 }
 
-Vec3 velocity_at(const std::array<std::int32_t, 4>& nodes, const std::array<double, 4>& shape,
-                 const ContactInput& in) {
-  Vec3 v;
-  for (int a = 0; a < 4; ++a) v += Vec3{in.vx[nodes[a]], in.vy[nodes[a]], in.vz[nodes[a]]} * shape[a];
-  return v;
-}
-
 // How far beyond a smooth edge, per unit distance from the facet's plane, a point may lie and
 // still belong to the facet: tan(alpha_edge), the widest dead zone of a convex edge whose
 // normals turn by at most alpha_edge. From 90 degrees on every crossing is accepted.
 double smooth_edge_reach(double alpha_edge_degrees) {
-  if (alpha_edge_degrees >= 90.0) return std::numeric_limits<double>::infinity();
+  if (alpha_edge_degrees >= 90.0) return kInfinity;
   return std::tan(alpha_edge_degrees * std::numbers::pi / 180.0);
 }
 
-bool share_a_node(const std::array<std::int32_t, 4>& a, const std::array<std::int32_t, 4>& b) {
-  for (auto i : a)
-    for (auto j : b)
-      if (i == j) return true;
-  return false;
-}
+bool is_radioss_rule(StiffnessRule r) { return r != StiffnessRule::FacetPenalty; }
 
 }  // namespace
 
 ContactInterface::ContactInterface(ContactSettings settings, ContactSurface surface1,
                                    ContactSurface surface2, std::span<const double> node_mass,
-                                   const ContactInput& initial)
+                                   const ContactInput& initial,
+                                   std::span<const std::int32_t> secondary_nodes)
     : settings_(std::move(settings)), mass_(node_mass.begin(), node_mass.end()) {
-  const ContactSettings& s = settings_;
-  auto fail = [&](const std::string& field, const std::string& message) {
-    SourceLocation where = s.where;
-    where.field = field;
-    throw InputError(where, message);
-  };
-  if (s.accuracy_level < 1) fail("accuracy_level", "expected 1 (low), 2 (standard) or more (high)");
-  if (!(s.friction >= 0.0)) fail("mu", "the friction coefficient must be >= 0");
-  if (!(s.damping >= 0.0)) fail("xi", "the fraction of critical damping must be >= 0");
-  if (!(s.end_time >= s.begin_time)) fail("t_end", "the deactivation time must not precede t_beg");
-  if (!(s.initial_offset >= 0.0)) fail("delta0_offset", "the initial penetration offset must be >= 0");
-  if (s.initial_max && !(*s.initial_max >= 0.0)) fail("delta0_max", "must be >= 0");
-  if (!(s.edge_tolerance >= 0.0)) fail("delta_edge", "the edge tolerance must be >= 0");
-  if (!(s.edge_angle > 0.0 && s.edge_angle <= 180.0)) fail("alpha_edge", "expected an angle in (0, 180] degrees");
-  if (s.stick_stress && !(*s.stick_stress > 0.0)) fail("sigma_stick", "the sticking failure stress must be > 0");
-  if (s.search_margin && !(*s.search_margin > 0.0)) fail("", "the search margin must be > 0");
-  if (surface1.size() == 0) fail("enid_1", "surface 1 has no facets: the entity has no exterior faces");
-  if (surface2.size() == 0) fail("enid_2", "surface 2 has no facets: the entity has no exterior faces");
+  validate(surface1, surface2, initial.x.size());
+  if (!secondary_nodes.empty() && settings_.discretisation != Discretisation::NodeToSurface)
+    throw ContactSetupError("discretisation",
+                            "secondary nodes are given, but the contact is surface-to-surface");
   const bool self = surface1.facets == surface2.facets;
-  if (self && s.one_way)
-    fail("one_way", "one-way contact needs two different surfaces; these two are the same faces (self contact)");
-  for (const ContactSurface* surface : {&surface1, &surface2})
-    for (std::size_t f = 0; f < surface->size(); ++f) {
-      if (!(surface->penalty[f] > 0.0) || !std::isfinite(surface->penalty[f]))
-        fail("pfac", "the penalty stiffness of part " + std::to_string(surface->part[f]) + " must be > 0");
-      if (!(surface->thickness[f] > 0.0))
-        fail("", "a facet of part " + std::to_string(surface->part[f]) + " has no positive thickness");
-      for (auto n : surface->facets[f])
-        if (n < 0 || static_cast<std::size_t>(n) >= mass_.size() || static_cast<std::size_t>(n) >= initial.x.size())
-          fail("", "a facet refers to node index " + std::to_string(n) + " beyond the nodal arrays");
-    }
-
+  if (self && settings_.one_way)
+    throw ContactSetupError("one_way",
+                            "one-way contact needs two different surfaces; these two are the same "
+                            "facets (self contact)");
+  if (!secondary_nodes.empty() && !settings_.one_way)
+    throw ContactSetupError(
+        "one_way",
+        "a node group is only a secondary side: node-to-surface contact of a node "
+        "group is one-way");
   wear_.assign(mass_.size(), 0.0);
   pressure_.assign(mass_.size(), 0.0);
   sides_.resize(self ? 1 : 2);
   sides_[0].surface = std::move(surface1);
   if (!self) sides_[1].surface = std::move(surface2);
-  build_sides(initial);
+  build_parts();
+  build_sides(initial, secondary_nodes);
   build_passes();
-  initial_penetrations(initial);
+  initial_state(initial);
 }
 
-void ContactInterface::build_sides(const ContactInput& in) {
+void ContactInterface::validate(const ContactSurface& s1, const ContactSurface& s2,
+                                std::size_t coordinates) const {
   const ContactSettings& s = settings_;
-  margin_ = std::numeric_limits<double>::infinity();
+  auto fail = [](const char* setting, const std::string& message) {
+    throw ContactSetupError(setting, message);
+  };
+  if (s.accuracy_level < 1) fail("accuracy_level", "expected 1 (low), 2 (standard) or more (high)");
+  if (!(s.damping >= 0.0)) fail("damping", "the fraction of critical damping must be >= 0");
+  if (!(s.end_time >= s.begin_time)) fail("end_time", "the contact must not end before it begins");
+  if (!(s.initial_offset >= 0.0))
+    fail("initial_offset", "the initial penetration offset must be >= 0");
+  if (s.initial_max && !(*s.initial_max >= 0.0)) fail("initial_max", "must be >= 0");
+  if (!(s.edge_tolerance >= 0.0)) fail("edge_tolerance", "the edge tolerance must be >= 0");
+  if (!(s.edge_angle > 0.0 && s.edge_angle <= 180.0))
+    fail("edge_angle", "expected an angle in (0, 180] degrees");
+  if (s.stick_stress && !(*s.stick_stress > 0.0))
+    fail("stick_stress", "the sticking failure stress must be > 0");
+  if (s.search_margin && !(*s.search_margin > 0.0))
+    fail("search_margin", "the search margin must be > 0");
+  if (s.detection_depth && !(*s.detection_depth > 0.0))
+    fail("detection_depth", "the detection depth must be > 0");
+  if (s.tangential_penalty && !(*s.tangential_penalty > 0.0))
+    fail("tangential_penalty", "the tangential penalty must be > 0");
+  if (s.clearance && !std::isfinite(*s.clearance))
+    fail("clearance", "the clearance must be a finite length");
+  if (s.adhesion && !(s.adhesion->gap > 0.0 && s.adhesion->max_stress >= 0.0 &&
+                      s.adhesion->fluid_viscosity >= 0.0))
+    fail("adhesion",
+         "adhesion needs a gap > 0, a maximum adhesive stress >= 0 and a viscosity >= 0");
+  if (s.freeze && s.stick_stress)
+    fail("freeze", "a frozen contact cannot also have a sticking failure stress");
+  if (const auto* c = std::get_if<Coulomb>(&s.tangential_law)) {
+    if (!(c->mu_static >= 0.0) || !(c->mu_dynamic >= 0.0))
+      fail("tangential_law", "the friction coefficients must be >= 0");
+    if (!c->function && std::holds_alternative<std::monostate>(c->model) &&
+        c->mu_dynamic > c->mu_static)
+      fail("tangential_law", "the dynamic friction coefficient must not exceed the static one");
+  }
+  if (const auto* t = std::get_if<Tresca>(&s.tangential_law)) {
+    if (!(t->shear_yield > 0.0))
+      fail("tangential_law", "Tresca friction needs a shear yield stress > 0");
+    if (!(t->factor_static >= 0.0 && t->factor_dynamic >= 0.0 &&
+          t->factor_dynamic <= t->factor_static))
+      fail("tangential_law", "Tresca friction needs shear factors with 0 <= dynamic <= static");
+  }
+  if (const auto* c = std::get_if<CurvePenalty>(&s.normal_law); c && !c->pressure)
+    fail("normal_law", "the penalty curve is missing");
+  if (s.friction_filter.kind != FrictionFilter::Kind::None && !(s.friction_filter.xfreq > 0.0))
+    fail("friction_filter", "the filter coefficient must be > 0");
+  if (s.friction_filter.kind == FrictionFilter::Kind::Simple && !(s.friction_filter.xfreq <= 1.0))
+    fail("friction_filter", "the simple filter coefficient must be in (0, 1]");
+  const StiffnessSettings& k = s.stiffness;
+  if (!(k.scale > 0.0) || !(k.minimum >= 0.0) || !(k.maximum > k.minimum))
+    fail("stiffness", "expected a stiffness scale > 0 and 0 <= minimum < maximum");
+  for (const PairScale& ps : s.pair_scales)
+    if (!(ps.scale > 0.0) || !std::isfinite(ps.scale))
+      fail("pair_scales", "a penalty scale factor must be > 0");
+  if (s1.size() == 0) fail("surface1", "surface 1 has no facets");
+  if (s2.size() == 0) fail("surface2", "surface 2 has no facets");
+  const bool radioss = is_radioss_rule(k.rule);
+  int which = 1;
+  for (const ContactSurface* surface : {&s1, &s2}) {
+    const std::string name = "surface" + std::to_string(which++);
+    const std::size_t n = surface->size();
+    if (surface->part.size() != n || surface->penalty.size() != n || surface->thickness.size() != n)
+      fail(name.c_str(), "part, penalty and thickness need one entry per facet");
+    for (std::size_t f = 0; f < n; ++f) {
+      if (!(surface->penalty[f] > 0.0) || !std::isfinite(surface->penalty[f]))
+        fail(name.c_str(),
+             "the penalty stiffness of part " + std::to_string(surface->part[f]) + " must be > 0");
+      if (!(surface->thickness[f] > 0.0))
+        fail(name.c_str(),
+             "a facet of part " + std::to_string(surface->part[f]) + " has no positive thickness");
+      if (radioss && (surface->bulk_modulus.size() != n || surface->element_volume.size() != n ||
+                      !(surface->bulk_modulus[f] > 0.0) || !(surface->element_volume[f] > 0.0)))
+        fail(
+            "stiffness",
+            "the Radioss stiffness rules need each facet's bulk modulus and element volume (part " +
+                std::to_string(surface->part[f]) + ")");
+      for (auto node : surface->facets[f])
+        if (node < 0 || static_cast<std::size_t>(node) >= mass_.size() ||
+            static_cast<std::size_t>(node) >= coordinates)
+          fail(name.c_str(),
+               "a facet refers to node index " + std::to_string(node) + " beyond the nodal arrays");
+    }
+  }
+}
+
+void ContactInterface::build_parts() {
+  for (const Side& side : sides_)
+    part_ids_.insert(part_ids_.end(), side.surface.part.begin(), side.surface.part.end());
+  std::sort(part_ids_.begin(), part_ids_.end());
+  part_ids_.erase(std::unique(part_ids_.begin(), part_ids_.end()), part_ids_.end());
+  const std::size_t n = part_ids_.size();
+  part_scale_.assign(n * n, 1.0);
+  auto in = [](const std::vector<std::int64_t>& set, std::int64_t part) {
+    return set.empty() || std::find(set.begin(), set.end(), part) != set.end();
+  };
+  for (const PairScale& ps : settings_.pair_scales) {  // in order: the last assignment wins
+    const std::vector<std::int64_t>& second = ps.parts2.empty() ? ps.parts1 : ps.parts2;
+    for (std::size_t a = 0; a < n; ++a)
+      for (std::size_t b = 0; b < n; ++b) {
+        const std::int64_t pa = part_ids_[a], pb = part_ids_[b];
+        if ((in(ps.parts1, pa) && in(second, pb)) || (in(ps.parts1, pb) && in(second, pa)))
+          part_scale_[a * n + b] = ps.scale;
+      }
+  }
+  for (Side& side : sides_) {
+    side.facet_part.resize(side.surface.size());
+    for (std::size_t f = 0; f < side.surface.size(); ++f)
+      side.facet_part[f] = static_cast<std::int32_t>(
+          std::lower_bound(part_ids_.begin(), part_ids_.end(), side.surface.part[f]) -
+          part_ids_.begin());
+  }
+}
+
+void ContactInterface::build_sides(const ContactInput& in,
+                                   std::span<const std::int32_t> secondary_nodes) {
+  const ContactSettings& s = settings_;
+  margin_ = kInfinity;
   smooth_reach_ = smooth_edge_reach(s.edge_angle);
-  double omega2_max = 0.0;
-  // Typical facet size of each side (median of the longest edges), for the subdivision below.
+  // Typical facet size of each side (median of the longest edges), for the subdivision of S2S
+  // facets.
   std::vector<double> typical_size;
   for (const Side& side : sides_) {
     std::vector<double> sizes;
-    for (const auto& facet : side.surface.facets) sizes.push_back(longest_edge(corners_of(facet, in)));
-    std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2), sizes.end());
+    for (const auto& facet : side.surface.facets)
+      sizes.push_back(longest_edge(corners_of(facet, in)));
+    std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2),
+                     sizes.end());
     typical_size.push_back(sizes[sizes.size() / 2]);
   }
   for (std::size_t side_index = 0; side_index < sides_.size(); ++side_index) {
     Side& side = sides_[side_index];
-    const double other_size = typical_size[sides_.size() == 1 ? 0 : 1 - side_index];
     const ContactSurface& surface = side.surface;
     const std::size_t n = surface.size();
     side.sharp = sharp_edges(surface, in.x, in.y, in.z, s.edge_angle);
     side.active.assign(n, 1);
     side.depth.resize(n);
+    side.facet_km.assign(n, 0.0);
     side.node_area.assign(mass_.size(), 0.0);
-    std::vector<FacetPoint> rules[16];
     for (std::size_t f = 0; f < n; ++f) {
       const QuadCorners c = corners_of(surface.facets[f], in);
       if (s.initial_region) {
         const Vec3 centre = quad_point(c, 0.0, 0.0);
         side.active[f] = s.initial_region(centre.x, centre.y, centre.z) ? 1 : 0;
       }
-      side.depth[f] = 0.5 * surface.thickness[f];
+      side.depth[f] = s.detection_depth.value_or(0.5 * surface.thickness[f]);
       margin_ = std::min(margin_, side.depth[f]);
-      // A facet two or more times larger than the facets it meets would press its few points into single
-      // small facets of the other side with the stiffness of its whole area. It is split into
-      // m x m cells about the size of the other side's facets, each integrated with the rule of
-      // the accuracy level, so both sides resolve the overlap alike.
-      const int cells = static_cast<int>(std::clamp(std::floor(longest_edge(c) / other_size), 1.0, 32.0));
-      std::vector<FacetPoint> rule;
-      for (int j = 0; j < cells; ++j) {
-        for (int i = 0; i < cells; ++i) {
-          // Sharp-edge strips only in cells on the facet's sharp edges (edge 0: eta = -1,
-          // 1: xi = +1, 2: eta = +1, 3: xi = -1).
-          std::uint8_t sharp = side.sharp[f];
-          if (j > 0) sharp &= ~1u;
-          if (i < cells - 1) sharp &= ~2u;
-          if (j < cells - 1) sharp &= ~4u;
-          if (i > 0) sharp &= ~8u;
-          std::vector<FacetPoint>& cell_rule = rules[sharp];
-          if (cell_rule.empty()) cell_rule = facet_rule(s.accuracy_level, s.accuracy_edge, sharp);
-          const double inv = 1.0 / cells;
-          for (const FacetPoint& q : cell_rule)
-            rule.push_back({-1.0 + (2.0 * i + 1.0 + q.xi) * inv, -1.0 + (2.0 * j + 1.0 + q.eta) * inv,
-                            q.weight * inv * inv});
-        }
-      }
-      double facet_area = 0.0;
-      for (const FacetPoint& q : rule) {
-        side.point_facet.push_back(static_cast<std::int32_t>(f));
-        side.point_xi.push_back(q.xi);
-        side.point_eta.push_back(q.eta);
-        side.point_weight.push_back(q.weight);
-        double jacobian = 0.0;
-        quad_normal(c, q.xi, q.eta, jacobian);
-        const auto shape = quad_shape(q.xi, q.eta);
-        for (int a = 0; a < 4; ++a) side.node_area[surface.facets[f][a]] += shape[a] * q.weight * jacobian;
-        facet_area += q.weight * jacobian;
-      }
-      // Before contact: a facet's spring pfac*A between its lightest node and an equal mass
-      // on the other side, omega^2 = 2 pfac A / m_min (a conservative bound).
-      double m_min = std::numeric_limits<double>::infinity();
-      for (auto node : surface.facets[f]) m_min = std::min(m_min, mass_[node]);
-      if (m_min > 0.0) omega2_max = std::max(omega2_max, 2.0 * surface.penalty[f] * facet_area / m_min);
+      if (is_radioss_rule(s.stiffness.rule))
+        side.facet_km[f] = main_segment_stiffness(surface.bulk_modulus[f],
+                                                  norm(cross(c[2] - c[0], c[3] - c[1])) * 0.5,
+                                                  surface.element_volume[f], s.stiffness.scale);
+      side.max_km = std::max(side.max_km, side.facet_km[f]);
     }
+    // Node -> facets (CSR), for node normals, areas and thicknesses.
+    side.node_facet_start.assign(mass_.size() + 1, 0);
+    for (const auto& facet : surface.facets)
+      for (int a = 0; a < 4; ++a)
+        if (a == 0 || facet[a] != facet[a - 1]) ++side.node_facet_start[facet[a] + 1];
+    for (std::size_t i = 0; i < mass_.size(); ++i)
+      side.node_facet_start[i + 1] += side.node_facet_start[i];
+    side.node_facets.assign(side.node_facet_start.back(), -1);
+    std::vector<std::int32_t> fill(side.node_facet_start.begin(), side.node_facet_start.end() - 1);
+    for (std::size_t f = 0; f < n; ++f)
+      for (int a = 0; a < 4; ++a)
+        if (a == 0 || surface.facets[f][a] != surface.facets[f][a - 1])
+          side.node_facets[fill[surface.facets[f][a]]++] = static_cast<std::int32_t>(f);
+    const double other_size = typical_size[sides_.size() == 1 ? 0 : 1 - side_index];
+    build_points(side, in, other_size,
+                 side_index == 0 ? secondary_nodes : std::span<const std::int32_t>{});
   }
   if (s.search_margin) margin_ = *s.search_margin;
-  initial_stable_step_ = omega2_max > 0.0 ? 2.0 / std::sqrt(omega2_max) : std::numeric_limits<double>::infinity();
 
   for (const Side& side : sides_)
-    for (const auto& facet : side.surface.facets) surface_nodes_.insert(surface_nodes_.end(), facet.begin(), facet.end());
+    for (const auto& facet : side.surface.facets)
+      surface_nodes_.insert(surface_nodes_.end(), facet.begin(), facet.end());
   std::sort(surface_nodes_.begin(), surface_nodes_.end());
-  surface_nodes_.erase(std::unique(surface_nodes_.begin(), surface_nodes_.end()), surface_nodes_.end());
+  surface_nodes_.erase(std::unique(surface_nodes_.begin(), surface_nodes_.end()),
+                       surface_nodes_.end());
+}
+
+void ContactInterface::build_points(Side& side, const ContactInput& in, double other_size,
+                                    std::span<const std::int32_t> secondary_nodes) {
+  const ContactSettings& s = settings_;
+  const ContactSurface& surface = side.surface;
+  std::vector<double> facet_area(surface.size(), 0.0);
+  auto add_point = [&](std::int32_t f, std::int32_t node, double xi, double eta, double weight) {
+    side.point_facet.push_back(f);
+    side.point_node.push_back(node);
+    side.point_xi.push_back(xi);
+    side.point_eta.push_back(eta);
+    side.point_weight.push_back(weight);
+  };
+  // Integration points (S2S). A facet two or more times larger than the facets it meets would
+  // press its few points into single small facets of the other side with the stiffness of its
+  // whole area: it is split into m x m cells about the size of the other side's facets, each
+  // integrated with the rule of the accuracy level, so both sides resolve the overlap alike.
+  std::vector<FacetPoint> rules[16];
+  for (std::size_t f = 0; f < surface.size(); ++f) {
+    const QuadCorners c = corners_of(surface.facets[f], in);
+    const int cells =
+        static_cast<int>(std::clamp(std::floor(longest_edge(c) / other_size), 1.0, 32.0));
+    for (int j = 0; j < cells; ++j)
+      for (int i = 0; i < cells; ++i) {
+        // Sharp-edge strips only in cells on the facet's sharp edges (edge 0: eta = -1,
+        // 1: xi = +1, 2: eta = +1, 3: xi = -1).
+        std::uint8_t sharp = side.sharp[f];
+        if (j > 0) sharp &= ~1u;
+        if (i < cells - 1) sharp &= ~2u;
+        if (j < cells - 1) sharp &= ~4u;
+        if (i > 0) sharp &= ~8u;
+        std::vector<FacetPoint>& cell_rule = rules[sharp];
+        if (cell_rule.empty()) cell_rule = facet_rule(s.accuracy_level, s.accuracy_edge, sharp);
+        const double inv = 1.0 / cells;
+        for (const FacetPoint& q : cell_rule) {
+          const double xi = -1.0 + (2.0 * i + 1.0 + q.xi) * inv,
+                       eta = -1.0 + (2.0 * j + 1.0 + q.eta) * inv;
+          const double weight = q.weight * inv * inv;
+          double jacobian = 0.0;
+          quad_normal(c, xi, eta, jacobian);
+          const auto shape = quad_shape(xi, eta);
+          for (int a = 0; a < 4; ++a)
+            side.node_area[surface.facets[f][a]] += shape[a] * weight * jacobian;
+          facet_area[f] += weight * jacobian;
+          if (s.discretisation == Discretisation::SurfaceToSurface)
+            add_point(static_cast<std::int32_t>(f), -1, xi, eta, weight);
+        }
+      }
+  }
+  // Nodes (N2S): every node of the surface, or the given ones; a node point sits at corner 0 of
+  // a facet made of its node four times (xi = eta = -1), so the shape functions are (1, 0, 0, 0).
+  if (s.discretisation == Discretisation::NodeToSurface) {
+    std::vector<std::int32_t> nodes(secondary_nodes.begin(), secondary_nodes.end());
+    if (nodes.empty())
+      for (const auto& facet : surface.facets)
+        nodes.insert(nodes.end(), facet.begin(), facet.end());
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    for (const std::int32_t node : nodes) {
+      if (node < 0 || static_cast<std::size_t>(node) >= mass_.size() ||
+          side.node_facet_start[node] == side.node_facet_start[node + 1])
+        throw ContactSetupError("secondary_nodes", "node index " + std::to_string(node) +
+                                                       " is not a node of a surface-1 facet");
+      add_point(side.node_facets[side.node_facet_start[node]], node, -1.0, -1.0, 0.0);
+    }
+  }
+  // Per point: penalty, Radioss secondary stiffness, share of its facet, depth, thickness, part.
+  const std::size_t n = side.point_facet.size();
+  for (auto* v : {&side.point_pfac, &side.point_ks, &side.point_share, &side.point_depth,
+                  &side.point_thickness})
+    v->assign(n, 0.0);
+  side.point_part.assign(n, 0);
+  side.max_point_depth = 0.0;
+  const bool radioss = is_radioss_rule(s.stiffness.rule);
+  for (std::size_t p = 0; p < n; ++p) {
+    const std::int32_t node = side.point_node[p];
+    std::int32_t first = side.point_facet[p], last = first + 1;
+    const std::int32_t* facets = nullptr;
+    if (node >= 0) {  // over the facets around the node
+      facets = side.node_facets.data();
+      first = side.node_facet_start[node];
+      last = side.node_facet_start[node + 1];
+    }
+    for (std::int32_t k = first; k < last; ++k) {
+      const std::int32_t f = facets ? facets[k] : k;
+      side.point_pfac[p] = std::max(side.point_pfac[p], surface.penalty[f]);
+      side.point_thickness[p] = std::max(side.point_thickness[p], surface.thickness[f]);
+      if (radioss)
+        side.point_ks[p] =
+            std::max(side.point_ks[p],
+                     secondary_node_stiffness(surface.bulk_modulus[f], surface.element_volume[f],
+                                              s.stiffness.scale));
+    }
+    side.point_part[p] = side.facet_part[side.point_facet[p]];
+    if (node >= 0) {
+      side.point_share[p] = 1.0;
+    } else {
+      double jacobian = 0.0;
+      quad_normal(corners_of(surface.facets[side.point_facet[p]], in), side.point_xi[p],
+                  side.point_eta[p], jacobian);
+      side.point_share[p] = side.point_weight[p] * jacobian / facet_area[side.point_facet[p]];
+    }
+    side.point_depth[p] = s.detection_depth.value_or(0.5 * side.point_thickness[p]);
+    side.max_point_depth = std::max(side.max_point_depth, side.point_depth[p]);
+  }
 }
 
 void ContactInterface::build_passes() {
   if (sides_.size() == 1) {
     passes_.resize(1);
-    passes_[0] = Pass{};
     passes_[0].weight = 0.5;  // both sides of a self-contact pair are in the one pass
   } else if (settings_.one_way) {
     passes_.resize(1);
@@ -206,16 +381,34 @@ void ContactInterface::build_passes() {
   }
   for (Pass& pass : passes_) {
     const std::size_t n = sides_[pass.own].point_facet.size();
-    pass.state.assign(n, kFree);
-    for (auto* v : {&pass.offset, &pass.htx, &pass.hty, &pass.htz, &pass.tie_xi, &pass.tie_eta})
-      v->assign(n, 0.0);
+    for (auto* v : {&pass.state, &pass.sliding, &pass.adhered, &pass.hit}) v->assign(n, 0);
     pass.tie_facet.assign(n, -1);
-    pass.hit.assign(n, 0);
     pass.hit_facet.assign(n, -1);
-    for (auto* v : {&pass.hit_xi, &pass.hit_eta, &pass.fx, &pass.fy, &pass.fz, &pass.area, &pass.pressure,
-                    &pass.slip_speed, &pass.normal_force, &pass.tangential_force, &pass.energy,
-                    &pass.damping_work, &pass.slip_work, &pass.penetration, &pass.omega2, &pass.qx,
-                    &pass.qy, &pass.qz})
+    for (auto* v : {&pass.offset,
+                    &pass.shift,
+                    &pass.htx,
+                    &pass.hty,
+                    &pass.htz,
+                    &pass.tie_xi,
+                    &pass.tie_eta,
+                    &pass.hit_xi,
+                    &pass.hit_eta,
+                    &pass.fx,
+                    &pass.fy,
+                    &pass.fz,
+                    &pass.area,
+                    &pass.pressure,
+                    &pass.slip_speed,
+                    &pass.normal_force,
+                    &pass.tangential_force,
+                    &pass.energy,
+                    &pass.damping_work,
+                    &pass.slip_work,
+                    &pass.penetration,
+                    &pass.omega2,
+                    &pass.qx,
+                    &pass.qy,
+                    &pass.qz})
       v->assign(n, 0.0);
   }
 }
@@ -228,7 +421,15 @@ std::size_t ContactInterface::point_count() const {
 
 std::size_t ContactInterface::released_points() const {
   std::size_t n = 0;
-  for (const Pass& pass : passes_) n += static_cast<std::size_t>(std::count(pass.state.begin(), pass.state.end(), kReleased));
+  for (const Pass& pass : passes_)
+    n += static_cast<std::size_t>(std::count(pass.state.begin(), pass.state.end(), kReleased));
+  return n;
+}
+
+std::size_t ContactInterface::tied_points() const {
+  std::size_t n = 0;
+  for (const Pass& pass : passes_)
+    n += static_cast<std::size_t>(std::count(pass.state.begin(), pass.state.end(), kTied));
   return n;
 }
 
@@ -238,7 +439,9 @@ bool ContactInterface::needs_rebuild(const ContactInput& in) const {
   // m/2 since the build, a point and a facet cannot have approached each other by more than m.
   double moved2 = 0.0;
   const std::size_t n = surface_nodes_.size();
-#pragma omp parallel for schedule(static) reduction(max : moved2) if (n >= static_cast<std::size_t>(kParallelMinimum))
+#pragma omp parallel for schedule(static) \
+    reduction(max                         \
+              : moved2) if (n >= static_cast <std::size_t>(kParallelMinimum))
   for (std::size_t k = 0; k < n; ++k) {
     const auto i = surface_nodes_[k];
     const double dx = in.x[i] - bx_[k], dy = in.y[i] - by_[k], dz = in.z[i] - bz_[k];
@@ -248,13 +451,15 @@ bool ContactInterface::needs_rebuild(const ContactInput& in) const {
 }
 
 void ContactInterface::rebuild_broad_phase(const ContactInput& in) {
+  const double above =
+      std::max(settings_.adhesion ? settings_.adhesion->zone() : 0.0, settings_.edge_tolerance);
   for (Pass& pass : passes_) {
     const Side& own = sides_[pass.own];
     const Side& target = sides_[pass.target];
     std::vector<Box> boxes(target.surface.size());
     for (std::size_t f = 0; f < boxes.size(); ++f) {
       const QuadCorners c = corners_of(target.surface.facets[f], in);
-      const double grow = std::max(target.depth[f], settings_.edge_tolerance) + margin_;
+      const double grow = std::max({target.depth[f], above}) + margin_;
       for (int k = 0; k < 3; ++k) {
         const double lo = std::min({c[0][k], c[1][k], c[2][k], c[3][k]});
         const double hi = std::max({c[0][k], c[1][k], c[2][k], c[3][k]});
@@ -264,10 +469,12 @@ void ContactInterface::rebuild_broad_phase(const ContactInput& in) {
     }
     pass.grid.build(boxes);
     const std::size_t n = own.point_facet.size();
-#pragma omp parallel for schedule(static) if (n >= static_cast<std::size_t>(kParallelMinimum))
+#pragma omp parallel for schedule(static) if (n >= static_cast <std::size_t>(kParallelMinimum))
     for (std::size_t p = 0; p < n; ++p) {
-      const Vec3 x = quad_point(corners_of(own.surface.facets[own.point_facet[p]], in), own.point_xi[p],
-                                own.point_eta[p]);
+      const std::int32_t node = own.point_node[p];
+      const Vec3 x = node >= 0 ? Vec3{in.x[node], in.y[node], in.z[node]}
+                               : quad_point(corners_of(own.surface.facets[own.point_facet[p]], in),
+                                            own.point_xi[p], own.point_eta[p]);
       pass.qx[p] = x.x;
       pass.qy[p] = x.y;
       pass.qz[p] = x.z;
@@ -285,77 +492,74 @@ void ContactInterface::rebuild_broad_phase(const ContactInput& in) {
   ++builds_;
 }
 
-ContactInterface::Hit ContactInterface::closest_facet(const Pass& pass, std::size_t p, const Vec3& x_p,
-                                                      const Vec3& n_p, const ContactInput& in) const {
-  const Side& own = sides_[pass.own];
-  const Side& target = sides_[pass.target];
-  const auto& own_nodes = own.surface.facets[own.point_facet[p]];
-  const double edge_tolerance = settings_.edge_tolerance;
-  Hit best;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (std::size_t k = pass.candidates.offsets[p]; k < pass.candidates.offsets[p + 1]; ++k) {
-    const std::int32_t f = pass.candidates.facets[k];
-    if (!target.active[f]) continue;
-    const auto& nodes = target.surface.facets[f];
-    // A point never contacts its own facet nor a facet sharing a node with it (self contact).
-    if (share_a_node(own_nodes, nodes)) continue;
-    const QuadCorners c = corners_of(nodes, in);
-    // The distance to the facet's bounding box bounds the distance to the facet from below:
-    // skip facets that cannot be within reach or closer than the best one so far.
-    const double reach = std::max(target.depth[f], edge_tolerance);
-    double box_distance2 = 0.0;
-    for (int i = 0; i < 3; ++i) {
-      const double lo = std::min({c[0][i], c[1][i], c[2][i], c[3][i]});
-      const double hi = std::max({c[0][i], c[1][i], c[2][i], c[3][i]});
-      const double out = std::max({lo - x_p[i], x_p[i] - hi, 0.0});
-      box_distance2 += out * out;
-    }
-    if (box_distance2 > reach * reach || box_distance2 > best_distance * best_distance) continue;
-    const QuadProjection q = project_onto_quad(c, x_p);
-    if (dot(n_p, q.normal) >= 0.0) continue;  // the surfaces must face each other
-    // Beyond a sharp (or free) edge only within delta_edge. Beyond a smooth edge the
-    // neighbouring facet is normally closer and wins, but not when the neighbour itself is
-    // rejected (the point lies beyond the surface's border, next to a sharp edge of the
-    // neighbour): so a smooth edge is passed only within the dead zone of a convex edge, the
-    // wedge between the two facets' normals, whose width at distance |gap| is at most
-    // |gap| tan(alpha_edge) since the normals turn by at most alpha_edge there.
-    if (q.crossed_edges != 0) {
-      const bool sharp = (q.crossed_edges & target.sharp[f]) != 0;
-      const double allowed = sharp ? edge_tolerance : std::max(edge_tolerance, std::abs(q.gap) * smooth_reach_);
-      if (q.overshoot > allowed) continue;
-    }
-    if (q.gap < -target.depth[f]) continue;  // deeper than half the element: the far side
-    if (q.distance < best_distance) {
-      best_distance = q.distance;
-      best = {f, q.xi, q.eta, q.gap};
-    }
-  }
-  return best;
-}
-
-void ContactInterface::initial_penetrations(const ContactInput& in) {
+// Initial penetrations (seed 000 delta0_offset / delta0_max, Radioss Inacti), clearance
+// (OptiStruct CLEARANCE: the gap found at t = 0 is replaced by the clearance) and FREEZE ties,
+// from each point's partner in the initial configuration.
+void ContactInterface::initial_state(const ContactInput& in) {
   rebuild_broad_phase(in);
+  const ContactSettings& s = settings_;
+  initial_stable_step_ = kInfinity;
+  double omega2_max = 0.0;
   for (Pass& pass : passes_) {
     const Side& own = sides_[pass.own];
+    const Side& target = sides_[pass.target];
     const std::size_t n = own.point_facet.size();
-#pragma omp parallel for schedule(dynamic, 256) if (n >= static_cast<std::size_t>(kParallelMinimum) / 4)
+    std::vector<double> omega2(n, 0.0);
+#pragma omp parallel for schedule(dynamic, \
+                                  256) if (n >= static_cast <std::size_t>(kParallelMinimum) / 4)
     for (std::size_t p = 0; p < n; ++p) {
-      const std::int32_t f = own.point_facet[p];
-      if (!own.active[f]) continue;
-      double jacobian = 0.0;
-      const QuadCorners c = corners_of(own.surface.facets[f], in);
-      const Vec3 x_p = quad_point(c, own.point_xi[p], own.point_eta[p]);
-      const Vec3 n_p = quad_normal(c, own.point_xi[p], own.point_eta[p], jacobian);
-      const Hit h = closest_facet(pass, p, x_p, n_p, in);
-      if (h.facet < 0 || !(h.gap < 0.0)) continue;
-      const double depth = -h.gap;
-      const double allowed = settings_.initial_max.value_or(kDefaultInitialMaxFraction * own.surface.thickness[f]);
-      if (depth > allowed)
-        pass.state[p] = kReleased;
-      else
-        pass.offset[p] = std::min(depth, settings_.initial_offset);
+      const PointFrame f = frame(own, p, in);
+      // Stable step bound before any contact: the point's stiffest possible spring on its lightest
+      // node.
+      double m_min = kInfinity;
+      for (auto node : f.nodes) m_min = std::min(m_min, mass_[node]);
+      const double k_bound = spring(own, p, f.area, target, -1);
+      if (m_min > 0.0) omega2[p] = 2.0 * k_bound / m_min;
+      if (!f.active) continue;
+      const Partner h = partner_of(pass, p, f, in, -1);
+      if (h.facet < 0) continue;
+      if (s.freeze) {
+        pass.state[p] = kTied;
+        pass.tie_facet[p] = h.facet;
+        pass.tie_xi[p] = h.xi;
+        pass.tie_eta[p] = h.eta;
+        pass.offset[p] = -h.gap;  // tied at its initial distance, open or closed
+        continue;
+      }
+      const double gap = s.sense == ContactSense::Negative ? -h.gap : h.gap;
+      if (s.clearance) {
+        pass.shift[p] = *s.clearance - gap;
+        continue;
+      }
+      if (!(gap < 0.0) || s.sense == ContactSense::Bilateral) continue;
+      const double depth = -gap;
+      switch (s.initial_penetration) {
+        case InitialPenetration::Force:
+          break;
+        case InitialPenetration::Shift:
+          pass.offset[p] = depth;
+          break;
+        case InitialPenetration::Offset: {
+          const double allowed =
+              s.initial_max.value_or(kDefaultInitialMaxFraction * own.point_thickness[p]);
+          if (depth > allowed)
+            pass.state[p] = kReleased;
+          else
+            pass.offset[p] = std::min(depth, s.initial_offset);
+        }
+      }
+    }
+    // Before contact: S2S sums the springs of a facet's points (a facet's spring on its lightest
+    // node).
+    if (own.point_node.empty() || own.point_node[0] < 0) {
+      std::vector<double> per_facet(own.surface.size(), 0.0);
+      for (std::size_t p = 0; p < n; ++p) per_facet[own.point_facet[p]] += omega2[p];
+      for (double w : per_facet) omega2_max = std::max(omega2_max, w);
+    } else {
+      for (double w : omega2) omega2_max = std::max(omega2_max, w);
     }
   }
+  if (omega2_max > 0.0) initial_stable_step_ = 2.0 / std::sqrt(omega2_max);
 }
 
 void ContactInterface::update_moving_region(const ContactInput& in) {
@@ -368,161 +572,63 @@ void ContactInterface::update_moving_region(const ContactInput& in) {
     }
 }
 
-void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactInput& in) {
-  pass.hit[p] = 0;
-  const Side& own = sides_[pass.own];
-  const Side& target = sides_[pass.target];
-  const std::int32_t f_own = own.point_facet[p];
-  if (pass.state[p] == kReleased || !own.active[f_own]) return;
-
-  const auto& own_nodes = own.surface.facets[f_own];
-  const QuadCorners c_own = corners_of(own_nodes, in);
-  const double xi = own.point_xi[p], eta = own.point_eta[p];
-  const auto shape = quad_shape(xi, eta);
-  double jacobian = 0.0;
-  const Vec3 n_p = quad_normal(c_own, xi, eta, jacobian);
-  const Vec3 x_p = quad_point(c_own, xi, eta);
-  const Vec3 v_p = velocity_at(own_nodes, shape, in);
-  const double area = own.point_weight[p] * jacobian;
-  // The point's share of each node's mass: m_i * N_i * (its area / the node's area), so that
-  // the shares of all points add up to the nodal masses.
-  auto mass_share = [&](const Side& side, const std::array<std::int32_t, 4>& nodes,
-                        const std::array<double, 4>& n) {
-    double m = 0.0;
-    // On the other side a point may cover more than a node's area: never more than the node.
-    for (int a = 0; a < 4; ++a)
-      if (side.node_area[nodes[a]] > 0.0)
-        m += mass_[nodes[a]] * std::min(1.0, n[a] * area / side.node_area[nodes[a]]);
-    return m;
-  };
-  const double m_own = mass_share(own, own_nodes, shape);
-
-  struct Partner {
-    Vec3 point, normal, velocity;
-    double stiffness, effective_mass, damping;
-  };
-  auto partner = [&](std::int32_t f, double pxi, double peta) {
-    const auto& nodes = target.surface.facets[f];
-    const QuadCorners c = corners_of(nodes, in);
-    const auto n = quad_shape(pxi, peta);
-    Partner r;
-    double jac = 0.0;
-    r.point = quad_point(c, pxi, peta);
-    r.normal = quad_normal(c, pxi, peta, jac);
-    r.velocity = velocity_at(nodes, n, in);
-    r.stiffness = pair_penalty(own.surface.penalty[f_own], target.surface.penalty[f]) * area;
-    const double m_target = mass_share(target, nodes, n);
-    r.effective_mass = m_own + m_target > 0.0 ? m_own * m_target / (m_own + m_target) : 0.0;
-    // Fraction xi of the critical damping 2 sqrt(k m) of the point's spring.
-    r.damping = 2.0 * settings_.damping * std::sqrt(r.stiffness * r.effective_mass);
-    return r;
-  };
-  auto record = [&](std::int32_t f, double pxi, double peta, const Partner& r, const Vec3& force) {
-    pass.hit[p] = 1;
-    pass.hit_facet[p] = f;
-    pass.hit_xi[p] = pxi;
-    pass.hit_eta[p] = peta;
-    pass.fx[p] = force.x;
-    pass.fy[p] = force.y;
-    pass.fz[p] = force.z;
-    pass.area[p] = area;
-    pass.omega2[p] = r.effective_mass > 0.0 ? r.stiffness / r.effective_mass : 0.0;
-  };
-  auto clear_history = [&] { pass.htx[p] = pass.hty[p] = pass.htz[p] = 0.0; };
-
-  // Sticking contact: a spring to the fixed partner point, in every direction, in tension too,
-  // until its traction exceeds sigma_stick.
-  auto tied = [&]() {
-    const std::int32_t f = pass.tie_facet[p];
-    if (!target.active[f]) return false;
-    const Partner r = partner(f, pass.tie_xi[p], pass.tie_eta[p]);
-    const Vec3 stretch = x_p - r.point + r.normal * pass.offset[p];
-    const Vec3 v_rel = v_p - r.velocity;
-    const Vec3 force = stretch * (-r.stiffness) - v_rel * r.damping;
-    if (norm(force) > *settings_.stick_stress * area) return false;  // fails for good
-    record(f, pass.tie_xi[p], pass.tie_eta[p], r, force);
-    const double fn = dot(force, r.normal);
-    pass.normal_force[p] = fn;
-    pass.tangential_force[p] = norm(force - r.normal * fn);
-    pass.pressure[p] = fn / area;
-    pass.slip_speed[p] = norm(v_rel - r.normal * dot(v_rel, r.normal));
-    pass.energy[p] = 0.5 * r.stiffness * dot(stretch, stretch);
-    pass.damping_work[p] = r.damping * dot(v_rel, v_rel) * in.dt;
-    pass.slip_work[p] = 0.0;
-    pass.penetration[p] = std::max(-dot(stretch, r.normal), 0.0);
-    return true;
-  };
-
-  if (pass.state[p] == kTied) {
-    if (tied()) return;
-    pass.state[p] = kUntied;
+std::vector<PairStiffness> ContactInterface::pair_stiffness() const {
+  // Every rule is increasing in both sides' values, so the range over a part pair follows from
+  // the ranges of the point values (own side) and the facet values (target side) of each part.
+  const std::size_t np = part_ids_.size();
+  const bool radioss = is_radioss_rule(settings_.stiffness.rule);
+  std::vector<double> lo(np * np, kInfinity), hi(np * np, 0.0);
+  for (const Pass& pass : passes_) {
+    const Side& own = sides_[pass.own];
+    const Side& target = sides_[pass.target];
+    std::vector<double> own_lo(np, kInfinity), own_hi(np, 0.0), target_lo(np, kInfinity),
+        target_hi(np, 0.0);
+    for (std::size_t p = 0; p < own.point_facet.size(); ++p) {
+      const double v = radioss ? own.point_ks[p] : own.point_pfac[p];
+      own_lo[own.point_part[p]] = std::min(own_lo[own.point_part[p]], v);
+      own_hi[own.point_part[p]] = std::max(own_hi[own.point_part[p]], v);
+    }
+    for (std::size_t f = 0; f < target.surface.size(); ++f) {
+      const double v = radioss ? target.facet_km[f] : target.surface.penalty[f];
+      target_lo[target.facet_part[f]] = std::min(target_lo[target.facet_part[f]], v);
+      target_hi[target.facet_part[f]] = std::max(target_hi[target.facet_part[f]], v);
+    }
+    for (std::size_t a = 0; a < np; ++a)
+      for (std::size_t b = 0; b < np; ++b) {
+        if (own_hi[a] == 0.0 || target_hi[b] == 0.0) continue;
+        const double scale = part_scale_[a * np + b];
+        const double k_lo =
+            scale * (radioss ? combined_stiffness(settings_.stiffness, target_lo[b], own_lo[a])
+                             : std::min(own_lo[a], target_lo[b]));
+        const double k_hi =
+            scale * (radioss ? combined_stiffness(settings_.stiffness, target_hi[b], own_hi[a])
+                             : std::min(own_hi[a], target_hi[b]));
+        const std::size_t i = pass.own == 0 ? a * np + b : b * np + a;  // surface-1 part first
+        lo[i] = std::min(lo[i], k_lo);
+        hi[i] = std::max(hi[i], k_hi);
+      }
   }
-
-  const Hit h = closest_facet(pass, p, x_p, n_p, in);
-  if (h.facet < 0) {
-    clear_history();
-    pass.offset[p] = 0.0;
-    return;
-  }
-  if (h.gap >= 0.0) pass.offset[p] = 0.0;  // separated: the initial offset has done its job
-  if (settings_.stick_stress && pass.state[p] == kFree &&
-      h.gap <= kTieGapFraction * own.surface.thickness[f_own]) {
-    pass.state[p] = kTied;
-    pass.tie_facet[p] = h.facet;
-    pass.tie_xi[p] = h.xi;
-    pass.tie_eta[p] = h.eta;
-    if (tied()) return;
-    pass.state[p] = kUntied;
-  }
-  const double penetration = -h.gap - pass.offset[p];
-  if (!(penetration > 0.0)) {
-    clear_history();
-    return;
-  }
-
-  const Partner r = partner(h.facet, h.xi, h.eta);
-  const Vec3 v_rel = v_p - r.velocity;
-  const double v_n = dot(v_rel, r.normal);  // < 0 while approaching
-  const double elastic = r.stiffness * penetration;
-  // Damping may reduce the push but never pulls: contact carries no tension.
-  const double fn = std::max(elastic - r.damping * v_n, 0.0);
-  const Vec3 v_t = v_rel - r.normal * v_n;
-  const double slip_speed = norm(v_t);
-  double mu = settings_.friction;
-  if (settings_.friction_function)
-    mu = settings_.friction_function(fn / area, slip_speed, in.time, x_p.x, x_p.y, x_p.z);
-  Vec3 ft;
-  double slip_work = 0.0;
-  if (mu > 0.0) {
-    const auto t = CoulombFriction{r.stiffness}.evaluate({pass.htx[p], pass.hty[p], pass.htz[p]}, r.normal,
-                                                         v_t, in.dt, mu * fn);
-    ft = t.force;
-    slip_work = t.slip_work;
-  }
-  pass.htx[p] = ft.x;
-  pass.hty[p] = ft.y;
-  pass.htz[p] = ft.z;
-  record(h.facet, h.xi, h.eta, r, r.normal * fn + ft);
-  pass.normal_force[p] = fn;
-  pass.tangential_force[p] = norm(ft);
-  pass.pressure[p] = fn / area;
-  pass.slip_speed[p] = slip_speed;
-  pass.energy[p] = 0.5 * r.stiffness * penetration * penetration + 0.5 * dot(ft, ft) / r.stiffness;
-  pass.damping_work[p] = (fn - elastic) * (-v_n) * in.dt;
-  pass.slip_work[p] = slip_work;
-  pass.penetration[p] = penetration;
+  std::vector<PairStiffness> out;
+  for (std::size_t a = 0; a < np; ++a)
+    for (std::size_t b = 0; b < np; ++b)
+      if (hi[a * np + b] > 0.0)
+        out.push_back(
+            {part_ids_[a], part_ids_[b], part_scale_[a * np + b], lo[a * np + b], hi[a * np + b]});
+  return out;
 }
 
 void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   const std::size_t node_count = mass_.size();
-  for (std::size_t size : {in.x.size(), in.y.size(), in.z.size(), in.vx.size(), in.vy.size(), in.vz.size(),
-                           out.fx.size(), out.fy.size(), out.fz.size()})
+  for (std::size_t size : {in.x.size(), in.y.size(), in.z.size(), in.vx.size(), in.vy.size(),
+                           in.vz.size(), out.fx.size(), out.fy.size(), out.fz.size()})
     if (size < node_count)
-      throw std::invalid_argument("ContactInterface::apply: nodal arrays shorter than the node masses");
+      throw std::invalid_argument(
+          "ContactInterface::apply: nodal arrays shorter than the node masses");
   stats_.force = {};
-  stats_.normal_force = stats_.tangential_force = stats_.elastic_energy = stats_.max_penetration = 0.0;
+  stats_.normal_force = stats_.tangential_force = stats_.elastic_energy = stats_.max_penetration =
+      0.0;
   stats_.active_points = 0;
-  stats_.stable_step = std::numeric_limits<double>::infinity();
+  stats_.stable_step = kInfinity;
   for (auto i : surface_nodes_) pressure_[i] = 0.0;
   if (in.time < settings_.begin_time || in.time > settings_.end_time) {
     for (Pass& pass : passes_) {  // outside the window: no forces and no friction memory
@@ -536,70 +642,11 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   if (needs_rebuild(in)) rebuild_broad_phase(in);
   for (Pass& pass : passes_) {
     const std::size_t n = pass.state.size();
-#pragma omp parallel for schedule(dynamic, 256) if (n >= static_cast<std::size_t>(kParallelMinimum) / 4)
+#pragma omp parallel for schedule(dynamic, \
+                                  256) if (n >= static_cast <std::size_t>(kParallelMinimum) / 4)
     for (std::size_t p = 0; p < n; ++p) evaluate_point(pass, p, in);
   }
   scatter(in, out);
-}
-
-void ContactInterface::scatter(const ContactInput& in, ContactForces& out) {
-  const WearRateFunction* wear_rate[2] = {&settings_.wear_rate1, &settings_.wear_rate2};
-  if (self_contact() && !settings_.wear_rate1) wear_rate[0] = &settings_.wear_rate2;
-  double omega2_max = 0.0;
-  // Serial, in point order: the sums do not depend on the thread count.
-  for (const Pass& pass : passes_) {
-    const Side& own = sides_[pass.own];
-    const Side& target = sides_[pass.target];
-    const double w = pass.weight;
-    for (std::size_t p = 0; p < pass.hit.size(); ++p) {
-      if (!pass.hit[p]) continue;
-      const auto& own_nodes = own.surface.facets[own.point_facet[p]];
-      const auto& target_nodes = target.surface.facets[pass.hit_facet[p]];
-      const auto n_own = quad_shape(own.point_xi[p], own.point_eta[p]);
-      const auto n_target = quad_shape(pass.hit_xi[p], pass.hit_eta[p]);
-      const Vec3 force = Vec3{pass.fx[p], pass.fy[p], pass.fz[p]} * w;
-      // Action on the point's nodes, reaction on the partner facet's nodes at the projection.
-      for (int a = 0; a < 4; ++a) {
-        out.fx[own_nodes[a]] += force.x * n_own[a];
-        out.fy[own_nodes[a]] += force.y * n_own[a];
-        out.fz[own_nodes[a]] += force.z * n_own[a];
-      }
-      for (int a = 0; a < 4; ++a) {
-        out.fx[target_nodes[a]] -= force.x * n_target[a];
-        out.fy[target_nodes[a]] -= force.y * n_target[a];
-        out.fz[target_nodes[a]] -= force.z * n_target[a];
-      }
-      if (pass.own == 0) stats_.force += force;
-      if (pass.target == 0) stats_.force -= force;
-      stats_.normal_force += w * pass.normal_force[p];
-      stats_.tangential_force += w * pass.tangential_force[p];
-      stats_.elastic_energy += w * pass.energy[p];
-      stats_.damping_energy += w * pass.damping_work[p];
-      stats_.friction_energy += w * pass.slip_work[p];
-      stats_.max_penetration = std::max(stats_.max_penetration, pass.penetration[p]);
-      ++stats_.active_points;
-      omega2_max = std::max(omega2_max, pass.omega2[p]);
-
-      // Nodal pressure and wear: area-weighted averages over each node's tributary area.
-      const double load = w * pass.area[p];
-      for (int a = 0; a < 4; ++a) {
-        pressure_[own_nodes[a]] += load * n_own[a] * pass.pressure[p] / own.node_area[own_nodes[a]];
-        pressure_[target_nodes[a]] += load * n_target[a] * pass.pressure[p] / target.node_area[target_nodes[a]];
-      }
-      const WearRateFunction& own_rate = *wear_rate[self_contact() ? 0 : pass.own];
-      const WearRateFunction& target_rate = *wear_rate[self_contact() ? 0 : pass.target];
-      if (own_rate) {
-        const double dose = load * own_rate(pass.pressure[p], pass.slip_speed[p]) * in.dt;
-        for (int a = 0; a < 4; ++a) wear_[own_nodes[a]] += dose * n_own[a] / own.node_area[own_nodes[a]];
-      }
-      if (target_rate) {
-        const double dose = load * target_rate(pass.pressure[p], pass.slip_speed[p]) * in.dt;
-        for (int a = 0; a < 4; ++a)
-          wear_[target_nodes[a]] += dose * n_target[a] / target.node_area[target_nodes[a]];
-      }
-    }
-  }
-  if (omega2_max > 0.0) stats_.stable_step = 2.0 / std::sqrt(omega2_max);
 }
 
 }  // namespace abut

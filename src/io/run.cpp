@@ -185,8 +185,9 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
     }
     json.end_array();
     json.key("penalty_per_pair").begin_array();
-    for (const PairPenalty& p : c.pairs) {
-      json.begin_object().member("part1", p.part1).member("part2", p.part2).member("pfac", p.penalty);
+    for (const PairStiffness& p : c.pairs) {
+      json.begin_object().member("part1", p.part1).member("part2", p.part2).member("scale", p.scale);
+      json.member("penalty_min", p.penalty_min).member("penalty_max", p.penalty_max);
       json.end_object();
     }
     json.end_array();

@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <string>
 
 #include "abut/contact/penalty.hpp"
-#include "abut/contact/surface.hpp"
 #include "abut/mesh/skin.hpp"
+#include "abut/solver/contact_surfaces.hpp"
 
 namespace abut {
 
@@ -29,9 +30,11 @@ std::vector<SkinFace> faces_of(const Model& model, const EntityRef& entity, bool
   return faces;
 }
 
-double max_initial_speed(std::span<const double> vx, std::span<const double> vy, std::span<const double> vz) {
+double max_initial_speed(std::span<const double> vx, std::span<const double> vy,
+                         std::span<const double> vz) {
   double v2 = 0.0;
-  for (std::size_t i = 0; i < vx.size(); ++i) v2 = std::max(v2, vx[i] * vx[i] + vy[i] * vy[i] + vz[i] * vz[i]);
+  for (std::size_t i = 0; i < vx.size(); ++i)
+    v2 = std::max(v2, vx[i] * vx[i] + vy[i] * vy[i] + vz[i] * vz[i]);
   return std::sqrt(v2);
 }
 
@@ -43,9 +46,10 @@ std::map<std::int64_t, PartPenalty> part_penalties(const Model& model, const Con
   for (const auto* faces : {&s1, &s2})
     for (const SkinFace& f : *faces) out[f.part].part_id = f.part;
   if (!spec.penalty && !model.units)
-    throw InputError(spec.where, "neither pfac nor *UNIT_SYSTEM is given: the automatic penalty "
-                                 "stiffness is defined in SI units (seed 000), so state the unit "
-                                 "system with *UNIT_SYSTEM or give pfac on line 2");
+    throw InputError(spec.where,
+                     "neither pfac nor *UNIT_SYSTEM is given: the automatic penalty "
+                     "stiffness is defined in SI units (seed 000), so state the unit "
+                     "system with *UNIT_SYSTEM or give pfac on line 2");
   for (auto& [part_id, p] : out) {
     if (spec.penalty) {
       p.penalty = *spec.penalty;
@@ -53,40 +57,98 @@ std::map<std::int64_t, PartPenalty> part_penalties(const Model& model, const Con
     }
     const MaterialParams& material = model.material_of_part(part_id);
     p.automatic = true;
-    p.penalty = is_rigid(material)
-                    ? rigid_penalty(v_max, *model.units)
-                    : automatic_penalty(initial_moduli(material).bulk, smallest_element_volume(model.mesh, part_id),
-                                        v_max, *model.units);
+    p.penalty = is_rigid(material) ? rigid_penalty(v_max, *model.units)
+                                   : automatic_penalty(initial_moduli(material).bulk,
+                                                       smallest_element_volume(model.mesh, part_id),
+                                                       v_max, *model.units);
   }
   return out;
 }
 
+// The tangential law of a contact: *CONTACT_FRICTION, or seed 000's Coulomb mu (constant or fcn).
+TangentialLaw tangential_law_of(const ContactSpec& spec, const FunctionTable* table, double term) {
+  using Law = ContactSpec::FrictionLaw;
+  const auto& c = spec.friction_c;
+  switch (spec.friction_law) {
+    case Law::Impetus: {
+      Coulomb law{spec.friction, spec.friction, {}, {}};
+      if (spec.friction_function.valid()) {
+        const FunctionRef mu = spec.friction_function;
+        law.function = [table, mu, term](double pres, double vtang, double t, double x, double y,
+                                         double z) {
+          Variables v;
+          v.pres = pres;
+          v.vtang = vtang;
+          v.t = t;
+          v.term = term;
+          v.x = x;
+          v.y = y;
+          v.z = z;
+          return table->value(mu, v);
+        };
+      } else if (spec.friction == 0.0) {
+        return Frictionless{};
+      }
+      return law;
+    }
+    case Law::None:
+    case Law::Freeze:
+      return Frictionless{};
+    case Law::Coulomb:
+      return Coulomb{spec.mu_static, spec.mu_dynamic, {}, {}};
+    case Law::Tresca:
+      return Tresca{c[0], c[1], c[2]};
+    case Law::Stick:
+      return Sticking{};
+    case Law::Viscous:
+      return Coulomb{0.0, 0.0, {}, ViscousFriction{spec.mu_static, c}};
+    case Law::Darmstad:
+      return Coulomb{0.0, 0.0, {}, DarmstadFriction{spec.mu_static, c}};
+    case Law::Renard:
+      return Coulomb{0.0, 0.0, {}, RenardFriction{c}};
+  }
+  return Frictionless{};
+}
+
 ContactSettings settings_of(const Model& model, const ContactSpec& spec) {
   if (spec.thermal.valid())
-    throw InputError(spec.where, "fid_thermal (contact heat conduction) is not supported yet: abut has "
-                                 "no thermal solution yet");
+    throw InputError(spec.where,
+                     "fid_thermal (contact heat conduction) is not supported yet: abut has "
+                     "no thermal solution yet");
   if (spec.friction_heat)
-    throw InputError(spec.where, "fric_heat = 1 (friction work to heat) is not supported yet: abut has "
-                                 "no thermal solution yet");
+    throw InputError(spec.where,
+                     "fric_heat = 1 (friction work to heat) is not supported yet: abut has "
+                     "no thermal solution yet");
   ContactSettings s;
   s.accuracy_level = spec.accuracy_level;
   s.accuracy_edge = spec.accuracy_edge;
-  s.friction = spec.friction;
   const FunctionTable* table = &model.functions;
   const double term = model.time.end_time;
-  if (spec.friction_function.valid()) {
-    const FunctionRef mu = spec.friction_function;
-    s.friction_function = [table, mu, term](double pres, double vtang, double t, double x, double y, double z) {
+  s.discretisation = spec.discretisation;
+  s.tangential_law = tangential_law_of(spec, table, term);
+  s.freeze = spec.friction_law == ContactSpec::FrictionLaw::Freeze;
+  s.tangential_penalty = spec.tangential_penalty;
+  s.friction_filter = spec.friction_filter;
+  if (spec.penalty_curve.valid()) {
+    const FunctionRef f = spec.penalty_curve;
+    s.normal_law = CurvePenalty{[table, f, term](double d) {
       Variables v;
-      v.pres = pres;
-      v.vtang = vtang;
-      v.t = t;
       v.term = term;
-      v.x = x;
-      v.y = y;
-      v.z = z;
-      return table->value(mu, v);
-    };
+      return table->value(f, d, v);
+    }};
+  }
+  s.sense = spec.sense;
+  s.detection_depth = spec.detection_depth;
+  s.clearance = spec.clearance;
+  s.adhesion = spec.adhesion;
+  s.stiffness = spec.stiffness;
+  s.initial_penetration = spec.initial_penetration;
+  for (const ContactSpec::Scale& sc : spec.pair_scales) {
+    PairScale ps;
+    if (sc.set1) ps.parts1 = model.parts_of(*sc.set1);
+    if (sc.set2) ps.parts2 = model.parts_of(*sc.set2);
+    ps.scale = sc.scale;
+    s.pair_scales.push_back(std::move(ps));
   }
   const auto wear_rate = [table, term](FunctionRef f) -> WearRateFunction {
     if (!f.valid()) return {};
@@ -106,7 +168,9 @@ ContactSettings settings_of(const Model& model, const ContactSpec& spec) {
     if (!g) throw InputError(spec.where, "geometry " + std::to_string(*gid) + " does not exist");
     const Geometry* geometry = &g->geometry;
     const Mesh* mesh = &model.mesh;
-    return [geometry, mesh](double x, double y, double z) { return geometry_contains(*geometry, {x, y, z}, *mesh); };
+    return [geometry, mesh](double x, double y, double z) {
+      return geometry_contains(*geometry, {x, y, z}, *mesh);
+    };
   };
   s.initial_region = region(spec.initial_geometry);
   s.moving_region = region(spec.moving_geometry);
@@ -119,40 +183,128 @@ ContactSettings settings_of(const Model& model, const ContactSpec& spec) {
   s.edge_angle = spec.edge_angle;
   s.one_way = spec.one_way;
   s.stick_stress = spec.stick_stress;
-  s.where = spec.where;
+  if (!spec.symmetric)
+    s.one_way = spec.one_way || spec.surface1.type == EntityType::NodeSet;
+  else
+    s.one_way = !*spec.symmetric;
   return s;
+}
+
+// The exterior faces holding at least one of `nodes`; InputError if a node is on none.
+std::vector<SkinFace> faces_touching(const std::vector<SkinFace>& faces,
+                                     const std::vector<std::int32_t>& nodes, std::size_t node_count,
+                                     const EntityRef& entity) {
+  std::vector<std::uint8_t> wanted(node_count, 0), found(node_count, 0);
+  for (auto n : nodes) wanted[static_cast<std::size_t>(n)] = 1;
+  std::vector<SkinFace> out;
+  for (const SkinFace& f : faces) {
+    bool hit = false;
+    for (auto n : f.nodes) hit = hit || wanted[static_cast<std::size_t>(n)];
+    if (!hit) continue;
+    out.push_back(f);
+    for (auto n : f.nodes) found[static_cast<std::size_t>(n)] = 1;
+  }
+  for (auto n : nodes)
+    if (!found[static_cast<std::size_t>(n)])
+      throw InputError(entity.where,
+                       "node set " + std::to_string(entity.id) +
+                           " holds a node that is not on the model's exterior surface; node-to-"
+                           "surface contact of free nodes is not supported yet");
+  return out;
+}
+
+// Bulk modulus for the Radioss stiffness rules. A rigid part has none: it gets the modulus that
+// gives seed 000's rigid penalty over its smallest element, K = pfac_rigid * L_min.
+double radioss_bulk_modulus(const Model& model, std::int64_t part, const PartPenalty& p) {
+  const MaterialParams& material = model.material_of_part(part);
+  if (!is_rigid(material)) return initial_moduli(material).bulk;
+  return p.penalty * std::cbrt(smallest_element_volume(model.mesh, part));
+}
+
+// The deck field behind a contact-library setting, for error messages.
+SourceLocation location_of(const ContactSpec& spec, const std::string& setting) {
+  struct Field {
+    const char* setting;
+    const SourceLocation ContactSpec::*where;
+    const char* field;
+  };
+  static const Field fields[] = {
+      {"accuracy_level", &ContactSpec::where, "accuracy_level"},
+      {"damping", &ContactSpec::where, "xi"},
+      {"end_time", &ContactSpec::where, "t_end"},
+      {"initial_offset", &ContactSpec::where, "delta0_offset"},
+      {"initial_max", &ContactSpec::where, "delta0_max"},
+      {"edge_tolerance", &ContactSpec::where, "delta_edge"},
+      {"edge_angle", &ContactSpec::where, "alpha_edge"},
+      {"stick_stress", &ContactSpec::where, "sigma_stick"},
+      {"one_way", &ContactSpec::where, "one_way"},
+      {"surface1", &ContactSpec::where, "enid_1"},
+      {"surface2", &ContactSpec::where, "enid_2"},
+      {"secondary_nodes", &ContactSpec::where, "enid_1"},
+      {"detection_depth", &ContactSpec::normal_where, "depth"},
+      {"clearance", &ContactSpec::normal_where, "clearance"},
+      {"normal_law", &ContactSpec::normal_where, "law"},
+      {"tangential_law", &ContactSpec::friction_where, "law"},
+      {"tangential_penalty", &ContactSpec::friction_where, "pen_t"},
+      {"friction_filter", &ContactSpec::friction_where, "filter"},
+      {"freeze", &ContactSpec::friction_where, "law"},
+      {"stiffness", &ContactSpec::stiffness_where, "rule"},
+      {"discretisation", &ContactSpec::discretisation_where, "method"},
+  };
+  for (const Field& f : fields)
+    if (setting == f.setting) {
+      SourceLocation where = spec.*f.where;
+      if (where.file.empty()) where = spec.where;
+      where.field = f.field;
+      return where;
+    }
+  return spec.where;
 }
 
 }  // namespace
 
-ContactSet::ContactSet(const Model& model, std::span<const double> node_mass, std::span<const double> vx0,
-                       std::span<const double> vy0, std::span<const double> vz0)
+ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
+                       std::span<const double> vx0, std::span<const double> vy0,
+                       std::span<const double> vz0)
     : model_(model) {
   const double v_max = max_initial_speed(vx0, vy0, vz0);
   const Nodes& nodes = model.mesh.nodes;
   const ContactInput initial{nodes.x, nodes.y, nodes.z, vx0, vy0, vz0, model.time.start_time, 0.0};
   for (const ContactSpec& spec : model.contacts) {
-    const std::vector<SkinFace> faces1 = faces_of(model, spec.surface1, spec.merge);
+    // Node-to-surface of a node group: its nodes on the model's exterior faces that hold them.
+    std::vector<std::int32_t> secondary_nodes;
+    std::vector<SkinFace> faces1;
+    if (spec.surface1.type == EntityType::NodeSet) {
+      secondary_nodes = model.nodes_of(spec.surface1);
+      faces1 = faces_touching(exterior_faces(model.mesh, spec.merge), secondary_nodes, nodes.size(),
+                              spec.surface1);
+    } else {
+      faces1 = faces_of(model, spec.surface1, spec.merge);
+    }
     const std::vector<SkinFace> faces2 = faces_of(model, spec.surface2, spec.merge);
-    const std::map<std::int64_t, PartPenalty> penalties = part_penalties(model, spec, faces1, faces2, v_max);
+    const std::map<std::int64_t, PartPenalty> penalties =
+        part_penalties(model, spec, faces1, faces2, v_max);
     const auto penalty_of = [&penalties](std::int64_t part) { return penalties.at(part).penalty; };
+    std::function<double(std::int64_t)> bulk_of;
+    if (spec.stiffness.rule != StiffnessRule::FacetPenalty)
+      bulk_of = [&model, &penalties](std::int64_t part) {
+        return radioss_bulk_modulus(model, part, penalties.at(part));
+      };
 
     ContactReport report;
     report.id = spec.id;
     report.title = spec.title;
     for (const auto& [part, p] : penalties) report.parts.push_back(p);
-    std::vector<std::int64_t> parts1, parts2;
-    for (const SkinFace& f : faces1) parts1.push_back(f.part);
-    for (const SkinFace& f : faces2) parts2.push_back(f.part);
-    for (auto* parts : {&parts1, &parts2}) {
-      std::sort(parts->begin(), parts->end());
-      parts->erase(std::unique(parts->begin(), parts->end()), parts->end());
+    report.discretisation = spec.discretisation;
+    try {
+      interfaces_.emplace_back(settings_of(model, spec),
+                               contact_surface(model.mesh, faces1, penalty_of, bulk_of),
+                               contact_surface(model.mesh, faces2, penalty_of, bulk_of), node_mass,
+                               initial, secondary_nodes);
+    } catch (const ContactSetupError& e) {
+      throw InputError(location_of(spec, e.setting()), e.what());
     }
-    for (const std::int64_t a : parts1)
-      for (const std::int64_t b : parts2) report.pairs.push_back({a, b, pair_penalty(penalty_of(a), penalty_of(b))});
-
-    interfaces_.emplace_back(settings_of(model, spec), make_contact_surface(faces1, penalty_of),
-                             make_contact_surface(faces2, penalty_of), node_mass, initial);
+    report.pairs = interfaces_.back().pair_stiffness();
     report.points = interfaces_.back().point_count();
     report.released_points = interfaces_.back().released_points();
     reports_.push_back(std::move(report));
@@ -162,7 +314,8 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass, st
   cfz_.assign(nodes.size(), 0.0);
 }
 
-void ContactSet::apply(const ContactInput& in, std::span<double> fx, std::span<double> fy, std::span<double> fz) {
+void ContactSet::apply(const ContactInput& in, std::span<double> fx, std::span<double> fy,
+                       std::span<double> fz) {
   if (interfaces_.empty()) return;
   std::fill(cfx_.begin(), cfx_.end(), 0.0);
   std::fill(cfy_.begin(), cfy_.end(), 0.0);
@@ -182,7 +335,8 @@ void ContactSet::apply(const ContactInput& in, std::span<double> fx, std::span<d
 double ContactSet::stable_step(std::int64_t* limiting_contact) const {
   double step = std::numeric_limits<double>::infinity();
   for (std::size_t c = 0; c < interfaces_.size(); ++c) {
-    const double s = std::min(interfaces_[c].initial_stable_step(), interfaces_[c].stats().stable_step);
+    const double s =
+        std::min(interfaces_[c].initial_stable_step(), interfaces_[c].stats().stable_step);
     if (s < step) {
       step = s;
       if (limiting_contact) *limiting_contact = reports_[c].id;
@@ -193,7 +347,8 @@ double ContactSet::stable_step(std::int64_t* limiting_contact) const {
 
 double ContactSet::elastic_and_damping_energy() const {
   double e = 0.0;
-  for (const ContactInterface& c : interfaces_) e += c.stats().elastic_energy + c.stats().damping_energy;
+  for (const ContactInterface& c : interfaces_)
+    e += c.stats().elastic_energy + c.stats().damping_energy;
   return e;
 }
 

@@ -1,7 +1,5 @@
 // Contact interface: penalty, damping, friction, activation, initial penetration, sticking,
 // self contact, wear, regions, thread independence. References in each test.
-#include "abut/contact/interface.hpp"
-
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -9,6 +7,7 @@
 #include <cstring>
 #include <numbers>
 
+#include "abut/contact/interface.hpp"
 #include "fixtures.hpp"
 
 namespace abut {
@@ -29,15 +28,17 @@ struct Pair {
   World w;
   ContactSurface lower, upper;
   std::int32_t upper_first = 0, end = 0;
-  Pair(double upper_z, double pfac_upper, double pfac_lower, bool big_lower = false, double m_upper = 1.0,
-       double m_lower = 1.0) {
+  Pair(double upper_z, double pfac_upper, double pfac_lower, bool big_lower = false,
+       double m_upper = 1.0, double m_lower = 1.0) {
     lower = big_lower ? add_plate(w, 3, 3, -1, -1, 3, 3, 0.0, true, pfac_lower, 1.0, m_lower, 2)
                       : add_plate(w, 1, 1, 0, 0, 1, 1, 0.0, true, pfac_lower, 1.0, m_lower, 2);
     upper_first = static_cast<std::int32_t>(w.x.size());
     upper = add_plate(w, 1, 1, 0, 0, 1, 1, upper_z, false, pfac_upper, 1.0, m_upper, 1);
     end = static_cast<std::int32_t>(w.x.size());
   }
-  ContactInterface make(ContactSettings s) { return ContactInterface(std::move(s), upper, lower, w.mass, w.input()); }
+  ContactInterface make(ContactSettings s) {
+    return ContactInterface(std::move(s), upper, lower, w.mass, w.input());
+  }
   void move_upper(double dx, double dy, double dz) { w.shift(upper_first, end, dx, dy, dz); }
   Vec3 force_on_upper() const {
     return {sum(w.fx, upper_first, end), sum(w.fy, upper_first, end), sum(w.fz, upper_first, end)};
@@ -67,7 +68,8 @@ TEST(ContactInterface, PressedFacetsCarryPenaltyTimesAreaTimesPenetration) {
       ContactForces out = pair.w.forces();
       contact.apply(pair.w.input(0.0, 1e-6), out);
       const Vec3 f = pair.force_on_upper();
-      EXPECT_NEAR(f.z, pfac * 1.0 * d, 1e-9 * pfac * d) << "level " << level << " one_way " << one_way;
+      EXPECT_NEAR(f.z, pfac * 1.0 * d, 1e-9 * pfac * d)
+          << "level " << level << " one_way " << one_way;
       EXPECT_NEAR(f.x, 0.0, 1e-9);
       EXPECT_NEAR(contact.stats().force.z, pfac * d, 1e-9 * pfac * d);
       // Action = reaction: the nodal forces of both surfaces add up to zero.
@@ -144,7 +146,7 @@ TEST(ContactInterface, CoulombBlockSticksBelowAndSlidesAboveMuN) {
   for (double ratio : {0.45, 1.5}) {
     Pair pair(0.1, pfac, pfac, true, m, 1e9);
     ContactSettings s = undamped(2);
-    s.friction = mu;
+    s.tangential_law = Coulomb{mu, mu, {}, {}};
     s.one_way = true;
     ContactInterface contact = pair.make(s);
     pair.move_upper(0, 0, -0.1 - d);
@@ -189,7 +191,8 @@ TEST(ContactInterface, ActsOnlyBetweenBeginAndEndTime) {
     pair.w.clear_forces();
     ContactForces out = pair.w.forces();
     contact.apply(pair.w.input(t, 1e-6), out);
-    EXPECT_NEAR(pair.force_on_upper().z, (t > 1.0 && t < 2.0) ? 1e6 * 0.01 : 0.0, 1e-6) << "t = " << t;
+    EXPECT_NEAR(pair.force_on_upper().z, (t > 1.0 && t < 2.0) ? 1e6 * 0.01 : 0.0, 1e-6)
+        << "t = " << t;
   }
 }
 
@@ -253,13 +256,13 @@ TEST(ContactInterface, StickingContactHoldsUntilItsFailureStress) {
     contact.apply(pair.w.input(0.0, 1e-6), out);
     return pair.force_on_upper();
   };
-  EXPECT_NEAR(norm(step(0, 0)), 0.0, 1e-9);                       // touching: tied, no force
-  EXPECT_NEAR(step(0, 0.001).z, -pfac * 0.001, 1e-6);             // tension below sigma
-  EXPECT_NEAR(step(0.0005, -0.001).x, -pfac * 0.0005, 1e-6);      // shear
+  EXPECT_NEAR(norm(step(0, 0)), 0.0, 1e-9);                   // touching: tied, no force
+  EXPECT_NEAR(step(0, 0.001).z, -pfac * 0.001, 1e-6);         // tension below sigma
+  EXPECT_NEAR(step(0.0005, -0.001).x, -pfac * 0.0005, 1e-6);  // shear
   EXPECT_NEAR(step(-0.0005, 0.0).z, 0.0, 1e-6);
-  EXPECT_EQ(norm(step(0, 0.003)), 0.0);                           // 3e-3 * pfac > sigma: fails
-  EXPECT_EQ(norm(step(0, -0.001)), 0.0);                          // failed: no tension any more
-  EXPECT_NEAR(step(0, -0.003).z, pfac * 0.001, 1e-6);             // ordinary contact
+  EXPECT_EQ(norm(step(0, 0.003)), 0.0);                // 3e-3 * pfac > sigma: fails
+  EXPECT_EQ(norm(step(0, -0.001)), 0.0);               // failed: no tension any more
+  EXPECT_NEAR(step(0, -0.003).z, pfac * 0.001, 1e-6);  // ordinary contact
   EXPECT_NEAR(step(0, 0.002).z, 0.0, 1e-6);
 }
 
@@ -276,7 +279,7 @@ TEST(ContactInterface, SelfContactSkipsFacetsSharingANode) {
   const auto b2 = w.add_node(1, 1, -0.02, 1), b3 = w.add_node(0, 1, -0.02, 1);
   all.add({n0, b3, b2, n1}, 1, pfac, 1.0);  // B, facing down, hinged on A's edge y = 0
   ContactSurface c = add_plate(w, 1, 1, 0, 0, 1, 1, -d, false, pfac);
-  all.add(c.facets[0], 1, pfac, 1.0);       // C, facing down
+  all.add(c.facets[0], 1, pfac, 1.0);  // C, facing down
   ContactInterface contact(undamped(), all, all, w.mass, w.input());
   EXPECT_TRUE(contact.self_contact());
   ContactForces out = w.forces();
@@ -336,13 +339,20 @@ TEST(ContactInterface, InconsistentSettingsAreInputErrors) {
   Pair pair(0.1, 1e6, 1e6);
   ContactSettings s;
   s.one_way = true;
-  EXPECT_THROW(ContactInterface(s, pair.upper, pair.upper, pair.w.mass, pair.w.input()), InputError);
+  EXPECT_THROW(ContactInterface(s, pair.upper, pair.upper, pair.w.mass, pair.w.input()),
+               ContactSetupError);
   s = ContactSettings{};
-  s.friction = -0.1;
-  EXPECT_THROW(pair.make(s), InputError);
+  s.tangential_law = Coulomb{-0.1, -0.1, {}, {}};
+  try {
+    pair.make(s);
+    ADD_FAILURE() << "a negative friction coefficient was accepted";
+  } catch (const ContactSetupError& e) {
+    EXPECT_EQ(e.setting(), "tangential_law");  // the library's own name, not a deck field
+  }
   ContactSurface bad = pair.upper;
   bad.penalty[0] = 0.0;
-  EXPECT_THROW(ContactInterface(ContactSettings{}, bad, pair.lower, pair.w.mass, pair.w.input()), InputError);
+  EXPECT_THROW(ContactInterface(ContactSettings{}, bad, pair.lower, pair.w.mass, pair.w.input()),
+               ContactSetupError);
 }
 
 // A stiff block (four nodal masses) dropped on a fixed facet with an undamped penalty spring
@@ -373,7 +383,8 @@ TEST(ContactInterface, UndampedBounceReturnsTheImpactSpeed) {
     if (touched && pair.w.z[pair.upper_first] > 0.001) break;
   }
   ASSERT_TRUE(touched);
-  for (std::int32_t i = pair.upper_first; i < pair.end; ++i) EXPECT_NEAR(pair.w.vz[i], v0, 0.01 * v0);
+  for (std::int32_t i = pair.upper_first; i < pair.end; ++i)
+    EXPECT_NEAR(pair.w.vz[i], v0, 0.01 * v0);
   // The contact step limit is that of the block on its spring: 2/omega, omega^2 = k/M.
   EXPECT_NEAR(dt_seen, 2.0 * std::sqrt(M / k), 1e-6 * 2.0 * std::sqrt(M / k));
   EXPECT_LT(contact.initial_stable_step(), dt_seen);  // the bound before contact is conservative
@@ -387,14 +398,18 @@ TEST(ContactInterface, BitwiseIdenticalForOneAndTwoThreads) {
     World w;
     ContactSurface lower = add_plate(w, 16, 16, 0, 0, 1, 1, 0.0, true, 1e6, 0.2, 0.01, 2);
     const auto first = static_cast<std::int32_t>(w.x.size());
-    ContactSurface upper = add_plate(w, 13, 13, 0.03, 0.02, 0.95, 0.95, 0.05, false, 2e6, 0.2, 0.01, 1);
-    for (std::size_t i = 0; i < w.x.size(); ++i) w.z[i] += 0.004 * std::sin(7 * w.x[i]) * std::cos(5 * w.y[i]);
+    ContactSurface upper =
+        add_plate(w, 13, 13, 0.03, 0.02, 0.95, 0.95, 0.05, false, 2e6, 0.2, 0.01, 1);
+    for (std::size_t i = 0; i < w.x.size(); ++i)
+      w.z[i] += 0.004 * std::sin(7 * w.x[i]) * std::cos(5 * w.y[i]);
     ContactSettings s;
     s.accuracy_level = 3;
     s.accuracy_edge = true;
-    s.friction_function = [](double pres, double vt, double, double x, double, double) {
+    Coulomb coulomb;
+    coulomb.function = [](double pres, double vt, double, double x, double, double) {
       return 0.2 + 1e-9 * pres + 0.01 * vt + 0.01 * x;
     };
+    s.tangential_law = coulomb;
     ContactInterface contact(s, upper, lower, w.mass, w.input());
     for (std::size_t i = first; i < w.x.size(); ++i) {
       w.vx[i] = 0.3 * std::sin(3.0 * static_cast<double>(i));

@@ -36,7 +36,8 @@ G, 1, XYZ
 G, 2, YZ
 D, X, 1
 *END
-)", "pull.k");
+)",
+                                       "pull.k");
   Simulation sim(model);
   std::vector<std::size_t> end_nodes, fixed_nodes;
   for (std::size_t i = 0; i < model.mesh.nodes.size(); ++i) {

@@ -30,7 +30,8 @@ std::string two_blocks(const std::string& units, const std::string& contact_line
 P, 2, 0.0, 0.0, -50.0
 *CONTACT
 1
-)" + contact_lines + "*END\n";
+)" + contact_lines +
+         "*END\n";
 }
 
 std::string message_of(const std::string& deck) {
@@ -55,15 +56,18 @@ TEST(ContactSetup, GivenPenaltyNeedsNoUnitSystem) {
 
 TEST(ContactSetup, ThermalOptionsAreNotSupportedYet) {
   const std::string units = "*UNIT_SYSTEM\nSI\n*FUNCTION\n5\n1.0\n";
-  EXPECT_NE(message_of(two_blocks(units, "P, 1, P, 2\n0\n0, 0, 5\n")).find("not supported yet"), std::string::npos);
-  EXPECT_NE(message_of(two_blocks(units, "P, 1, P, 2\n0\n0, 0, , 20.0, 0, 0, , 1\n")).find("not supported yet"),
+  EXPECT_NE(message_of(two_blocks(units, "P, 1, P, 2\n0\n0, 0, 5\n")).find("not supported yet"),
+            std::string::npos);
+  EXPECT_NE(message_of(two_blocks(units, "P, 1, P, 2\n0\n0, 0, , 20.0, 0, 0, , 1\n"))
+                .find("not supported yet"),
             std::string::npos);
 }
 
 TEST(ContactSetup, AutomaticPenaltyFollowsTheSeedFormula) {
   // K = E / (3 (1 - 2 nu)) = 175 GPa, L_min = (0.01^3)^(1/3) = 0.01 m, v_max = 50 m/s:
   // pfac = K / L_min * (1 + 0.5^2) (seed 000).
-  const Model model = read_deck_string(two_blocks("*UNIT_SYSTEM\nSI\n", "P, 1, P, 2\n"), "contact.k");
+  const Model model =
+      read_deck_string(two_blocks("*UNIT_SYSTEM\nSI\n", "P, 1, P, 2\n"), "contact.k");
   Simulation sim(model);
   const double expected = 175.0e9 / 0.01 * 1.25;
   const std::vector<ContactReport> reports = sim.contact_reports();

@@ -15,7 +15,8 @@ std::size_t nearest(const Model& m, double x, double y, double z) {
   std::size_t best = 0;
   double d_best = 1e300;
   for (std::size_t i = 0; i < m.mesh.nodes.size(); ++i) {
-    const double d = std::hypot(m.mesh.nodes.x[i] - x, m.mesh.nodes.y[i] - y, m.mesh.nodes.z[i] - z);
+    const double d =
+        std::hypot(m.mesh.nodes.x[i] - x, m.mesh.nodes.y[i] - y, m.mesh.nodes.z[i] - z);
     if (d < d_best) {
       d_best = d;
       best = i;
@@ -41,7 +42,8 @@ TEST(RigidBody, TorqueFreeRotationAboutAPrincipalAxis) {
 P, 1, 0.0, 0.0, 0.0, 0.0, 0.0, 10.0
 0.0, 0.0, 0.0
 *END
-)", "rigid_spin.k");
+)",
+                                       "rigid_spin.k");
   Simulation sim(model);
   const double kinetic0 = sim.energies().kinetic;
   const std::size_t corner = nearest(model, 0.1, 0.1, 0.05);
@@ -74,7 +76,8 @@ TEST(RigidBody, PrescribedVelocityMovesThePartExactly) {
 P, 1, XY, XYZ
 V, Z, 1
 *END
-)", "rigid_motion.k");
+)",
+                                       "rigid_motion.k");
   Simulation sim(model);
   while (!sim.finished()) sim.advance();
   const std::size_t n = nearest(model, 0.1, 0.1, 0.1);
@@ -103,7 +106,8 @@ TEST(RigidBody, ANodeConstraintOnARigidPartIsAnError) {
 *PART
 1, 1
 *END
-)", "rigid_node_bc.k");
+)",
+                                       "rigid_node_bc.k");
   EXPECT_THROW(Simulation sim(model), InputError);
 }
 

@@ -43,6 +43,7 @@
 #include <vector>
 
 #include "abut/contact/penalty.hpp"
+#include "abut/solver/contact_surfaces.hpp"
 #include "abut/mesh/generators.hpp"
 #include "run_to.hpp"
 

@@ -29,7 +29,8 @@ TEST(SeedRubberSphere, RunsAsPrintedWithTheSeedsPenaltyAndRebounds) {
             << " Pa/m (seed 3e12)\n";
   EXPECT_NEAR(steel, 1.68e13, 0.01 * 1.68e13);
   ASSERT_EQ(contacts[0].pairs.size(), 1u);
-  EXPECT_DOUBLE_EQ(contacts[0].pairs[0].penalty, std::min(steel, rubber));  // the smaller (seed)
+  EXPECT_DOUBLE_EQ(contacts[0].pairs[0].penalty_min, std::min(steel, rubber));  // the smaller (seed)
+  EXPECT_DOUBLE_EQ(contacts[0].pairs[0].penalty_max, std::min(steel, rubber));
 
   double worst_balance = 0.0;
   verification::run_to(sim, model.time.end_time, [&](const Simulation& s) {

@@ -24,7 +24,8 @@ int gauss_points_per_direction(int accuracy_level);
 
 // The rule of one facet. `sharp_edges` has bit e set when edge e (see quad.hpp) is sharp; it
 // only matters with edge_refinement.
-std::vector<FacetPoint> facet_rule(int accuracy_level, bool edge_refinement, std::uint8_t sharp_edges);
+std::vector<FacetPoint> facet_rule(int accuracy_level, bool edge_refinement,
+                                   std::uint8_t sharp_edges);
 
 // Sharp edges of every facet (bit e = edge e): edges where a neighbouring facet of the same
 // surface has a normal turned by more than `angle_degrees` (alpha_edge), and free edges,

@@ -1,13 +1,16 @@
 #pragma once
-// One contact interface (one *CONTACT): surface-to-surface penalty contact between two
-// surfaces, or self contact when both are the same facets. Each step:
+// One contact interface: penalty contact between two surfaces, or self contact when both are the
+// same facets. Each step runs the pipeline
 //   broad phase (bucket grid, rebuilt only when nodes moved more than half the search margin)
-//   -> narrow phase (closest-point projection of each integration point on the other surface)
-//   -> enforcement (penalty + damping normal force, Coulomb friction, sticking contact)
-//   -> side effects (energies, stable step, wear, statistics).
-// Input and output are plain nodal arrays owned by the caller. The result is bitwise identical
-// for any number of OpenMP threads: points are evaluated in parallel into per-point slots and
-// their forces are added to the nodes serially in a fixed order. See docs/contact.md.
+//   -> narrow phase (narrow_phase.hpp: the partner facet of each contact point)
+//   -> enforcement (laws/: normal law, damping, tangential law, ties, adhesion)
+//   -> scatter (forces to the nodes in a fixed order; energies, stable step, wear, statistics).
+// Contact points are integration points on the facets (surface-to-surface, integration.hpp) or
+// surface nodes (node-to-surface). Input and output are plain nodal arrays owned by the caller;
+// the library depends on abut::core only. The result is bitwise identical for any number of
+// OpenMP threads: points are evaluated in parallel into per-point slots and their forces are added
+// to the nodes serially in a fixed order. See docs/contact.md.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -15,6 +18,7 @@
 #include <vector>
 
 #include "abut/contact/broad_phase.hpp"
+#include "abut/contact/narrow_phase.hpp"
 #include "abut/contact/settings.hpp"
 #include "abut/contact/surface.hpp"
 #include "abut/core/vec3.hpp"
@@ -34,53 +38,80 @@ struct ContactForces {
 };
 
 struct ContactStats {
-  Vec3 force;                      // total contact force acting on the nodes of surface 1
-  double normal_force = 0.0;       // sum of the normal forces of the active points
-  double tangential_force = 0.0;   // sum of the magnitudes of their tangential forces
-  double elastic_energy = 0.0;     // energy stored in the penalty springs now
-  double damping_energy = 0.0;     // work of the contact damping so far
-  double friction_energy = 0.0;    // energy dissipated by friction so far
-  double max_penetration = 0.0;    // largest penetration beyond the initial offsets
+  Vec3 force;                     // total contact force acting on the nodes of surface 1
+  double normal_force = 0.0;      // sum of the normal forces of the active points
+  double tangential_force = 0.0;  // sum of the magnitudes of their tangential forces
+  double elastic_energy = 0.0;    // energy stored in the penalty springs now
+  double damping_energy = 0.0;    // work of the contact damping so far
+  double friction_energy = 0.0;   // energy dissipated by friction so far
+  double max_penetration = 0.0;   // largest penetration beyond the initial offsets
   std::size_t active_points = 0;
   double stable_step = std::numeric_limits<double>::infinity();  // 2/omega of the stiffest spring
+};
+
+// The spring a part pair gets (after the stiffness rule and pair scaling), for reports.
+struct PairStiffness {
+  std::int64_t part1 = 0, part2 = 0;  // part on surface 1, part on surface 2
+  double scale = 1.0;                 // pair scale factor applied
+  // Range over the pair: pfac [stress / length] under the facet-penalty rule, the spring K of a
+  // node (N2S) or facet (S2S) [force / length] under the Radioss rules.
+  double penalty_min = 0.0, penalty_max = 0.0;
 };
 
 class ContactInterface {
  public:
   // `node_mass` and the coordinates of `initial` are indexed by node like the facets' nodes.
-  // The initial coordinates fix sharp edges, nodal areas, gid_0 and the initial penetrations
-  // (delta0_offset, delta0_max). Surfaces with identical facets give self contact.
-  // InputError (at settings.where) for inconsistent settings.
+  // The initial coordinates fix sharp edges, nodal areas, gid_0 and the initial penetrations.
+  // Surfaces with identical facets give self contact. Node-to-surface: `secondary_nodes` restricts
+  // surface 1's points to these nodes (each must be a node of a surface-1 facet); empty: all of
+  // them. ContactSetupError for inconsistent settings or surfaces.
   ContactInterface(ContactSettings settings, ContactSurface surface1, ContactSurface surface2,
-                   std::span<const double> node_mass, const ContactInput& initial);
+                   std::span<const double> node_mass, const ContactInput& initial,
+                   std::span<const std::int32_t> secondary_nodes = {});
 
   // Adds the contact forces of the state `in` to `out` and updates energies and statistics.
   void apply(const ContactInput& in, ContactForces& out);
 
   const ContactStats& stats() const { return stats_; }
-  // Stable step bound before any contact: 2 / sqrt(max over facets of 2 pfac A / m_min).
+  // Stable step bound before any contact: 2 / sqrt(max over points of 2 k / m_min).
   double initial_stable_step() const { return initial_stable_step_; }
   // Accumulated wear depth and current contact pressure per node (0 away from the surfaces).
   std::span<const double> wear() const { return wear_; }
   std::span<const double> nodal_pressure() const { return pressure_; }
+  // The springs of every part pair that can meet, at the initial configuration.
+  std::vector<PairStiffness> pair_stiffness() const;
 
   bool self_contact() const { return sides_.size() == 1; }
   std::size_t point_count() const;
   std::size_t released_points() const;  // initially deeper than delta0_max
+  std::size_t tied_points() const;      // currently tied (sticking or freeze)
   std::size_t broad_phase_builds() const { return builds_; }
   double search_margin() const { return margin_; }
 
  private:
   enum PointState : std::uint8_t { kFree, kReleased, kTied, kUntied };
 
-  struct Side {  // one contact surface and its integration points
+  struct Side {  // one contact surface and its contact points
     ContactSurface surface;
-    std::vector<std::uint8_t> sharp;   // sharp-edge bits per facet
-    std::vector<std::uint8_t> active;  // gid_0 / gid_1
-    std::vector<double> depth;         // detection depth per facet: half its thickness
-    std::vector<double> node_area;     // tributary area of each node (global index)
-    std::vector<std::int32_t> point_facet;
+    std::vector<std::uint8_t> sharp;       // sharp-edge bits per facet
+    std::vector<std::uint8_t> active;      // gid_0 / gid_1
+    std::vector<double> depth;             // detection depth per facet
+    std::vector<double> node_area;         // tributary area of each node (global index)
+    std::vector<double> facet_km;          // Radioss main-segment stiffness per facet
+    std::vector<std::int32_t> facet_part;  // local part index per facet
+    // Node-to-surface: the facets around each node (CSR over global node index).
+    std::vector<std::int32_t> node_facet_start, node_facets;
+    // Contact points. S2S: a point on facet point_facet at (xi, eta); N2S: node point_node.
+    std::vector<std::int32_t> point_facet, point_node;
     std::vector<double> point_xi, point_eta, point_weight;
+    std::vector<double> point_pfac, point_ks, point_share, point_depth, point_thickness;
+    std::vector<std::int32_t> point_part;
+    double max_point_depth = 0.0;
+    double max_km = 0.0;  // stiffest main segment (stable-step bound)
+    std::array<std::int32_t, 4> point_nodes(std::size_t p) const {
+      const std::int32_t n = point_node[p];
+      return n >= 0 ? std::array<std::int32_t, 4>{n, n, n, n} : surface.facets[point_facet[p]];
+    }
   };
 
   struct Pass {  // the points of side `own` against the facets of side `target`
@@ -90,35 +121,49 @@ class ContactInterface {
     CandidateList candidates;
     std::vector<double> qx, qy, qz;  // point positions for the broad-phase query
     // History per point.
-    std::vector<std::uint8_t> state;
-    std::vector<double> offset;             // initial penetration subtracted (delta0_offset)
-    std::vector<double> htx, hty, htz;      // tangential spring force (friction history)
-    std::vector<std::int32_t> tie_facet;    // sticking contact: fixed partner
+    std::vector<std::uint8_t> state, sliding, adhered;
+    std::vector<double> offset;           // initial penetration subtracted until separation
+    std::vector<double> shift;            // permanent gap shift (clearance)
+    std::vector<double> htx, hty, htz;    // tangential spring force (friction history)
+    std::vector<std::int32_t> tie_facet;  // tied contact: fixed partner
     std::vector<double> tie_xi, tie_eta;
     // Results of the current step, one slot per point.
     std::vector<std::uint8_t> hit;
     std::vector<std::int32_t> hit_facet;
     std::vector<double> hit_xi, hit_eta;
-    std::vector<double> fx, fy, fz;          // force on the point (before `weight`)
+    std::vector<double> fx, fy, fz;  // force on the point (before `weight`)
     std::vector<double> area, pressure, slip_speed, normal_force, tangential_force;
     std::vector<double> energy, damping_work, slip_work, penetration, omega2;
   };
 
-  struct Hit {
-    std::int32_t facet = -1;
-    double xi = 0.0, eta = 0.0, gap = 0.0;
+  // Where a contact point is now.
+  struct PointFrame {
+    std::array<std::int32_t, 4> nodes;
+    std::array<double, 4> shape;
+    Vec3 x, v, normal;
+    double area = 0.0;
+    bool active = false;
   };
 
-  void build_sides(const ContactInput& initial);
+  void validate(const ContactSurface& s1, const ContactSurface& s2, std::size_t coordinates) const;
+  void build_sides(const ContactInput& initial, std::span<const std::int32_t> secondary_nodes);
+  void build_points(Side& side, const ContactInput& in, double other_size,
+                    std::span<const std::int32_t> secondary_nodes);
+  void build_parts();
   void build_passes();
   void rebuild_broad_phase(const ContactInput& in);
   bool needs_rebuild(const ContactInput& in) const;
-  Hit closest_facet(const Pass& pass, std::size_t p, const Vec3& x_p, const Vec3& n_p,
-                    const ContactInput& in) const;
+  PointFrame frame(const Side& side, std::size_t p, const ContactInput& in) const;
+  // The partner among the broad-phase candidates; failing that, near `previous` (last step's
+  // partner, or -1).
+  Partner partner_of(const Pass& pass, std::size_t p, const PointFrame& f, const ContactInput& in,
+                     std::int32_t previous) const;
+  double spring(const Side& own, std::size_t p, double area, const Side& target,
+                std::int32_t f) const;
   void evaluate_point(Pass& pass, std::size_t p, const ContactInput& in);
   void scatter(const ContactInput& in, ContactForces& out);
   void update_moving_region(const ContactInput& in);
-  void initial_penetrations(const ContactInput& in);
+  void initial_state(const ContactInput& in);
 
   ContactSettings settings_;
   std::vector<Side> sides_;
@@ -127,6 +172,8 @@ class ContactInterface {
   std::vector<std::int32_t> surface_nodes_;  // union of both sides' nodes, sorted
   std::vector<double> bx_, by_, bz_;         // their positions at the last broad-phase build
   std::vector<double> wear_, pressure_;
+  std::vector<std::int64_t> part_ids_;  // local part index -> user part id
+  std::vector<double> part_scale_;      // pair scale, part_ids_.size()^2
   double margin_ = 0.0;
   double smooth_reach_ = 0.0;  // overshoot beyond a smooth edge per unit |gap|: tan(alpha_edge)
   double initial_stable_step_ = std::numeric_limits<double>::infinity();

@@ -5,10 +5,7 @@
 // v_max the highest initial speed in the model and v_ref = 100 m/s. The seed's steel value
 // (1.68e13 Pa/m for 0.03 x 0.03 x 0.01 m elements) fixes L_min = cube root of the smallest
 // element volume (seeds/README.md). The SI constants are converted to the deck's units.
-#include <cstdint>
-
 #include "abut/core/units.hpp"
-#include "abut/mesh/mesh.hpp"
 
 namespace abut {
 
@@ -21,11 +18,5 @@ double automatic_penalty(double bulk_modulus, double smallest_element_volume,
 
 // 1e13 Pa/m (in deck units) * speed factor.
 double rigid_penalty(double max_initial_speed, UnitSystem units);
-
-// Volume of the smallest hex of a part; InputError if the part has no hex.
-double smallest_element_volume(const Mesh& mesh, std::int64_t part);
-
-// The penalty of a facet pair: the smaller of the two parts' values (seed 000).
-inline double pair_penalty(double pfac_a, double pfac_b) { return pfac_a < pfac_b ? pfac_a : pfac_b; }
 
 }  // namespace abut

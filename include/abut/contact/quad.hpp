@@ -39,7 +39,9 @@ inline Vec3 quad_normal(const QuadCorners& c, double xi, double eta, double& jac
 }
 
 // Area-weighted normal from the diagonals: exact area for planar quads.
-inline Vec3 quad_centre_normal(const QuadCorners& c) { return normalized(cross(c[2] - c[0], c[3] - c[1])); }
+inline Vec3 quad_centre_normal(const QuadCorners& c) {
+  return normalized(cross(c[2] - c[0], c[3] - c[1]));
+}
 
 // Closest point of the facet to a point p.
 struct QuadProjection {

@@ -1,45 +1,98 @@
 #pragma once
-// Settings of one contact interface. They mirror the solver's ContactSpec (the *CONTACT fields of
-// seed 000) in plain values and callbacks, so that a host code can drive the library without the
-// deck, the solver or the function table. Lengths, times and stresses are in the caller's units.
+// Settings of one contact interface, in plain values and callbacks, so that a host code can drive
+// the library without a deck, a solver or a function table. Lengths, times and stresses are in the
+// caller's units. The defaults are seed 000's (IMPETUS *CONTACT). Inconsistent settings raise
+// ContactSetupError naming the setting in the library's own terms.
+#include <cstdint>
 #include <functional>
 #include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
-#include "abut/core/error.hpp"
+#include "abut/contact/laws/adhesion.hpp"
+#include "abut/contact/laws/normal.hpp"
+#include "abut/contact/laws/tangential.hpp"
+#include "abut/contact/stiffness_rule.hpp"
 
 namespace abut {
 
-// mu(pres, vtang, t, x, y, z): friction coefficient from the contact pressure, the tangential
-// sliding speed, the time and the current position of the contact point. Called once per
-// active contact point per step from several threads at once: it must be thread-safe and cheap.
-using FrictionFunction =
-    std::function<double(double pres, double vtang, double t, double x, double y, double z)>;
-// Wear rate (wear depth per unit time) from the contact pressure and the sliding speed.
-// Thread-safety as for FrictionFunction (called serially today, but keep it pure).
+// Wear rate (wear depth per unit time) from the contact pressure and the sliding speed. Pure.
 using WearRateFunction = std::function<double(double pres, double vtang)>;
 // Is the point (x, y, z) inside a region (gid_0 / gid_1)? Called serially.
 using RegionPredicate = std::function<bool(double x, double y, double z)>;
 
+// What acts as a contact point: integration points on the facets of a surface (seed 000) or the
+// nodes of a surface or node group (Radioss TYPE25, OptiStruct DISCRET = N2S).
+enum class Discretisation { SurfaceToSurface, NodeToSurface };
+
+// What happens to points that penetrate in the initial configuration.
+enum class InitialPenetration {
+  Offset,  // seed 000: released beyond initial_max, else min(d0, initial_offset) subtracted until
+           // separation
+  Shift,   // Radioss Inacti = 5: the whole d0 subtracted (P' = P - P0) until separation
+  Force,   // Radioss Inacti = -1: every initial penetration pushes from the start
+};
+
+// Abaqus *CONTACT CONTROLS ASSIGNMENT, TYPE=SCALE PENALTY (seed 001): the springs between facets of
+// parts1 and parts2 are scaled. Empty parts1: every part of the interface; empty parts2: parts1
+// with itself. Where several assignments cover a pair, the last one wins.
+struct PairScale {
+  std::vector<std::int64_t> parts1, parts2;
+  double scale = 1.0;
+};
+
 struct ContactSettings {
-  int accuracy_level = 2;          // 1: centre point, 2: 2x2 Gauss, >2: 3x3 Gauss per facet
-  bool accuracy_edge = false;      // extra integration points in strips along sharp edges
-  double friction = 0.0;           // Coulomb mu, used when friction_function is empty
-  FrictionFunction friction_function;
+  Discretisation discretisation = Discretisation::SurfaceToSurface;
+  int accuracy_level = 2;      // S2S: 1 centre point, 2: 2x2 Gauss, >2: 3x3 Gauss per facet
+  bool accuracy_edge = false;  // extra integration points in strips along sharp edges
+  bool one_way = false;        // only surface 1's points act (else both sides, weight 1/2 each)
+
+  // Normal direction.
+  NormalLaw normal_law = LinearPenalty{};
+  ContactSense sense = ContactSense::Positive;
+  std::optional<double> detection_depth;  // default: half the element thickness of either facet
+  std::optional<double> clearance;   // OptiStruct CLEARANCE: initial opening of every point found
+  std::optional<Adhesion> adhesion;  // Radioss IVIS2 = -1
+  double damping = 0.1;              // xi: fraction of critical damping of each contact spring
+
+  // Tangential direction.
+  TangentialLaw tangential_law = Frictionless{};
+  std::optional<double> tangential_penalty;  // [stress / length]; default: the normal penalty
+  FrictionFilter friction_filter;
+  bool freeze =
+      false;  // OptiStruct FREEZE: points found at t = 0 tied in every direction, open or closed
+  std::optional<double> stick_stress;  // sigma_stick (seed 000): tied on touch until this traction
+
+  // Springs.
+  StiffnessSettings stiffness;
+  std::vector<PairScale> pair_scales;
+
+  // Time window, regions, initial state, edges, wear.
   double begin_time = 0.0;         // t_beg
   double end_time = 1e20;          // t_end
-  double damping = 0.1;            // xi: fraction of critical damping of each contact spring
   RegionPredicate initial_region;  // gid_0: facets whose centroid is outside at t=0 never contact
   RegionPredicate moving_region;   // gid_1: facets whose centroid leaves it are deactivated
-  double initial_offset = 0.0;     // delta0_offset
+  InitialPenetration initial_penetration = InitialPenetration::Offset;
+  double initial_offset = 0.0;        // delta0_offset
   std::optional<double> initial_max;  // delta0_max; default 4% of the point's element thickness
-  double edge_tolerance = 0.0;     // delta_edge: accepted overshoot beyond sharp edges
-  WearRateFunction wear_rate1, wear_rate2;  // fid_wear1 / fid_wear2
-  double edge_angle = 20.0;        // alpha_edge [degrees]
-  bool one_way = false;            // only surface 2 is a contact surface
-  std::optional<double> stick_stress;  // sigma_stick: tied contact until this traction
-  std::optional<double> search_margin;  // broad-phase margin; default: half the smallest
-                                         // detection depth (see docs/contact.md)
-  SourceLocation where;            // the *CONTACT command, for error messages
+  double edge_tolerance = 0.0;        // delta_edge: accepted overshoot beyond sharp edges
+  double edge_angle = 20.0;           // alpha_edge [degrees]
+  WearRateFunction wear_rate1, wear_rate2;
+  std::optional<double>
+      search_margin;  // broad-phase margin; default: half the smallest detection depth
+};
+
+// A setting the library cannot work with; `setting` names the ContactSettings member (or the
+// surface, "surface1" / "surface2"), so that a caller can point at its own input.
+class ContactSetupError : public std::invalid_argument {
+ public:
+  ContactSetupError(std::string setting, const std::string& message)
+      : std::invalid_argument(message), setting_(std::move(setting)) {}
+  const std::string& setting() const { return setting_; }
+
+ private:
+  std::string setting_;
 };
 
 }  // namespace abut

@@ -15,17 +15,13 @@ struct PartPenalty {
   bool automatic = false;  // computed from K, L_min and v_max (or rigid), not given
 };
 
-struct PairPenalty {
-  std::int64_t part1 = 0, part2 = 0;  // part of surface 1, part of surface 2
-  double penalty = 0.0;
-};
-
 struct ContactReport {
   std::int64_t id = 0;
   std::string title;
   std::vector<PartPenalty> parts;
-  std::vector<PairPenalty> pairs;
-  std::size_t points = 0;           // integration points of the interface
+  std::vector<PairStiffness> pairs;  // after the stiffness rule and pair scaling
+  Discretisation discretisation = Discretisation::SurfaceToSurface;
+  std::size_t points = 0;           // contact points (integration points or nodes, all passes)
   std::size_t released_points = 0;  // initially deeper than delta0_max
   ContactStats stats;
 };

@@ -1,11 +1,13 @@
 #pragma once
 // The model: everything a deck describes, resolved to plain data (deck units). The deck reader
 // (src/io) builds it; the solver runs it. Ids are the user's ids; node references are indices.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "abut/contact/settings.hpp"
 #include "abut/core/error.hpp"
 #include "abut/core/functions.hpp"
 #include "abut/core/units.hpp"
@@ -17,11 +19,11 @@ namespace abut {
 
 // *TIME
 struct TimeControl {
-  double end_time = 0.0;         // t_term
-  double step_scale = 0.9;       // sf_dt
-  double min_step = 0.0;         // dt_min: the run stops if the stable step falls below it
-  double max_step = 1e10;        // dt_max
-  double start_time = 0.0;       // t_start
+  double end_time = 0.0;    // t_term
+  double step_scale = 0.9;  // sf_dt
+  double min_step = 0.0;    // dt_min: the run stops if the stable step falls below it
+  double max_step = 1e10;   // dt_max
+  double start_time = 0.0;  // t_start
 };
 
 // *OUTPUT (0 = the reference default: t_term/100 for states, t_term/1000 for histories)
@@ -54,7 +56,14 @@ struct PartSet {
 };
 
 // An `entype, enid` pair of the deck.
-enum class EntityType { Node, NodeSet, Part, PartSet, All, GeometryRegion };  // GeometryRegion: entype G
+enum class EntityType {
+  Node,
+  NodeSet,
+  Part,
+  PartSet,
+  All,
+  GeometryRegion
+};  // GeometryRegion: entype G
 struct EntityRef {
   EntityType type = EntityType::All;
   std::int64_t id = 0;
@@ -64,8 +73,8 @@ struct EntityRef {
 // One `pmeth, direc, cid, sf, fid` line of *BC_MOTION.
 struct PrescribedMotion {
   enum class Kind { Acceleration, Velocity, Displacement } kind = Kind::Velocity;
-  int direction = 0;   // 0..2 = X, Y, Z; 3..5 = RX, RY, RZ (rigid parts only)
-  FunctionRef curve;   // value as a function of time
+  int direction = 0;  // 0..2 = X, Y, Z; 3..5 = RX, RY, RZ (rigid parts only)
+  FunctionRef curve;  // value as a function of time
   double scale = 1.0;
   FunctionRef activation;  // optional: motion acts while this is > 0
   SourceLocation where;
@@ -99,25 +108,68 @@ struct ContactSpec {
   int accuracy_level = 2;
   bool accuracy_edge = false;
   EntityRef surface1, surface2;
-  double friction = 0.0;                   // used when friction_function is invalid
-  FunctionRef friction_function;           // mu = fcn(fid)
-  std::optional<double> penalty;           // pfac; automatic when empty
+  double friction = 0.0;          // used when friction_function is invalid
+  FunctionRef friction_function;  // mu = fcn(fid)
+  std::optional<double> penalty;  // pfac; automatic when empty
   double begin_time = 0.0;
   double end_time = 1e20;
   bool merge = false;
-  double damping = 0.1;                    // fraction of critical damping
+  double damping = 0.1;                          // fraction of critical damping
   std::optional<std::int64_t> initial_geometry;  // gid_0
   std::optional<std::int64_t> moving_geometry;   // gid_1
-  double initial_offset = 0.0;             // delta0_offset
-  std::optional<double> initial_max;       // delta0_max (default 4% of element thickness)
-  double edge_tolerance = 0.0;             // delta_edge
-  FunctionRef wear1, wear2, thermal;       // fid_wear1, fid_wear2, fid_thermal
-  double edge_angle = 20.0;                // alpha_edge [degrees]
+  double initial_offset = 0.0;                   // delta0_offset
+  std::optional<double> initial_max;             // delta0_max (default 4% of element thickness)
+  double edge_tolerance = 0.0;                   // delta_edge
+  FunctionRef wear1, wear2, thermal;             // fid_wear1, fid_wear2, fid_thermal
+  double edge_angle = 20.0;                      // alpha_edge [degrees]
   bool one_way = false;
   bool no_internal = false;
-  std::optional<double> stick_stress;      // sigma_stick
+  std::optional<double> stick_stress;  // sigma_stick
   bool friction_heat = false;
   SourceLocation where;
+
+  // *CONTACT_DISCRETIZATION
+  Discretisation discretisation = Discretisation::SurfaceToSurface;
+  std::optional<bool> symmetric;  // empty: symmetric unless one_way (node groups: one-way)
+  // *CONTACT_NORMAL
+  FunctionRef penalty_curve;  // pressure as a function of penetration (law CURVE)
+  ContactSense sense = ContactSense::Positive;
+  std::optional<double> detection_depth;
+  std::optional<double> clearance;
+  // *CONTACT_ADHESION
+  std::optional<Adhesion> adhesion;
+  // *CONTACT_FRICTION (when absent: Coulomb with mu of *CONTACT)
+  enum class FrictionLaw {
+    Impetus,
+    None,
+    Coulomb,
+    Tresca,
+    Stick,
+    Freeze,
+    Viscous,
+    Darmstad,
+    Renard
+  };
+  FrictionLaw friction_law = FrictionLaw::Impetus;
+  double mu_static = 0.0, mu_dynamic = 0.0;
+  std::optional<double> tangential_penalty;
+  std::array<double, 6> friction_c{};  // C1..C6 (Radioss laws), m_s, m_d, k (Tresca)
+  FrictionFilter friction_filter;
+  // *CONTACT_STIFFNESS
+  StiffnessSettings stiffness;
+  bool element_penalty = false;  // rule ELEMENT: automatic penalty from the element step
+  // *CONTACT_SCALE_PENALTY, in deck order
+  struct Scale {
+    std::optional<EntityRef> set1, set2;
+    double scale = 1.0;
+    SourceLocation where;
+  };
+  std::vector<Scale> pair_scales;
+  // *CONTACT_INITIAL
+  InitialPenetration initial_penetration = InitialPenetration::Offset;
+  std::optional<double> adjust_depth;  // ADJUST: secondary nodes within it moved onto surface 2
+  // Where each contact keyword was given (for errors), empty when absent.
+  SourceLocation normal_where, friction_where, stiffness_where, initial_where, discretisation_where;
 };
 
 // A geometry of *GEOMETRY_* with its id.

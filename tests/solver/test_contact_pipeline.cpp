@@ -3,9 +3,9 @@
 
 #include "abut/contact/interface.hpp"
 #include "abut/contact/penalty.hpp"
-#include "abut/contact/surface.hpp"
 #include "abut/mesh/skin.hpp"
-#include "fixtures.hpp"
+#include "abut/solver/contact_surfaces.hpp"
+#include "hex_block.hpp"
 
 namespace abut {
 namespace {
@@ -19,13 +19,14 @@ TEST(ContactPipeline, HexBlocksPressedTogether) {
   testing::add_hex_block(mesh, 2, 2, 2, 1, {0, 0, 0.05}, {0.6, 0.6, 0.35});
   const std::int64_t lower_part[] = {1}, upper_part[] = {2};
   auto pfac = [](std::int64_t part) { return part == 1 ? 4e9 : 2.5e9; };
-  const ContactSurface lower = make_contact_surface(exterior_faces(mesh, lower_part, false), pfac);
-  const ContactSurface upper = make_contact_surface(exterior_faces(mesh, upper_part, false), pfac);
+  const ContactSurface lower = contact_surface(mesh, exterior_faces(mesh, lower_part, false), pfac);
+  const ContactSurface upper = contact_surface(mesh, exterior_faces(mesh, upper_part, false), pfac);
   ASSERT_EQ(lower.size(), 2u * (9 + 6 + 6));  // 2 (nx ny + ny nz + nz nx)
   ASSERT_EQ(upper.size(), 2u * (4 + 2 + 2));
 
   const std::size_t n = mesh.nodes.size();
-  std::vector<double> mass(n, 0.1), vx(n, 0.0), vy(n, 0.0), vz(n, 0.0), fx(n, 0.0), fy(n, 0.0), fz(n, 0.0);
+  std::vector<double> mass(n, 0.1), vx(n, 0.0), vy(n, 0.0), vz(n, 0.0), fx(n, 0.0), fy(n, 0.0),
+      fz(n, 0.0);
   std::vector<double> x = mesh.nodes.x, y = mesh.nodes.y, z = mesh.nodes.z;
   ContactSettings s;
   s.damping = 0.0;

@@ -1,0 +1,44 @@
+#pragma once
+// Normal laws: contact pressure from the penetration d (> 0 when the point is inside the other
+// body, measured along the partner facet's normal). Each law returns the pressure, its slope
+// dp/dd (the spring per unit area, for damping and the stable step) and the energy stored per
+// unit area, so that explicit and implicit procedures can share it.
+#include <functional>
+#include <variant>
+
+namespace abut {
+
+struct NormalResponse {
+  double pressure = 0.0;   // [stress]; negative = tension (bilateral or adhesive contact)
+  double stiffness = 0.0;  // dp/dd [stress / length]
+  double energy = 0.0;     // integral of p dd from 0 to d [energy / area]
+};
+
+// Which side of the partner surface a point must stay on (Metafor TYPE_CONT, seed 002):
+// Positive: outside (ordinary contact; default); Negative: inside, the surface is approached from
+// behind; Bilateral: on the surface, held in tension as well as in compression, free to slide.
+enum class ContactSense { Positive, Negative, Bilateral };
+
+// p = pfac d, with pfac the penalty of the facet pair (seed 000, Metafor PEN_NORMALE).
+struct LinearPenalty {
+  NormalResponse evaluate(double d, double pfac) const {
+    return {pfac * d, pfac, 0.5 * pfac * d * d};
+  }
+};
+
+// p = f(d) from a user curve of the penetration (Metafor
+// FrictionlessVariablePenaltyContactMaterial: PEN_NORMALE as a function of the gap). f is applied
+// as an odd function, f(-d) = -f(d), so a bilateral contact pulls back as it pushes. The slope and
+// energy are evaluated numerically.
+struct CurvePenalty {
+  std::function<double(double penetration)> pressure;  // f(d) for d >= 0; f(0) should be 0
+  NormalResponse evaluate(double d, double pfac) const;
+};
+
+using NormalLaw = std::variant<LinearPenalty, CurvePenalty>;
+
+inline NormalResponse evaluate(const NormalLaw& law, double d, double pfac) {
+  return std::visit([&](const auto& l) { return l.evaluate(d, pfac); }, law);
+}
+
+}  // namespace abut

@@ -1,0 +1,121 @@
+#pragma once
+// Tangential laws: the tangential force of a contact point from its slip history. Every law is a
+// tangential spring (elastic predictor F_trial = F_old - k_t v_t dt) returned to a slip limit, the
+// stick/slip rule of seed 004 (F_t = min(mu F_n, |F_old + K V_t dt|)); the laws differ only in
+// their limits: the force a sticking point holds before it slips (static) and the force while it
+// slides (dynamic).
+//   Frictionless      no tangential force
+//   Coulomb           mu_s F_n / mu_d F_n (Metafor CoulombContactMaterial, seed 002); mu from a
+//                     callback (seed 000's mu = fcn) or a Radioss Ifric law (friction_model.hpp)
+//   Tresca            m_s k A / m_d k A, independent of the pressure (Metafor
+//   TrescaContactMaterial) Sticking          no limit: the tangential spring holds while the
+//   contact is closed
+//                     (Metafor StickingContactMaterial, OptiStruct STICK)
+#include <functional>
+#include <limits>
+#include <variant>
+
+#include "abut/contact/laws/friction_model.hpp"
+#include "abut/core/vec3.hpp"
+
+namespace abut {
+
+// What a law may read at a contact point.
+struct SlipState {
+  double normal_force = 0.0;  // >= 0
+  double area = 0.0;          // the point's area
+  double slip_speed = 0.0;    // |v_t|
+  double time = 0.0;
+  Vec3 position;
+};
+
+struct SlipLimits {
+  double stick = 0.0;  // largest force held without slip
+  double slide = 0.0;  // force while sliding
+};
+
+struct TangentialResult {
+  Vec3 force;              // tangential force on the point
+  double slip_work = 0.0;  // energy dissipated by slip in this step (>= 0)
+  bool sliding = false;
+};
+
+// The return mapping shared by all laws. `previous`: last step's tangential force (any normal
+// component is removed, so the history follows a rotating tangent plane); `was_sliding` selects
+// the limit the trial force is checked against. Slip work: slide limit times slip increment.
+inline TangentialResult return_to_limit(Vec3 previous, const Vec3& normal,
+                                        const Vec3& slip_velocity, double dt, double stiffness,
+                                        const SlipLimits& limits, bool was_sliding) {
+  previous -= normal * dot(previous, normal);
+  const Vec3 trial = previous - slip_velocity * (stiffness * dt);
+  const double size = norm(trial);
+  const double hold = was_sliding ? limits.slide : limits.stick;
+  if (size <= hold) return {trial, 0.0, false};
+  const double limit = limits.slide;
+  const Vec3 force = limit > 0.0 && size > 0.0 ? trial * (limit / size) : Vec3{};
+  return {force, limit * (size - limit) / stiffness, true};
+}
+
+struct Frictionless {
+  SlipLimits limits(const SlipState&) const { return {}; }
+};
+
+// mu(pres, vtang, t, x, y, z), seed 000's fcn(fid); must be thread-safe and cheap.
+using FrictionFunction =
+    std::function<double(double pres, double vtang, double t, double x, double y, double z)>;
+using FrictionModel =
+    std::variant<std::monostate, ViscousFriction, DarmstadFriction, RenardFriction>;
+
+struct Coulomb {
+  double mu_static = 0.0, mu_dynamic = 0.0;
+  FrictionFunction function;  // when set: mu_s = mu_d = function(...)
+  FrictionModel model;        // when set: mu_s = mu_d = model.mu(p, V)
+
+  double mu(const SlipState& s, bool dynamic) const {
+    const double p = s.area > 0.0 ? s.normal_force / s.area : 0.0;
+    if (function)
+      return function(p, s.slip_speed, s.time, s.position.x, s.position.y, s.position.z);
+    if (const auto* m = std::get_if<ViscousFriction>(&model)) return m->mu(p, s.slip_speed);
+    if (const auto* m = std::get_if<DarmstadFriction>(&model)) return m->mu(p, s.slip_speed);
+    if (const auto* m = std::get_if<RenardFriction>(&model)) return m->mu(p, s.slip_speed);
+    return dynamic ? mu_dynamic : mu_static;
+  }
+  SlipLimits limits(const SlipState& s) const {
+    const double mu_s = std::max(mu(s, false), 0.0);
+    const bool varies = function || !std::holds_alternative<std::monostate>(model);
+    const double mu_d = varies ? mu_s : std::max(mu_dynamic, 0.0);
+    return {mu_s * s.normal_force, mu_d * s.normal_force};
+  }
+};
+
+// Shear limit m k (seed 002: usually m sigma_0 / sqrt(3), k the shear yield stress), times area.
+struct Tresca {
+  double factor_static = 0.0, factor_dynamic = 0.0;  // TRESCA_STA_M, TRESCA_DYN_M
+  double shear_yield = 0.0;                          // TRESCA_K
+  SlipLimits limits(const SlipState& s) const {
+    return {factor_static * shear_yield * s.area, factor_dynamic * shear_yield * s.area};
+  }
+};
+
+struct Sticking {
+  SlipLimits limits(const SlipState&) const {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    return {kInf, kInf};
+  }
+};
+
+using TangentialLaw = std::variant<Frictionless, Coulomb, Tresca, Sticking>;
+
+inline SlipLimits slip_limits(const TangentialLaw& law, const SlipState& s) {
+  return std::visit([&](const auto& l) { return l.limits(s); }, law);
+}
+
+// Radioss Ifiltr (seed 004, comment 8): F_t = a F_t + (1 - a) F_t,prev with a = Xfreq (1),
+// 2 pi dt / T with Xfreq = T the period (2), 2 pi Xfreq dt with Xfreq the cut-off frequency (3).
+struct FrictionFilter {
+  enum class Kind { None, Simple, Period, Frequency } kind = Kind::None;
+  double xfreq = 1.0;
+  double alpha(double dt) const;
+};
+
+}  // namespace abut

@@ -1,0 +1,307 @@
+// Enforcement at one contact point: its partner, the normal law with damping, the tangential
+// law, ties (sticking contact, FREEZE) and adhesion. Writes the point's own result slots only, so
+// points are evaluated in parallel.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "abut/contact/interface.hpp"
+#include "abut/contact/quad.hpp"
+
+namespace abut {
+namespace {
+
+// A point within this fraction of its element thickness counts as touching when sticking
+// contact ties it (absorbs round-off of initially coincident surfaces).
+constexpr double kTieGapFraction = 1e-6;
+
+QuadCorners corners_of(const std::array<std::int32_t, 4>& nodes, const ContactInput& in) {
+  QuadCorners c;
+  for (int a = 0; a < 4; ++a) c[a] = {in.x[nodes[a]], in.y[nodes[a]], in.z[nodes[a]]};
+  return c;
+}
+
+Vec3 velocity_at(const std::array<std::int32_t, 4>& nodes, const std::array<double, 4>& shape,
+                 const ContactInput& in) {
+  Vec3 v;
+  if (in.vx.empty()) return v;  // at construction
+  for (int a = 0; a < 4; ++a)
+    v += Vec3{in.vx[nodes[a]], in.vy[nodes[a]], in.vz[nodes[a]]} * shape[a];
+  return v;
+}
+
+}  // namespace
+
+ContactInterface::PointFrame ContactInterface::frame(const Side& side, std::size_t p,
+                                                     const ContactInput& in) const {
+  PointFrame r;
+  const std::int32_t node = side.point_node[p];
+  r.nodes = side.point_nodes(p);
+  r.shape = quad_shape(side.point_xi[p], side.point_eta[p]);
+  r.v = velocity_at(r.nodes, r.shape, in);
+  if (node < 0) {
+    const std::int32_t f = side.point_facet[p];
+    const QuadCorners c = corners_of(r.nodes, in);
+    double jacobian = 0.0;
+    r.normal = quad_normal(c, side.point_xi[p], side.point_eta[p], jacobian);
+    r.x = quad_point(c, side.point_xi[p], side.point_eta[p]);
+    r.area = side.point_weight[p] * jacobian;
+    r.active = side.active[f] != 0;
+    return r;
+  }
+  // A node: the area-weighted normal of its active facets; inactive when it has none.
+  r.x = {in.x[node], in.y[node], in.z[node]};
+  Vec3 n;
+  for (std::int32_t k = side.node_facet_start[node]; k < side.node_facet_start[node + 1]; ++k) {
+    const std::int32_t f = side.node_facets[k];
+    if (!side.active[f]) continue;
+    const QuadCorners c = corners_of(side.surface.facets[f], in);
+    n += cross(c[2] - c[0], c[3] - c[1]);
+    r.active = true;
+  }
+  const double length = norm(n);
+  r.normal = length > 0.0 ? n / length : Vec3{};
+  r.area = side.node_area[node];
+  return r;
+}
+
+Partner ContactInterface::partner_of(const Pass& pass, std::size_t p, const PointFrame& f,
+                                     const ContactInput& in, std::int32_t previous) const {
+  const Side& own = sides_[pass.own];
+  const Side& target = sides_[pass.target];
+  const TargetFacets facets{
+      target.surface.facets, target.sharp, target.active, target.depth, in.x, in.y, in.z};
+  PartnerRules rules;  // the regular search: within the facets' own detection depth
+  rules.depth_above = settings_.adhesion ? settings_.adhesion->zone() : 0.0;
+  rules.from_behind = settings_.sense == ContactSense::Negative;
+  rules.edge_tolerance = settings_.edge_tolerance;
+  rules.smooth_reach = smooth_reach_;
+  const auto first = pass.candidates.offsets[p], last = pass.candidates.offsets[p + 1];
+  const Partner h = find_partner(facets, {pass.candidates.facets.data() + first, last - first},
+                                 f.nodes, f.x, f.normal, rules);
+  if (h.facet >= 0 || previous < 0) return h;
+  // A point in contact last step that is now deeper than the other side's detection depth (its
+  // facets are thinner than the point's own elements) keeps its partner or a neighbour of it, down
+  // to its own detection depth: contact acts until the surfaces separate. The neighbours are the
+  // facets around the partner's nodes (the broad phase may no longer list them).
+  constexpr std::size_t kMaxNear = 64;
+  std::array<std::int32_t, kMaxNear> near{};
+  std::size_t count = 0;
+  for (const std::int32_t node : target.surface.facets[previous])
+    for (std::int32_t k = target.node_facet_start[node];
+         k < target.node_facet_start[node + 1] && count < kMaxNear; ++k)
+      if (std::find(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(count),
+                    target.node_facets[k]) == near.begin() + static_cast<std::ptrdiff_t>(count))
+        near[count++] = target.node_facets[k];
+  std::sort(near.begin(),
+            near.begin() + static_cast<std::ptrdiff_t>(count));  // facet order, as the broad phase
+  rules.point_depth = own.point_depth[p];  // as deep as either side's elements reach
+  return find_partner(facets, {near.data(), count}, f.nodes, f.x, f.normal, rules);
+}
+
+double ContactInterface::spring(const Side& own, std::size_t p, double area, const Side& target,
+                                std::int32_t f) const {
+  const std::size_t np = part_ids_.size();
+  const std::size_t a = static_cast<std::size_t>(own.point_part[p]);
+  double scale = 0.0;
+  if (f >= 0) {
+    scale = part_scale_[a * np + static_cast<std::size_t>(target.facet_part[f])];
+  } else {  // the stiffest partner (stable-step bound)
+    for (std::size_t b = 0; b < np; ++b) scale = std::max(scale, part_scale_[a * np + b]);
+  }
+  if (settings_.stiffness.rule == StiffnessRule::FacetPenalty) {
+    const double pfac =
+        f >= 0 ? std::min(own.point_pfac[p], target.surface.penalty[f]) : own.point_pfac[p];
+    return pfac * area * scale;
+  }
+  const double km = f >= 0 ? target.facet_km[f] : target.max_km;
+  return combined_stiffness(settings_.stiffness, km, own.point_ks[p]) * own.point_share[p] * scale;
+}
+
+void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactInput& in) {
+  const std::int32_t last_partner = pass.hit[p] ? pass.hit_facet[p] : -1;
+  pass.hit[p] = 0;
+  const Side& own = sides_[pass.own];
+  const Side& target = sides_[pass.target];
+  if (pass.state[p] == kReleased) return;
+  const PointFrame f = frame(own, p, in);
+  if (!f.active) return;
+  const ContactSettings& s = settings_;
+  const double area = f.area;
+  // The point's share of each node's mass: m_i * N_i * (its area / the node's area), so that
+  // the shares of all points add up to the nodal masses; on the other side a point may cover
+  // more than a node's area: never more than the node.
+  auto mass_share = [&](const Side& side, const std::array<std::int32_t, 4>& nodes,
+                        const std::array<double, 4>& n) {
+    double m = 0.0;
+    for (int a = 0; a < 4; ++a)
+      if (side.node_area[nodes[a]] > 0.0)
+        m += mass_[nodes[a]] * std::min(1.0, n[a] * area / side.node_area[nodes[a]]);
+    return m;
+  };
+  const double m_own = mass_share(own, f.nodes, f.shape);
+
+  struct Spring {
+    Vec3 point, normal, velocity;
+    double stiffness, effective_mass;
+  };
+  auto partner_spring = [&](std::int32_t facet, double pxi, double peta) {
+    const auto& nodes = target.surface.facets[facet];
+    const QuadCorners c = corners_of(nodes, in);
+    const auto n = quad_shape(pxi, peta);
+    Spring r;
+    double jacobian = 0.0;
+    r.point = quad_point(c, pxi, peta);
+    r.normal = quad_normal(c, pxi, peta, jacobian);
+    r.velocity = velocity_at(nodes, n, in);
+    r.stiffness = spring(own, p, area, target, facet);
+    const double m_target = mass_share(target, nodes, n);
+    r.effective_mass = m_own + m_target > 0.0 ? m_own * m_target / (m_own + m_target) : 0.0;
+    return r;
+  };
+  // Fraction xi of the critical damping 2 sqrt(k m) of a spring k.
+  auto damping_of = [&](double k, const Spring& r) {
+    return 2.0 * s.damping * std::sqrt(k * r.effective_mass);
+  };
+  auto record = [&](std::int32_t facet, double pxi, double peta, const Spring& r, double k,
+                    const Vec3& force) {
+    pass.hit[p] = 1;
+    pass.hit_facet[p] = facet;
+    pass.hit_xi[p] = pxi;
+    pass.hit_eta[p] = peta;
+    pass.fx[p] = force.x;
+    pass.fy[p] = force.y;
+    pass.fz[p] = force.z;
+    pass.area[p] = area;
+    pass.omega2[p] = r.effective_mass > 0.0 ? k / r.effective_mass : 0.0;
+  };
+  auto clear_history = [&] {
+    pass.htx[p] = pass.hty[p] = pass.htz[p] = 0.0;
+    pass.sliding[p] = 0;
+  };
+
+  // Tied contact (sticking contact of seed 000, FREEZE of OptiStruct): a spring to the fixed
+  // partner point in every direction, in tension too; sticking contact fails for good when its
+  // traction exceeds sigma_stick.
+  auto tied = [&]() {
+    const std::int32_t facet = pass.tie_facet[p];
+    if (!target.active[facet]) return false;
+    const Spring r = partner_spring(facet, pass.tie_xi[p], pass.tie_eta[p]);
+    const Vec3 stretch = f.x - r.point + r.normal * pass.offset[p];
+    const Vec3 v_rel = f.v - r.velocity;
+    const double c = damping_of(r.stiffness, r);
+    const Vec3 force = stretch * (-r.stiffness) - v_rel * c;
+    if (s.stick_stress && norm(force) > *s.stick_stress * area) return false;  // fails for good
+    record(facet, pass.tie_xi[p], pass.tie_eta[p], r, r.stiffness, force);
+    const double fn = dot(force, r.normal);
+    pass.normal_force[p] = fn;
+    pass.tangential_force[p] = norm(force - r.normal * fn);
+    pass.pressure[p] = fn / area;
+    pass.slip_speed[p] = norm(v_rel - r.normal * dot(v_rel, r.normal));
+    pass.energy[p] = 0.5 * r.stiffness * dot(stretch, stretch);
+    pass.damping_work[p] = c * dot(v_rel, v_rel) * in.dt;
+    pass.slip_work[p] = 0.0;
+    pass.penetration[p] = std::max(-dot(stretch, r.normal), 0.0);
+    return true;
+  };
+
+  if (pass.state[p] == kTied) {
+    if (tied()) return;
+    pass.state[p] = kUntied;
+  }
+
+  const Partner h = partner_of(pass, p, f, in, last_partner);
+  if (h.facet < 0) {
+    clear_history();
+    pass.offset[p] = 0.0;
+    pass.adhered[p] = 0;
+    return;
+  }
+  const bool from_behind = s.sense == ContactSense::Negative;
+  const bool bilateral = s.sense == ContactSense::Bilateral;
+  const double gap =
+      from_behind ? -h.gap : h.gap;      // opening along the direction the contact pushes
+  if (gap >= 0.0) pass.offset[p] = 0.0;  // separated: the initial offset has done its job
+  if (s.stick_stress && pass.state[p] == kFree && gap <= kTieGapFraction * own.point_thickness[p]) {
+    pass.state[p] = kTied;
+    pass.tie_facet[p] = h.facet;
+    pass.tie_xi[p] = h.xi;
+    pass.tie_eta[p] = h.eta;
+    if (tied()) return;
+    pass.state[p] = kUntied;
+  }
+  const double penetration = -gap - pass.offset[p] - pass.shift[p];
+  // Outside: no force, unless the contact is bilateral or the point is adhered and still within
+  // the adhesive zone (Radioss IVIS2 = -1: the bond breaks at its border).
+  bool adhesive = false;
+  if (s.adhesion) {
+    if (penetration > 0.0)
+      pass.adhered[p] = 1;
+    else if (pass.adhered[p] && -penetration <= s.adhesion->zone())
+      adhesive = true;
+    else
+      pass.adhered[p] = 0;
+  }
+  if (!(penetration > 0.0) && !bilateral && !adhesive) {
+    clear_history();
+    return;
+  }
+
+  const Spring r = partner_spring(h.facet, h.xi, h.eta);
+  const Vec3 normal = from_behind ? r.normal * -1.0 : r.normal;  // the push on the point
+  NormalResponse response;
+  if (adhesive) {
+    const double slope = s.adhesion->max_stress / s.adhesion->zone();
+    response = {s.adhesion->pressure(-penetration), slope, 0.5 * slope * penetration * penetration};
+  } else {
+    response = evaluate(s.normal_law, penetration, r.stiffness / area);
+  }
+  const double k_n = response.stiffness * area;
+  const double c = damping_of(k_n, r);
+  const Vec3 v_rel = f.v - r.velocity;
+  const double v_n = dot(v_rel, normal);  // < 0 while approaching
+  const double elastic = response.pressure * area;
+  // Damping may reduce the push but never pulls, unless the contact holds in tension.
+  double fn = elastic - c * v_n;
+  if (!bilateral && !adhesive) fn = std::max(fn, 0.0);
+  const Vec3 v_t = v_rel - normal * v_n;
+  const double slip_speed = norm(v_t);
+  const double k_t = s.tangential_penalty ? *s.tangential_penalty * area : r.stiffness;
+  const Vec3 previous{pass.htx[p], pass.hty[p], pass.htz[p]};
+  Vec3 ft;
+  double slip_work = 0.0;
+  bool sliding = false;
+  if (adhesive) {  // viscous resistance replaces friction in the adhesive zone
+    ft = s.adhesion->viscous_force(v_t, area);
+    slip_work = -dot(ft, v_t) * in.dt;
+  } else {
+    const SlipLimits limits =
+        slip_limits(s.tangential_law, {std::max(fn, 0.0), area, slip_speed, in.time, f.x});
+    if (limits.stick > 0.0 || limits.slide > 0.0) {
+      const TangentialResult t =
+          return_to_limit(previous, normal, v_t, in.dt, k_t, limits, pass.sliding[p] != 0);
+      ft = t.force;
+      slip_work = t.slip_work;
+      sliding = t.sliding;
+    }
+    if (s.friction_filter.kind != FrictionFilter::Kind::None) {  // Radioss Ifiltr
+      const double a = s.friction_filter.alpha(in.dt);
+      ft = ft * a + (previous - normal * dot(previous, normal)) * (1.0 - a);
+    }
+  }
+  pass.htx[p] = ft.x;
+  pass.hty[p] = ft.y;
+  pass.htz[p] = ft.z;
+  pass.sliding[p] = sliding ? 1 : 0;
+  record(h.facet, h.xi, h.eta, r, std::max(k_n, k_t), normal * fn + ft);
+  pass.normal_force[p] = fn;
+  pass.tangential_force[p] = norm(ft);
+  pass.pressure[p] = fn / area;
+  pass.slip_speed[p] = slip_speed;
+  pass.energy[p] = response.energy * area + (adhesive ? 0.0 : 0.5 * dot(ft, ft) / k_t);
+  pass.damping_work[p] = (fn - elastic) * (-v_n) * in.dt;
+  pass.slip_work[p] = slip_work;
+  pass.penetration[p] = penetration;
+}
+
+}  // namespace abut

@@ -1,0 +1,68 @@
+#include "abut/contact/narrow_phase.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace abut {
+namespace {
+
+bool share_a_node(const std::array<std::int32_t, 4>& a, const std::array<std::int32_t, 4>& b) {
+  for (auto i : a)
+    for (auto j : b)
+      if (i == j) return true;
+  return false;
+}
+
+}  // namespace
+
+Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> candidates,
+                     const std::array<std::int32_t, 4>& own_nodes, const Vec3& x_p, const Vec3& n_p,
+                     const PartnerRules& rules) {
+  Partner best;
+  double best_distance = std::numeric_limits<double>::infinity();
+  const bool has_normal = n_p.x != 0.0 || n_p.y != 0.0 || n_p.z != 0.0;
+  for (const std::int32_t f : candidates) {
+    if (!target.active[f]) continue;
+    const auto& nodes = target.nodes[f];
+    if (share_a_node(own_nodes, nodes)) continue;
+    QuadCorners c;
+    for (int a = 0; a < 4; ++a) c[a] = {target.x[nodes[a]], target.y[nodes[a]], target.z[nodes[a]]};
+    const double below = std::max(target.depth[f], rules.point_depth);
+    // The distance to the facet's bounding box bounds the distance to the facet from below:
+    // skip facets that cannot be within reach or closer than the best one so far.
+    const double reach = std::max({below, rules.depth_above, rules.edge_tolerance});
+    double box_distance2 = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      const double lo = std::min({c[0][i], c[1][i], c[2][i], c[3][i]});
+      const double hi = std::max({c[0][i], c[1][i], c[2][i], c[3][i]});
+      const double out = std::max({lo - x_p[i], x_p[i] - hi, 0.0});
+      box_distance2 += out * out;
+    }
+    if (box_distance2 > reach * reach || box_distance2 > best_distance * best_distance) continue;
+    const QuadProjection q = project_onto_quad(c, x_p);
+    if (has_normal) {
+      const double facing = dot(n_p, q.normal);
+      if (rules.from_behind ? facing <= 0.0 : facing >= 0.0) continue;
+    }
+    // Beyond a sharp (or free) edge only within delta_edge; beyond a smooth edge only within the
+    // dead zone of a convex edge, |gap| tan(alpha_edge) wide (docs/contact.md, narrow phase).
+    if (q.crossed_edges != 0) {
+      const bool sharp = (q.crossed_edges & target.sharp[f]) != 0;
+      const double allowed =
+          sharp ? rules.edge_tolerance
+                : std::max(rules.edge_tolerance, std::abs(q.gap) * rules.smooth_reach);
+      if (q.overshoot > allowed) continue;
+    }
+    // The far side: deeper than the pair's detection depth (or, from behind, further out).
+    const double inward = rules.from_behind ? q.gap : -q.gap;
+    if (inward > below || -inward > std::max(rules.depth_above, below)) continue;
+    if (q.distance < best_distance) {
+      best_distance = q.distance;
+      best = {f, q.xi, q.eta, q.gap};
+    }
+  }
+  return best;
+}
+
+}  // namespace abut

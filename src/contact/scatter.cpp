@@ -1,0 +1,73 @@
+// Scatter: the forces of the evaluated points to the nodes, serially in point order (so the sums
+// do not depend on the thread count), with the interface's statistics, nodal pressure and wear.
+#include <algorithm>
+#include <cmath>
+
+#include "abut/contact/interface.hpp"
+#include "abut/contact/quad.hpp"
+
+namespace abut {
+
+void ContactInterface::scatter(const ContactInput& in, ContactForces& out) {
+  const WearRateFunction* wear_rate[2] = {&settings_.wear_rate1, &settings_.wear_rate2};
+  if (self_contact() && !settings_.wear_rate1) wear_rate[0] = &settings_.wear_rate2;
+  double omega2_max = 0.0;
+  // Serial, in point order: the sums do not depend on the thread count.
+  for (const Pass& pass : passes_) {
+    const Side& own = sides_[pass.own];
+    const Side& target = sides_[pass.target];
+    const double w = pass.weight;
+    for (std::size_t p = 0; p < pass.hit.size(); ++p) {
+      if (!pass.hit[p]) continue;
+      const auto own_nodes = own.point_nodes(p);
+      const auto& target_nodes = target.surface.facets[pass.hit_facet[p]];
+      const auto n_own = quad_shape(own.point_xi[p], own.point_eta[p]);
+      const auto n_target = quad_shape(pass.hit_xi[p], pass.hit_eta[p]);
+      const Vec3 force = Vec3{pass.fx[p], pass.fy[p], pass.fz[p]} * w;
+      // Action on the point's nodes, reaction on the partner facet's nodes at the projection.
+      for (int a = 0; a < 4; ++a) {
+        out.fx[own_nodes[a]] += force.x * n_own[a];
+        out.fy[own_nodes[a]] += force.y * n_own[a];
+        out.fz[own_nodes[a]] += force.z * n_own[a];
+      }
+      for (int a = 0; a < 4; ++a) {
+        out.fx[target_nodes[a]] -= force.x * n_target[a];
+        out.fy[target_nodes[a]] -= force.y * n_target[a];
+        out.fz[target_nodes[a]] -= force.z * n_target[a];
+      }
+      if (pass.own == 0) stats_.force += force;
+      if (pass.target == 0) stats_.force -= force;
+      stats_.normal_force += w * pass.normal_force[p];
+      stats_.tangential_force += w * pass.tangential_force[p];
+      stats_.elastic_energy += w * pass.energy[p];
+      stats_.damping_energy += w * pass.damping_work[p];
+      stats_.friction_energy += w * pass.slip_work[p];
+      stats_.max_penetration = std::max(stats_.max_penetration, pass.penetration[p]);
+      ++stats_.active_points;
+      omega2_max = std::max(omega2_max, pass.omega2[p]);
+
+      // Nodal pressure and wear: area-weighted averages over each node's tributary area.
+      const double load = w * pass.area[p];
+      for (int a = 0; a < 4; ++a) {
+        pressure_[own_nodes[a]] += load * n_own[a] * pass.pressure[p] / own.node_area[own_nodes[a]];
+        pressure_[target_nodes[a]] +=
+            load * n_target[a] * pass.pressure[p] / target.node_area[target_nodes[a]];
+      }
+      const WearRateFunction& own_rate = *wear_rate[self_contact() ? 0 : pass.own];
+      const WearRateFunction& target_rate = *wear_rate[self_contact() ? 0 : pass.target];
+      if (own_rate) {
+        const double dose = load * own_rate(pass.pressure[p], pass.slip_speed[p]) * in.dt;
+        for (int a = 0; a < 4; ++a)
+          wear_[own_nodes[a]] += dose * n_own[a] / own.node_area[own_nodes[a]];
+      }
+      if (target_rate) {
+        const double dose = load * target_rate(pass.pressure[p], pass.slip_speed[p]) * in.dt;
+        for (int a = 0; a < 4; ++a)
+          wear_[target_nodes[a]] += dose * n_target[a] / target.node_area[target_nodes[a]];
+      }
+    }
+  }
+  if (omega2_max > 0.0) stats_.stable_step = 2.0 / std::sqrt(omega2_max);
+}
+
+}  // namespace abut
