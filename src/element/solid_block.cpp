@@ -114,23 +114,6 @@ void check_material(std::int64_t part_id, const MaterialParams& material) {
   }
 }
 
-// Modal gradient (hex8.hpp) of a hex at the given node coordinates.
-Hex8ModalGradient modal_gradient_at(const Hex8& hex, const Nodes& nodes) {
-  Hex8Coords x;
-  for (int a = 0; a < 8; ++a) {
-    const auto node = static_cast<std::size_t>(hex[a]);
-    x.x[a] = nodes.x[node];
-    x.y[a] = nodes.y[node];
-    x.z[a] = nodes.z[node];
-  }
-  Hex8Modes c;
-  hex8_to_modes(x.x, c.x);
-  hex8_to_modes(x.y, c.y);
-  hex8_to_modes(x.z, c.z);
-  Hex8ModalGradient g;
-  hex8_modal_gradient(c, g);
-  return g;
-}
 
 }  // namespace
 
@@ -464,7 +447,7 @@ SolidBlock::SolidBlock(std::int64_t part_id, const MaterialParams& material,
         throw InputError(message);
       }
     }
-    const Hex8ModalGradient g = modal_gradient_at(m.hexes[e], reference);
+    const Hex8ModalGradient g = hex8_modal_gradient_at(m.hexes[e], reference);
     if (!(g.volume > 0.0)) {
       throw InputError(m.element_name(e) +
                        ": volume <= 0 in the initial configuration; expected nodes 1-4 "
@@ -508,7 +491,7 @@ void SolidBlock::add_lumped_mass(std::vector<double>& nodal_mass) const {
 double SolidBlock::initial_stable_step(const Nodes& reference) const {
   double step = std::numeric_limits<double>::infinity();
   for (const Hex8& hex : impl_->hexes) {
-    const double length = hex8_critical_length(modal_gradient_at(hex, reference), impl_->lame_lambda, impl_->lame_mu);
+    const double length = hex8_critical_length(hex8_modal_gradient_at(hex, reference), impl_->lame_lambda, impl_->lame_mu);
     step = std::min(step, impl_->critical_step(length, 0.0));
   }
   return step;

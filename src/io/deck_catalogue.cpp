@@ -42,6 +42,13 @@ const std::map<std::string, KeywordReader, std::less<>>& supported() {
       {"*GEOMETRY_ELLIPSOID", read_geometry_ellipsoid},
       {"*GEOMETRY_PART", read_geometry_part},
       {"*CONTACT", read_contact},
+      {"*CONTACT_ADHESION", read_contact_adhesion},
+      {"*CONTACT_DISCRETIZATION", read_contact_discretization},
+      {"*CONTACT_FRICTION", read_contact_friction},
+      {"*CONTACT_INITIAL", read_contact_initial},
+      {"*CONTACT_NORMAL", read_contact_normal},
+      {"*CONTACT_SCALE_PENALTY", read_contact_scale_penalty},
+      {"*CONTACT_STIFFNESS", read_contact_stiffness},
   };
   return table;
 }

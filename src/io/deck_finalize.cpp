@@ -2,6 +2,7 @@
 // refined and smoothed (*CHANGE_P-ORDER, *SMOOTH_MESH, *PART alpha_max) and the initial
 // velocities are applied to the final nodes.
 #include <algorithm>
+#include <map>
 #include <set>
 
 #include "abut/mesh/refine.hpp"
@@ -34,6 +35,45 @@ const Geometry& geometry_of(const Model& model, const IdReference& ref) {
                                     " does not exist (defined geometries: " + joined(ids) + ")");
   }
   return g->geometry;
+}
+
+// The *CONTACT_* keywords into the *CONTACT each refines, in deck order (a keyword may come before
+// its *CONTACT). Then the checks that need every keyword of a contact.
+void merge_contact_keywords(Model& model, const std::vector<PendingContactKeyword>& keywords) {
+  std::map<std::pair<std::int64_t, std::string>, SourceLocation> given;
+  for (const PendingContactKeyword& k : keywords) {
+    const auto spec = std::find_if(model.contacts.begin(), model.contacts.end(),
+                                   [&k](const ContactSpec& c) { return c.id == k.contact; });
+    if (spec == model.contacts.end()) {
+      std::set<std::int64_t> ids;
+      for (const ContactSpec& c : model.contacts) ids.insert(c.id);
+      throw InputError(k.where, "contact " + std::to_string(k.contact) +
+                                    " does not exist: coid must be the ctid of a *CONTACT "
+                                    "(defined contacts: " +
+                                    joined(ids) + ")");
+    }
+    if (!k.repeatable) {
+      const auto [first, inserted] =
+          given.emplace(std::make_pair(k.contact, k.where.keyword), k.where);
+      if (!inserted) {
+        throw InputError(
+            k.where, k.where.keyword + " is given twice for contact " + std::to_string(k.contact) +
+                         " (first at " + first->second.file + ":" +
+                         std::to_string(first->second.line) + "): give it once per contact");
+      }
+    }
+    k.apply(*spec);
+  }
+  for (const ContactSpec& c : model.contacts) {
+    check_contact_options(c);
+    if (c.surface1.type == EntityType::NodeSet &&
+        c.discretisation != Discretisation::NodeToSurface) {
+      throw InputError(c.surface1.where,
+                       "a node set is a surface only for node-to-surface contact: add "
+                       "*CONTACT_DISCRETIZATION with N2S for contact " +
+                           std::to_string(c.id) + ", or give a part (P), part set (PS) or ALL");
+    }
+  }
 }
 
 }  // namespace
@@ -113,6 +153,9 @@ DeckResult DeckReader::finish() {
       model.nodes_of(e);
     }
   }
+  // *CONTACT_* keywords, now that every *CONTACT, function and entity is known.
+  merge_contact_keywords(model, contact_keywords);
+
   // Rotations are rigid-body degrees of freedom.
   for (const MotionBoundary& m : model.motions) {
     const bool rotates =

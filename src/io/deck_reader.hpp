@@ -12,6 +12,8 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <unordered_map>
 #include <vector>
 
@@ -83,6 +85,17 @@ struct PendingVelocity {
   Vec3 centre;
 };
 
+// A *CONTACT_* keyword (*CONTACT_NORMAL, *CONTACT_FRICTION, ...) that refines the *CONTACT with id
+// `contact`, which may come before or after it in the deck. Applied in deck order once the whole
+// deck is in (deck_finalize.cpp): `apply` sets the ContactSpec fields and checks them against the
+// *CONTACT's own, raising InputError at the keyword's fields.
+struct PendingContactKeyword {
+  std::int64_t contact = 0;
+  SourceLocation where;     // the coid field
+  bool repeatable = false;  // may be given several times for one contact (*CONTACT_SCALE_PENALTY)
+  std::function<void(ContactSpec&)> apply;
+};
+
 class DeckReader {
  public:
   // Reads a file or a text with the given placement; `depth` counts nested includes.
@@ -150,6 +163,7 @@ class DeckReader {
   std::vector<PendingSmoothing> smoothing;
   std::vector<PendingVelocity> velocities;
   std::vector<EntityRef> entity_references;  // entities that must exist
+  std::vector<PendingContactKeyword> contact_keywords;
   std::optional<SourceLocation> time_where, units_where, title_where;
 
  private:
@@ -196,6 +210,42 @@ void read_geometry_pipe(DeckReader&, Block&);
 void read_geometry_ellipsoid(DeckReader&, Block&);
 void read_geometry_part(DeckReader&, Block&);
 void read_contact(DeckReader&, Block&);
+void read_contact_discretization(DeckReader&, Block&);
+void read_contact_normal(DeckReader&, Block&);
+void read_contact_friction(DeckReader&, Block&);
+void read_contact_adhesion(DeckReader&, Block&);
+void read_contact_stiffness(DeckReader&, Block&);
+void read_contact_scale_penalty(DeckReader&, Block&);
+void read_contact_initial(DeckReader&, Block&);
+
+// keyword_contact_laws.cpp, shared with keyword_contact_friction.cpp.
+// Records a *CONTACT_* keyword whose first field is coid; `apply` runs once the deck is in.
+void refine_contact(DeckReader& d, const Row& r, std::function<void(ContactSpec&)> apply,
+                    bool repeatable = false);
+// Options of different keywords that the contact library does not combine (one of them would do
+// nothing): an InputError at the *CONTACT_* field. Run once every keyword is merged.
+void check_contact_options(const ContactSpec& c);
+// "*CONTACT <id> at <file>:<line>", for messages that point at the contact a keyword refines.
+std::string contact_at(const ContactSpec& c);
+
+template <class T>
+struct WordChoice {
+  std::string_view word;  // upper case, or an integer synonym such as "1000"
+  T value;
+};
+// A field that is one of the words of `choices` (any case; an integer written as 5 or 5.0 matches
+// "5"); `fallback` when empty. `expected` lists the choices for the error message.
+template <class T>
+T word_choice(const Row& r, std::size_t i, T fallback,
+              std::type_identity_t<std::initializer_list<WordChoice<T>>> choices,
+              const std::string& expected) {
+  if (!r.given(i)) return fallback;
+  std::string w = upper(r.text(i));
+  if (const auto n = parse_integer(w)) w = std::to_string(*n);
+  for (const WordChoice<T>& c : choices)
+    if (w == c.word) return c.value;
+  r.fail(i, "expected " + expected + ", got '" + r.text(i) + "'");
+}
 
 // deck_catalogue.cpp: the supported keywords, the other IMPETUS keywords, suggestions.
 KeywordReader find_keyword_reader(const std::string& keyword);

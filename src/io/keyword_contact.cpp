@@ -26,7 +26,10 @@ void read_contact(DeckReader& d, Block& b) {
       b.row({"entype_1", "enid_1", "entype_2", "enid_2", "mu", "pfac", "t_beg", "t_end"});
   const std::initializer_list<EntityType> surfaces = {EntityType::Part, EntityType::PartSet,
                                                       EntityType::All};
-  c.surface1 = d.entity(r2, 0, 1, surfaces);
+  // A node set (NS) is a surface 1 of node-to-surface contact only (*CONTACT_DISCRETIZATION N2S,
+  // checked once the whole deck is in).
+  c.surface1 = d.entity(
+      r2, 0, 1, {EntityType::NodeSet, EntityType::Part, EntityType::PartSet, EntityType::All});
   c.surface2 = d.entity(r2, 2, 3, surfaces);
   const auto mu = r2.number_or_function(4, 0.0);
   if (mu.function_id) {

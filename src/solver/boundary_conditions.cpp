@@ -46,8 +46,9 @@ BoundaryConditions resolve_boundary_conditions(
                            deformable_nodes.end());
     if (!deformable_nodes.empty()) {
       if (rotates)
-        throw InputError(m.where, "rotational constraints and RX/RY/RZ motions act on rigid parts "
-                                  "only; solid nodes have no rotational degrees of freedom");
+        throw InputError(m.where,
+                         "rotational constraints and RX/RY/RZ motions act on rigid parts "
+                         "only; solid nodes have no rotational degrees of freedom");
       bc.nodal.push_back({&m, std::move(deformable_nodes)});
     }
   }

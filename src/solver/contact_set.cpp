@@ -6,8 +6,10 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <utility>
 
 #include "abut/contact/penalty.hpp"
+#include "abut/element/stable_step.hpp"
 #include "abut/mesh/skin.hpp"
 #include "abut/solver/contact_surfaces.hpp"
 
@@ -45,11 +47,6 @@ std::map<std::int64_t, PartPenalty> part_penalties(const Model& model, const Con
   std::map<std::int64_t, PartPenalty> out;
   for (const auto* faces : {&s1, &s2})
     for (const SkinFace& f : *faces) out[f.part].part_id = f.part;
-  if (!spec.penalty && !model.units)
-    throw InputError(spec.where,
-                     "neither pfac nor *UNIT_SYSTEM is given: the automatic penalty "
-                     "stiffness is defined in SI units (seed 000), so state the unit "
-                     "system with *UNIT_SYSTEM or give pfac on line 2");
   for (auto& [part_id, p] : out) {
     if (spec.penalty) {
       p.penalty = *spec.penalty;
@@ -57,6 +54,13 @@ std::map<std::int64_t, PartPenalty> part_penalties(const Model& model, const Con
     }
     const MaterialParams& material = model.material_of_part(part_id);
     p.automatic = true;
+    if (spec.element_penalty && !is_rigid(material))
+      continue;  // per facet, filled in by the caller
+    if (!model.units)
+      throw InputError(spec.where,
+                       "neither pfac nor *UNIT_SYSTEM is given: the automatic penalty "
+                       "stiffness is defined in SI units (seed 000), so state the unit "
+                       "system with *UNIT_SYSTEM or give pfac on line 2");
     p.penalty = is_rigid(material) ? rigid_penalty(v_max, *model.units)
                                    : automatic_penalty(initial_moduli(material).bulk,
                                                        smallest_element_volume(model.mesh, part_id),
@@ -190,6 +194,31 @@ ContactSettings settings_of(const Model& model, const ContactSpec& spec) {
   return s;
 }
 
+// Critical step of a face's hex (stable_step.hpp), its material's P-wave speed and density.
+double element_step(const Model& model, const SkinFace& f) {
+  const MaterialParams& material = model.material_of_part(f.part);
+  const ElasticModuli m = initial_moduli(material);
+  const double lambda = m.bulk - 2.0 * m.shear / 3.0;
+  const Hex8& hex = model.mesh.hexes[static_cast<std::size_t>(f.hex)];
+  const double length =
+      hex8_critical_length(hex8_modal_gradient_at(hex, model.mesh.nodes), lambda, m.shear);
+  return length / std::sqrt((lambda + 2.0 * m.shear) / density_of(material));
+}
+
+double lightest_node(const SkinFace& f, std::span<const double> node_mass) {
+  double m = std::numeric_limits<double>::infinity();
+  for (auto n : f.nodes) m = std::min(m, node_mass[static_cast<std::size_t>(n)]);
+  return m;
+}
+
+double face_area(const Nodes& nodes, const SkinFace& f) {
+  auto at = [&](int a) {
+    const auto i = static_cast<std::size_t>(f.nodes[a]);
+    return Vec3{nodes.x[i], nodes.y[i], nodes.z[i]};
+  };
+  return 0.5 * norm(cross(at(2) - at(0), at(3) - at(1)));
+}
+
 // The exterior faces holding at least one of `nodes`; InputError if a node is on none.
 std::vector<SkinFace> faces_touching(const std::vector<SkinFace>& faces,
                                      const std::vector<std::int32_t>& nodes, std::size_t node_count,
@@ -284,7 +313,16 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
     const std::vector<SkinFace> faces2 = faces_of(model, spec.surface2, spec.merge);
     const std::map<std::int64_t, PartPenalty> penalties =
         part_penalties(model, spec, faces1, faces2, v_max);
-    const auto penalty_of = [&penalties](std::int64_t part) { return penalties.at(part).penalty; };
+    std::function<double(const SkinFace&)> penalty_of = [&penalties](const SkinFace& f) {
+      return penalties.at(f.part).penalty;
+    };
+    if (spec.element_penalty)
+      penalty_of = [&](const SkinFace& f) {
+        const MaterialParams& material = model.material_of_part(f.part);
+        if (is_rigid(material)) return penalties.at(f.part).penalty;
+        return element_penalty(element_step(model, f), lightest_node(f, node_mass),
+                               face_area(model.mesh.nodes, f));
+      };
     std::function<double(std::int64_t)> bulk_of;
     if (spec.stiffness.rule != StiffnessRule::FacetPenalty)
       bulk_of = [&model, &penalties](std::int64_t part) {
@@ -304,6 +342,14 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
     } catch (const ContactSetupError& e) {
       throw InputError(location_of(spec, e.setting()), e.what());
     }
+    if (spec.element_penalty)  // the softest facet of each part
+      for (PartPenalty& part : report.parts)
+        if (part.penalty == 0.0) {
+          part.penalty = std::numeric_limits<double>::infinity();
+          for (const std::vector<SkinFace>* faces : {&std::as_const(faces1), &faces2})
+            for (const SkinFace& f : *faces)
+              if (f.part == part.part_id) part.penalty = std::min(part.penalty, penalty_of(f));
+        }
     report.pairs = interfaces_.back().pair_stiffness();
     report.points = interfaces_.back().point_count();
     report.released_points = interfaces_.back().released_points();

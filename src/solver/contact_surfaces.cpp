@@ -10,7 +10,7 @@
 namespace abut {
 
 ContactSurface contact_surface(const Mesh& mesh, std::span<const SkinFace> faces,
-                               const std::function<double(std::int64_t part)>& penalty_of_part,
+                               const std::function<double(const SkinFace&)>& penalty_of_face,
                                const std::function<double(std::int64_t part)>& bulk_of_part) {
   ContactSurface s;
   s.facets.reserve(faces.size());
@@ -18,9 +18,14 @@ ContactSurface contact_surface(const Mesh& mesh, std::span<const SkinFace> faces
     const double bulk = bulk_of_part ? bulk_of_part(f.part) : 0.0;
     const double volume =
         bulk_of_part ? hex_volume(mesh.nodes, mesh.hexes[static_cast<std::size_t>(f.hex)]) : 0.0;
-    s.add(f.nodes, f.part, penalty_of_part(f.part), f.thickness, bulk, volume);
+    s.add(f.nodes, f.part, penalty_of_face(f), f.thickness, bulk, volume);
   }
   return s;
+}
+
+double element_penalty(double element_step, double lightest_node, double face_area) {
+  const double omega2 = 4.0 / (element_step * element_step);
+  return kElementPenaltyFraction * lightest_node * omega2 / (2.0 * face_area);
 }
 
 double smallest_element_volume(const Mesh& mesh, std::int64_t part) {

@@ -20,7 +20,8 @@ void RigidBody::initialise(const std::vector<double>& x, const std::vector<doubl
     // Point-mass inertia about the centre: m (r.r I - r (x) r).
     const double rr = dot(r, r);
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) inertia0(i, j) += nodal_mass[n] * ((i == j ? rr : 0.0) - r[i] * r[j]);
+      for (int j = 0; j < 3; ++j)
+        inertia0(i, j) += nodal_mass[n] * ((i == j ? rr : 0.0) - r[i] * r[j]);
   }
   rotation = Mat3::identity();
 }

@@ -9,18 +9,19 @@
 #include <map>
 #include <string>
 
+#include "abut/core/parallel.hpp"
 #include "abut/element/solid_block.hpp"
+#include "abut/mesh/skin.hpp"
 #include "boundary_conditions.hpp"
 #include "contact_set.hpp"
-#include "abut/core/parallel.hpp"
-#include "abut/mesh/skin.hpp"
 #include "rigid_body.hpp"
 
 namespace abut {
 
 namespace {
 
-// A run whose step falls below this fraction of its initial step stops (unless *TIME dt_min is set).
+// A run whose step falls below this fraction of its initial step stops (unless *TIME dt_min is
+// set).
 constexpr double kStepCollapse = 1e-3;
 
 // Where one element's force on one node sits: block and offset into its element_forces().
@@ -45,14 +46,14 @@ struct PartInfo {
 struct Simulation::Impl {
   const Model& model;
   std::size_t n_nodes = 0;
-  std::vector<double> x, y, z;                 // x^n
-  std::vector<double> x0, y0, z0;              // reference
-  std::vector<double> vhx, vhy, vhz;           // v^{n+1/2} after kick
-  std::vector<double> vx, vy, vz;              // v^n
-  std::vector<double> ox, oy, oz;              // v^{n-1/2} during the kick
-  std::vector<double> fx, fy, fz;              // f^n
-  std::vector<double> mass, inverse_mass;      // lumped
-  std::vector<std::uint8_t> node_fixed;        // *NODE bc
+  std::vector<double> x, y, z;             // x^n
+  std::vector<double> x0, y0, z0;          // reference
+  std::vector<double> vhx, vhy, vhz;       // v^{n+1/2} after kick
+  std::vector<double> vx, vy, vz;          // v^n
+  std::vector<double> ox, oy, oz;          // v^{n-1/2} during the kick
+  std::vector<double> fx, fy, fz;          // f^n
+  std::vector<double> mass, inverse_mass;  // lumped
+  std::vector<std::uint8_t> node_fixed;    // *NODE bc
   std::vector<std::int32_t> rigid_body_of_node;
 
   std::vector<SolidBlock> blocks;
@@ -71,9 +72,9 @@ struct Simulation::Impl {
 
   double t = 0.0;
   std::int64_t n = 0;
-  double dt_prev = 0.0;   // dt^{n-1/2}
-  double dt_next = 0.0;   // dt^{n+1/2}
-  double stable = 0.0;    // unscaled stable step at x^n
+  double dt_prev = 0.0;  // dt^{n-1/2}
+  double dt_next = 0.0;  // dt^{n+1/2}
+  double stable = 0.0;   // unscaled stable step at x^n
   double dt_initial = 0.0;
   std::int32_t limiting_block = -1;
 
@@ -157,12 +158,14 @@ void Simulation::Impl::setup() {
       body.nodes = info.nodes;
       for (const std::int32_t node : info.nodes) {
         if (rigid_body_of_node[node] >= 0)
-          throw InputError(part.where, "rigid parts " + std::to_string(bodies[rigid_body_of_node[node]].part_id) +
-                                           " and " + std::to_string(part.id) +
-                                           " share nodes; give each rigid part its own nodes");
+          throw InputError(
+              part.where,
+              "rigid parts " + std::to_string(bodies[rigid_body_of_node[node]].part_id) + " and " +
+                  std::to_string(part.id) + " share nodes; give each rigid part its own nodes");
         if (node_fixed[node] != 0)
-          throw InputError(part.where, "node " + std::to_string(mesh.nodes.id[node]) + " of rigid part " +
-                                           std::to_string(part.id) + " has a *NODE bc; constrain a rigid "
+          throw InputError(part.where, "node " + std::to_string(mesh.nodes.id[node]) +
+                                           " of rigid part " + std::to_string(part.id) +
+                                           " has a *NODE bc; constrain a rigid "
                                            "part as a whole with *BC_MOTION (entype P)");
         rigid_body_of_node[node] = static_cast<std::int32_t>(bodies.size());
       }
@@ -192,7 +195,8 @@ void Simulation::Impl::setup() {
     const auto& hexes = blocks[bi].hexes();
     for (std::size_t e = 0; e < hexes.size(); ++e)
       for (int a = 0; a < 8; ++a)
-        slots[fill[hexes[e][a]]++] = {static_cast<std::int32_t>(bi), static_cast<std::int32_t>(e * 24 + a * 3)};
+        slots[fill[hexes[e][a]]++] = {static_cast<std::int32_t>(bi),
+                                      static_cast<std::int32_t>(e * 24 + a * 3)};
   }
   block_steps.assign(blocks.size(), {});
 
@@ -245,7 +249,8 @@ Vec3 Simulation::Impl::gravity_at(double time) const {
   Variables v;
   v.t = time;
   v.term = model.time.end_time;
-  for (const Gravity& grav : model.gravity) g[grav.direction] += grav.scale * model.functions.value(grav.curve, v);
+  for (const Gravity& grav : model.gravity)
+    g[grav.direction] += grav.scale * model.functions.value(grav.curve, v);
   return g;
 }
 
@@ -278,7 +283,8 @@ void Simulation::Impl::compute_forces(double dt) {
   // Contact forces act at x^{n} with the latest velocities v^{n-1/2} (damping, friction).
   const auto contact_start = std::chrono::steady_clock::now();
   contacts->apply({x, y, z, vhx, vhy, vhz, t, dt}, fx, fy, fz);
-  contact_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_start).count();
+  contact_seconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_start).count();
   std::int64_t contact_id = -1;
   const double contact_step = contacts->stable_step(&contact_id);
   limiting_contact = -1;
@@ -301,14 +307,16 @@ void Simulation::Impl::kick() {
   const double scaled = model.time.step_scale * stable;
   dt_next = std::min({scaled, model.time.max_step, model.time.end_time - t});
   if (scaled < model.time.min_step)
-    throw InstabilityError(fmt::format("the stable time step {:.4g} fell below dt_min = {:.4g} of *TIME (limited by {})",
-                                       scaled, model.time.min_step, limit_description()));
+    throw InstabilityError(fmt::format(
+        "the stable time step {:.4g} fell below dt_min = {:.4g} of *TIME (limited by {})", scaled,
+        model.time.min_step, limit_description()));
   // Without dt_min a collapsing step would let the run crawl on forever (an element crushed
   // flat shortens its own step in proportion): stop it, and say what limits the step.
   if (model.time.min_step <= 0.0 && n > 0 && scaled < kStepCollapse * dt_initial)
-    throw InstabilityError(fmt::format("the stable time step collapsed to {:.4g}, below {} of the initial {:.4g} "
-                                       "(limited by {}); set dt_min of *TIME to choose this limit yourself",
-                                       scaled, kStepCollapse, dt_initial, limit_description()));
+    throw InstabilityError(
+        fmt::format("the stable time step collapsed to {:.4g}, below {} of the initial {:.4g} "
+                    "(limited by {}); set dt_min of *TIME to choose this limit yourself",
+                    scaled, kStepCollapse, dt_initial, limit_description()));
   // At the end time (dt^{n+1/2} = 0) the kick still uses a notional step dt^{n-1/2}: nothing
   // moves with it, but v^n and the kinetic energy at t^n are then defined as at every other t^n.
   const double dt_kick = dt_next > 0.0 ? dt_next : dt_prev;
@@ -339,7 +347,8 @@ void Simulation::Impl::kick() {
   apply_rigid_boundaries(dt_avg);
   for (const RigidBody& body : bodies) {
     for (const std::int32_t node : body.nodes) {
-      const Vec3 v = body.velocity + cross(body.angular_velocity, Vec3{x[node], y[node], z[node]} - body.centre);
+      const Vec3 v = body.velocity +
+                     cross(body.angular_velocity, Vec3{x[node], y[node], z[node]} - body.centre);
       vhx[node] = v.x;
       vhy[node] = v.y;
       vhz[node] = v.z;
@@ -352,7 +361,8 @@ void Simulation::Impl::kick() {
   const Vec3 g = gravity_at(t);
   double work = 0.0;
   for (std::size_t i = 0; i < n_nodes; ++i) {
-    const double mx = 0.5 * (ox[i] + vhx[i]), my = 0.5 * (oy[i] + vhy[i]), mz = 0.5 * (oz[i] + vhz[i]);
+    const double mx = 0.5 * (ox[i] + vhx[i]), my = 0.5 * (oy[i] + vhy[i]),
+                 mz = 0.5 * (oz[i] + vhz[i]);
     // Reaction = m (v_new - v_old)/dt_avg - f^n (f^n includes gravity, so add gravity back).
     const double rx = mass[i] * (vhx[i] - ox[i]) - dt_avg * fx[i];
     const double ry = mass[i] * (vhy[i] - oy[i]) - dt_avg * fy[i];
@@ -369,7 +379,8 @@ void Simulation::Impl::kick() {
   // Kinetic energy at t^n: (1/2) m v^{n-1/2} . v^{n+1/2}. With the internal energy this is the
   // quantity central differences conserve exactly for a linear system at a constant step
   // (H_n = x_n K x_n / 2 + v^{n-1/2} M v^{n+1/2} / 2, derived by summing the update), so the
-  // energy history shows no O(dt^2) oscillation of the plain (1/2) m |v^n|^2. At t^0: (1/2) m |v^0|^2.
+  // energy history shows no O(dt^2) oscillation of the plain (1/2) m |v^n|^2. At t^0: (1/2) m
+  // |v^0|^2.
   double kinetic = 0.0;
   for (std::size_t i = 0; i < n_nodes; ++i) {
     vx[i] = ox[i] + share * (vhx[i] - ox[i]);
@@ -411,7 +422,8 @@ void Simulation::Impl::apply_nodal_boundaries(double dt_avg) {
           if (dt_next <= 0.0) break;  // end time reached: no further motion
           vars.t = t + dt_next;
           const double target = p.scale * model.functions.value(p.curve, vars);
-          for (const std::int32_t i : nm.nodes) v[d][i] = (target - (pos[d][i] - ref[d][i])) / dt_next;
+          for (const std::int32_t i : nm.nodes)
+            v[d][i] = (target - (pos[d][i] - ref[d][i])) / dt_next;
           break;
         }
         case PrescribedMotion::Kind::Acceleration: {
@@ -448,8 +460,9 @@ void Simulation::Impl::apply_rigid_boundaries(double dt_avg) {
           break;
         case PrescribedMotion::Kind::Displacement: {
           if (rotation)
-            throw InputError(p.where, "prescribed rotation angles (D with RX/RY/RZ) are not supported yet; "
-                                      "prescribe the angular velocity (V) instead");
+            throw InputError(p.where,
+                             "prescribed rotation angles (D with RX/RY/RZ) are not supported yet; "
+                             "prescribe the angular velocity (V) instead");
           if (dt_next <= 0.0) break;
           vars.t = t + dt_next;
           const double displacement = p.scale * model.functions.value(p.curve, vars);
@@ -508,7 +521,9 @@ void Simulation::Impl::drift() {
 
 // ---------------------------------------------------------------------------------------------
 
-Simulation::Simulation(const Model& model) : impl_(std::make_unique<Impl>(model)) { impl_->setup(); }
+Simulation::Simulation(const Model& model) : impl_(std::make_unique<Impl>(model)) {
+  impl_->setup();
+}
 Simulation::~Simulation() = default;
 
 void Simulation::advance() {
@@ -548,7 +563,8 @@ void Simulation::von_mises_stress(std::vector<double>& out) const {
   std::vector<double> block_values;
   for (std::size_t b = 0; b < impl_->blocks.size(); ++b) {
     impl_->blocks[b].von_mises_stress(block_values);
-    for (std::size_t e = 0; e < block_values.size(); ++e) out[impl_->block_hex_index[b][e]] = block_values[e];
+    for (std::size_t e = 0; e < block_values.size(); ++e)
+      out[impl_->block_hex_index[b][e]] = block_values[e];
   }
 }
 
@@ -557,13 +573,16 @@ void Simulation::pressure(std::vector<double>& out) const {
   std::vector<double> block_values;
   for (std::size_t b = 0; b < impl_->blocks.size(); ++b) {
     impl_->blocks[b].pressure(block_values);
-    for (std::size_t e = 0; e < block_values.size(); ++e) out[impl_->block_hex_index[b][e]] = block_values[e];
+    for (std::size_t e = 0; e < block_values.size(); ++e)
+      out[impl_->block_hex_index[b][e]] = block_values[e];
   }
 }
 
 Energies Simulation::energies() const { return impl_->energy; }
 
-const std::vector<ContactReport>& Simulation::contact_reports() const { return impl_->contacts->reports(); }
+const std::vector<ContactReport>& Simulation::contact_reports() const {
+  return impl_->contacts->reports();
+}
 
 void Simulation::contact_fields(std::vector<double>& force, std::vector<double>& pressure,
                                 std::vector<double>& wear) const {
@@ -575,7 +594,8 @@ double Simulation::contact_seconds() const { return impl_->contact_seconds; }
 
 double Simulation::energy_balance_error() const {
   const Energies& e = impl_->energy;
-  const double scale = std::max({std::abs(e.total()), std::abs(impl_->total0), std::abs(e.external_work)});
+  const double scale =
+      std::max({std::abs(e.total()), std::abs(impl_->total0), std::abs(e.external_work)});
   return scale > 0.0 ? (e.total() - impl_->total0 - e.external_work) / scale : 0.0;
 }
 

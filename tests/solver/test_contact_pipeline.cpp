@@ -18,7 +18,7 @@ TEST(ContactPipeline, HexBlocksPressedTogether) {
   testing::add_hex_block(mesh, 1, 3, 3, 2, {0, 0, -0.2}, {0.6, 0.6, 0.0});
   testing::add_hex_block(mesh, 2, 2, 2, 1, {0, 0, 0.05}, {0.6, 0.6, 0.35});
   const std::int64_t lower_part[] = {1}, upper_part[] = {2};
-  auto pfac = [](std::int64_t part) { return part == 1 ? 4e9 : 2.5e9; };
+  auto pfac = [](const SkinFace& f) { return f.part == 1 ? 4e9 : 2.5e9; };
   const ContactSurface lower = contact_surface(mesh, exterior_faces(mesh, lower_part, false), pfac);
   const ContactSurface upper = contact_surface(mesh, exterior_faces(mesh, upper_part, false), pfac);
   ASSERT_EQ(lower.size(), 2u * (9 + 6 + 6));  // 2 (nx ny + ny nz + nz nx)

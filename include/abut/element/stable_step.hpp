@@ -10,11 +10,15 @@
 // nu = 0.3 it is 0.73 h/c: the usual L = V / A_max with c = sqrt((lambda + 2 mu)/rho) would
 // exceed it, and an element one layer thick goes unstable at a scale factor of 0.9).
 #include "abut/element/hex8.hpp"
+#include "abut/mesh/mesh.hpp"
 
 namespace abut {
 
 // The length L such that L / c, c = sqrt((lambda + 2 mu) / rho), equals 2 / omega_max above,
 // from the modal gradient (G = sum_a b_a b_a^T = 8 sum_k G_k G_k^T, hex8.hpp).
 double hex8_critical_length(const Hex8ModalGradient& g, double lambda, double mu);
+
+// Modal gradient (hex8.hpp) of a hex at the given node coordinates.
+Hex8ModalGradient hex8_modal_gradient_at(const Hex8& hex, const Nodes& nodes);
 
 }  // namespace abut

@@ -167,7 +167,9 @@ struct ContactSpec {
   std::vector<Scale> pair_scales;
   // *CONTACT_INITIAL
   InitialPenetration initial_penetration = InitialPenetration::Offset;
-  std::optional<double> adjust_depth;  // ADJUST: secondary nodes within it moved onto surface 2
+  // ADJUST (seed 003): secondary nodes within this depth moved onto surface 2. -1.0 is AUTO, which
+  // the solver turns into 5% of the mean edge length of surface 2.
+  std::optional<double> adjust_depth;
   // Where each contact keyword was given (for errors), empty when absent.
   SourceLocation normal_where, friction_where, stiffness_where, initial_where, discretisation_where;
 };

@@ -56,8 +56,8 @@ class Simulation {
   double time() const;
   double end_time() const;
   std::int64_t cycle() const;
-  double time_step() const;           // dt^{n+1/2} that the next advance() uses
-  double initial_time_step() const;   // scaled stable step at t = 0
+  double time_step() const;             // dt^{n+1/2} that the next advance() uses
+  double initial_time_step() const;     // scaled stable step at t = 0
   std::string time_step_limit() const;  // what limits the step now (e.g. "part 2 element 17")
 
   const Model& model() const;
@@ -83,9 +83,10 @@ class Simulation {
   // Contact: per interface penalties and statistics; nodal fields summed over interfaces
   // (force interleaved x, y, z; pressure; accumulated wear).
   bool has_contact() const;
-  double contact_seconds() const;  // wall time spent in contact so far
+  double contact_seconds() const;                             // wall time spent in contact so far
   const std::vector<ContactReport>& contact_reports() const;  // valid until the next advance()
-  void contact_fields(std::vector<double>& force, std::vector<double>& pressure, std::vector<double>& wear) const;
+  void contact_fields(std::vector<double>& force, std::vector<double>& pressure,
+                      std::vector<double>& wear) const;
 
   // The state saved before the step that failed (positions and velocities), for output.
   const std::vector<double>& last_good_x() const;
