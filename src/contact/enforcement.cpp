@@ -62,6 +62,8 @@ ContactInterface::PointFrame ContactInterface::frame(const Side& side, std::size
   const double length = norm(n);
   r.normal = length > 0.0 ? n / length : Vec3{};
   r.area = side.node_area[node];
+  r.vector_area =
+      n * 0.125;  // each cross product of the diagonals is twice the facet's area vector
   return r;
 }
 
@@ -127,7 +129,14 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   const PointFrame f = frame(own, p, in);
   if (!f.active) return;
   const ContactSettings& s = settings_;
-  const double area = f.area;
+  // A node's area is the part of its tributary area that faces its partner, the projection of its
+  // vector area on the partner's normal: the bottom of a block pressed on a plate, not its sides.
+  const bool node_point = own.point_node[p] >= 0;
+  double area = f.area;
+  auto facing_area = [&](const Vec3& partner_normal) {
+    if (node_point) area = std::max(-dot(f.vector_area, partner_normal), 0.0);
+    return area > 0.0;
+  };
   // The point's share of each node's mass: m_i * N_i * (its area / the node's area), so that
   // the shares of all points add up to the nodal masses; on the other side a point may cover
   // more than a node's area: never more than the node.
@@ -139,7 +148,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
         m += mass_[nodes[a]] * std::min(1.0, n[a] * area / side.node_area[nodes[a]]);
     return m;
   };
-  const double m_own = mass_share(own, f.nodes, f.shape);
+  const double m_own = node_point ? mass_[f.nodes[0]] : mass_share(own, f.nodes, f.shape);
 
   struct Spring {
     Vec3 point, normal, velocity;
@@ -186,6 +195,11 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   auto tied = [&]() {
     const std::int32_t facet = pass.tie_facet[p];
     if (!target.active[facet]) return false;
+    if (node_point) {  // a tie holds in every direction: a node facing away keeps its whole area
+      const QuadCorners c = corners_of(target.surface.facets[facet], in);
+      double jacobian = 0.0;
+      if (!facing_area(quad_normal(c, pass.tie_xi[p], pass.tie_eta[p], jacobian))) area = f.area;
+    }
     const Spring r = partner_spring(facet, pass.tie_xi[p], pass.tie_eta[p]);
     const Vec3 stretch = f.x - r.point + r.normal * pass.offset[p];
     const Vec3 v_rel = f.v - r.velocity;
@@ -247,6 +261,15 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     return;
   }
 
+  if (node_point) {
+    const QuadCorners c = corners_of(target.surface.facets[h.facet], in);
+    double jacobian = 0.0;
+    const Vec3 n_partner = quad_normal(c, h.xi, h.eta, jacobian);
+    if (!facing_area(from_behind ? n_partner * -1.0 : n_partner)) {
+      clear_history();
+      return;
+    }
+  }
   const Spring r = partner_spring(h.facet, h.xi, h.eta);
   const Vec3 normal = from_behind ? r.normal * -1.0 : r.normal;  // the push on the point
   NormalResponse response;

@@ -549,15 +549,30 @@ void ContactInterface::initial_state(const ContactInput& in) {
         }
       }
     }
-    // Before contact: S2S sums the springs of a facet's points (a facet's spring on its lightest
-    // node).
+    // Before contact: a facet's springs on its lightest node against an equal mass, 2 k / m_min.
+    // S2S: k sums the springs of the facet's points. N2S: each corner node's spring in proportion
+    // to the facet's share of the node's area, so that both discretisations bound alike (with the
+    // facet penalty rule k = pfac A either way). Less would not do: the node's own element
+    // stiffens it as well.
+    std::vector<double> per_facet(own.surface.size(), 0.0);
     if (own.point_node.empty() || own.point_node[0] < 0) {
-      std::vector<double> per_facet(own.surface.size(), 0.0);
       for (std::size_t p = 0; p < n; ++p) per_facet[own.point_facet[p]] += omega2[p];
-      for (double w : per_facet) omega2_max = std::max(omega2_max, w);
     } else {
-      for (double w : omega2) omega2_max = std::max(omega2_max, w);
+      std::vector<double> node_omega2(mass_.size(), 0.0);
+      for (std::size_t p = 0; p < n; ++p) node_omega2[own.point_node[p]] = omega2[p];
+      for (std::size_t f = 0; f < own.surface.size(); ++f) {
+        const auto& nodes = own.surface.facets[f];
+        const QuadCorners c = corners_of(nodes, in);
+        const double area = 0.5 * norm(cross(c[2] - c[0], c[3] - c[1]));
+        double m_min = kInfinity;
+        for (auto node : nodes) m_min = std::min(m_min, mass_[node]);
+        for (auto node : nodes)  // omega2 of a node was 2 k / m_node
+          if (own.node_area[node] > 0.0)
+            per_facet[f] +=
+                node_omega2[node] * mass_[node] / m_min * 0.25 * area / own.node_area[node];
+      }
     }
+    for (double w : per_facet) omega2_max = std::max(omega2_max, w);
   }
   if (omega2_max > 0.0) initial_stable_step_ = 2.0 / std::sqrt(omega2_max);
 }

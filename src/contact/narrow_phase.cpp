@@ -7,6 +7,8 @@
 namespace abut {
 namespace {
 
+constexpr double kEdgeRoundOff = 1e-9;
+
 bool share_a_node(const std::array<std::int32_t, 4>& a, const std::array<std::int32_t, 4>& b) {
   for (auto i : a)
     for (auto j : b)
@@ -52,7 +54,9 @@ Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> c
       const double allowed =
           sharp ? rules.edge_tolerance
                 : std::max(rules.edge_tolerance, std::abs(q.gap) * rules.smooth_reach);
-      if (q.overshoot > allowed) continue;
+      // A node on the border of a matched mesh projects onto the very edge: round-off
+      // (kEdgeRoundOff of the facet's size) is no overshoot.
+      if (q.overshoot > allowed && q.overshoot > kEdgeRoundOff * norm(c[2] - c[0])) continue;
     }
     // The far side: deeper than the pair's detection depth (or, from behind, further out).
     const double inward = rules.from_behind ? q.gap : -q.gap;

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "abut/mesh/refine.hpp"
+#include "abut/solver/contact_surfaces.hpp"
 #include "deck_reader.hpp"
 
 namespace abut::deck {
@@ -199,6 +200,9 @@ DeckResult DeckReader::finish() {
     for (std::string& note : refine_and_smooth(mesh, order_changes, smoothings))
       notes.push_back(std::move(note));
   }
+
+  // OptiStruct ADJUST: secondary nodes onto the main surface, before anything uses the geometry.
+  for (std::string& note : adjust_contact_nodes(model)) notes.push_back(std::move(note));
 
   // Initial velocities on the final nodes, in deck order (a later command overrides an earlier
   // one).

@@ -17,21 +17,6 @@ namespace abut {
 
 namespace {
 
-std::vector<SkinFace> faces_of(const Model& model, const EntityRef& entity, bool merge) {
-  std::vector<SkinFace> faces;
-  if (entity.type == EntityType::All) {
-    faces = exterior_faces(model.mesh, merge);
-  } else if (entity.type == EntityType::Part || entity.type == EntityType::PartSet) {
-    const std::vector<std::int64_t> parts = model.parts_of(entity);
-    faces = exterior_faces(model.mesh, parts, merge);
-  } else {
-    throw InputError(entity.where, "a contact surface is a part (P), a part set (PS) or ALL");
-  }
-  if (faces.empty())
-    throw InputError(entity.where, "this contact surface has no exterior element faces");
-  return faces;
-}
-
 double max_initial_speed(std::span<const double> vx, std::span<const double> vy,
                          std::span<const double> vz) {
   double v2 = 0.0;
@@ -308,9 +293,9 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
       faces1 = faces_touching(exterior_faces(model.mesh, spec.merge), secondary_nodes, nodes.size(),
                               spec.surface1);
     } else {
-      faces1 = faces_of(model, spec.surface1, spec.merge);
+      faces1 = contact_faces(model, spec.surface1, spec.merge);
     }
-    const std::vector<SkinFace> faces2 = faces_of(model, spec.surface2, spec.merge);
+    const std::vector<SkinFace> faces2 = contact_faces(model, spec.surface2, spec.merge);
     const std::map<std::int64_t, PartPenalty> penalties =
         part_penalties(model, spec, faces1, faces2, v_max);
     std::function<double(const SkinFace&)> penalty_of = [&penalties](const SkinFace& f) {

@@ -4,7 +4,9 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <vector>
 
+#include "abut/contact/adjust.hpp"
 #include "abut/core/error.hpp"
 
 namespace abut {
@@ -21,6 +23,21 @@ ContactSurface contact_surface(const Mesh& mesh, std::span<const SkinFace> faces
     s.add(f.nodes, f.part, penalty_of_face(f), f.thickness, bulk, volume);
   }
   return s;
+}
+
+std::vector<SkinFace> contact_faces(const Model& model, const EntityRef& entity, bool merge) {
+  std::vector<SkinFace> faces;
+  if (entity.type == EntityType::All) {
+    faces = exterior_faces(model.mesh, merge);
+  } else if (entity.type == EntityType::Part || entity.type == EntityType::PartSet) {
+    const std::vector<std::int64_t> parts = model.parts_of(entity);
+    faces = exterior_faces(model.mesh, parts, merge);
+  } else {
+    throw InputError(entity.where, "a contact surface is a part (P), a part set (PS) or ALL");
+  }
+  if (faces.empty())
+    throw InputError(entity.where, "this contact surface has no exterior element faces");
+  return faces;
 }
 
 double element_penalty(double element_step, double lightest_node, double face_area) {
@@ -41,6 +58,36 @@ double smallest_element_volume(const Mesh& mesh, std::int64_t part) {
   double smallest = std::numeric_limits<double>::infinity();
   for (const auto& [element, volume] : volume_of_element) smallest = std::min(smallest, volume);
   return smallest;
+}
+
+std::vector<std::string> adjust_contact_nodes(Model& model) {
+  std::vector<std::string> notes;
+  Nodes& nodes = model.mesh.nodes;
+  for (const ContactSpec& spec : model.contacts) {
+    if (!spec.adjust_depth) continue;
+    std::vector<std::int32_t> secondary;
+    if (spec.surface1.type == EntityType::NodeSet) {
+      secondary = model.nodes_of(spec.surface1);
+    } else {
+      for (const SkinFace& f : contact_faces(model, spec.surface1, spec.merge))
+        secondary.insert(secondary.end(), f.nodes.begin(), f.nodes.end());
+      std::sort(secondary.begin(), secondary.end());
+      secondary.erase(std::unique(secondary.begin(), secondary.end()), secondary.end());
+    }
+    const std::vector<SkinFace> main_faces = contact_faces(model, spec.surface2, spec.merge);
+    const ContactSurface main =
+        contact_surface(model.mesh, main_faces, [](const SkinFace&) { return 1.0; });
+    // AUTO (stored as a negative depth): 5% of the mean edge of the main surface (seed 003).
+    const double depth = *spec.adjust_depth > 0.0
+                             ? *spec.adjust_depth
+                             : 0.05 * mean_edge_length(main, nodes.x, nodes.y, nodes.z);
+    const std::size_t moved =
+        adjust_onto_surface(main, secondary, nodes.x, nodes.y, nodes.z, depth);
+    notes.push_back("contact " + std::to_string(spec.id) + ": ADJUST moved " +
+                    std::to_string(moved) + " secondary nodes onto surface 2 (depth " +
+                    std::to_string(depth) + ")");
+  }
+  return notes;
 }
 
 }  // namespace abut

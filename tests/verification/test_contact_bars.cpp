@@ -26,7 +26,7 @@ namespace {
 constexpr double kRho = 7800.0, kE = 210e9, kV = 10.0, kL = 0.2;
 
 // Bars of n elements along x with a square cross-section of side b.
-std::string bars_deck(int n, double b) {
+std::string bars_deck(int n, double b, const std::string& extra = "") {
   const std::string count = std::to_string(n), side = std::to_string(b);
   return R"(
 *UNIT_SYSTEM
@@ -58,7 +58,7 @@ P, 2, -10.0, 0.0, 0.0
 "bar ends"
 1
 P, 1, P, 2, 0.0, )" +
-         std::to_string(kE * n / kL) + R"(
+         std::to_string(kE * n / kL) + "\n" + extra + R"(
 *END
 )";
 }
@@ -69,8 +69,8 @@ struct Impact {
   double v_left = 0.0, v_right = 0.0;
 };
 
-Impact collide(int n, double b) {
-  const Model model = read_deck_string(bars_deck(n, b), "bars.k");
+Impact collide(int n, double b, const std::string& extra = "") {
+  const Model model = read_deck_string(bars_deck(n, b, extra), "bars.k");
   Simulation sim(model);
   Impact r;
   double previous_t = sim.time();
@@ -124,6 +124,23 @@ TEST(ContactBars, SlenderElementsTouchOnlyWhenTheEndsMeet) {
   EXPECT_EQ(r.periods, 1);
   EXPECT_NEAR(r.begin, 5e-6, 2e-7);
   EXPECT_NEAR(r.end - r.begin, expected, 0.02 * expected);
+}
+
+// The same impact with node-to-surface contact (Radioss TYPE25, OptiStruct N2S), symmetric: each
+// bar's end nodes against the other bar's end facet, each node's spring pfac times its tributary
+// area, so the interface is as stiff as with integration points.
+TEST(ContactBars, NodeToSurfaceContactLastsTwoLOverC) {
+  const Impact r = collide(200, 0.001, "*CONTACT_DISCRETIZATION\n1, N2S\n");
+  const double c = std::sqrt(kE / kRho);
+  const double expected = 2.0 * kL / c;
+  const double duration = r.end - r.begin;
+  std::cout << "node-to-surface: contact duration " << duration << " s, error "
+            << 100.0 * (duration - expected) / expected << "%; velocities after " << r.v_left
+            << ", " << r.v_right << " m/s\n";
+  EXPECT_EQ(r.periods, 1);
+  EXPECT_NEAR(duration, expected, 0.02 * expected);
+  EXPECT_NEAR(r.v_left, -kV, 0.02 * kV);
+  EXPECT_NEAR(r.v_right, kV, 0.02 * kV);
 }
 
 }  // namespace

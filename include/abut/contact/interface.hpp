@@ -141,7 +141,8 @@ class ContactInterface {
     std::array<std::int32_t, 4> nodes;
     std::array<double, 4> shape;
     Vec3 x, v, normal;
-    double area = 0.0;
+    double area = 0.0;  // S2S: the point's area; N2S: see vector_area
+    Vec3 vector_area;   // N2S: a quarter of each adjacent facet's area vector, summed
     bool active = false;
   };
 

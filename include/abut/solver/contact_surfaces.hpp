@@ -5,10 +5,13 @@
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <string>
+#include <vector>
 
 #include "abut/contact/surface.hpp"
 #include "abut/mesh/mesh.hpp"
 #include "abut/mesh/skin.hpp"
+#include "abut/solver/model.hpp"
 
 namespace abut {
 
@@ -27,6 +30,13 @@ ContactSurface contact_surface(const Mesh& mesh, std::span<const SkinFace> faces
 // eps = 1/0.96^2 - 1. `element_step`: dt_e of the face's hex; `lightest_node`: m_min.
 inline constexpr double kElementPenaltyFraction = 1.0 / (0.96 * 0.96) - 1.0;
 double element_penalty(double element_step, double lightest_node, double face_area);
+
+// The exterior faces of a contact entity (P, PS or ALL); InputError if it has none.
+std::vector<SkinFace> contact_faces(const Model& model, const EntityRef& entity, bool merge);
+
+// OptiStruct ADJUST of every contact that asks for it (ContactSpec::adjust_depth): moves surface-1
+// nodes within the depth onto surface 2 in the reference configuration. Returns one note each.
+std::vector<std::string> adjust_contact_nodes(Model& model);
 
 // Volume of the smallest element of a part (the hexes *CHANGE_P-ORDER made of one element count
 // together); InputError if the part has no hex.

@@ -1,0 +1,197 @@
+// Contact stiffness rules and penalty scaling (issue 7).
+//
+// 1. Radioss /INTER/TYPE25 Istf rules (seed 004, comment 2; decoded in seeds/README.md): for a
+//    solid main segment K_m = Stfac B S^2 / V, for a secondary node of a solid K_s = Stfac B
+//    V^(1/3), combined by Istf (1000: K_m; 2: mean; 3: max; 4: min; 5: series) and bounded by
+//    [Stmin, Stmax] for Istf 2..5. The springs abut reports for a part pair must be these values
+//    (round-off).
+// 2. Abaqus/Explicit penalty scale factors (seed 001, table 29.3.6-1): with the default (here the
+//    element-based) penalty scaled by s, the stable step with contact over the step without it
+//    must not fall below 0.96, 0.34, 0.13, 0.04, 0.013 for s = 1, 10, 100, 1000, 10000; where
+//    assignments overlap, the last one wins.
+// 3. OptiStruct ADJUST (seed 003): secondary nodes within the depth are moved onto the main
+//    surface before the run, without stress.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include "run_to.hpp"
+
+namespace abut {
+namespace {
+
+constexpr double kE1 = 210e9, kNu1 = 0.3, kE2 = 70e9, kNu2 = 0.33;
+
+// Block 1 (2 x 2 x 2 elements of 10 x 10 x 5 mm) under block 2 (4 x 4 x 1 elements of 5 x 5 x 20
+// mm), `gap` apart. Block 1's nodes against block 2's facets, one-way.
+std::string two_blocks(const std::string& keywords, double gap = 0.0001,
+                       const std::string& pfac = "") {
+  const std::string z0 = std::to_string(0.01 + gap), z1 = std::to_string(0.03 + gap);
+  return R"(
+*UNIT_SYSTEM
+SI
+*TIME
+1.0e-5
+*COMPONENT_BOX
+1, 1, 2, 2, 2
+0.0, 0.0, 0.0, 0.02, 0.02, 0.01
+*COMPONENT_BOX
+2, 2, 4, 4, 1
+0.0, 0.0, )" +
+         z0 + R"(, 0.02, 0.02, )" + z1 + R"(
+*MAT_ELASTIC
+1, 7800.0, 210.0e9, 0.3
+*MAT_ELASTIC
+2, 2700.0, 70.0e9, 0.33
+*PART
+"lower"
+1, 1
+"upper"
+2, 2
+*CONTACT
+"blocks"
+1
+P, 1, P, 2, 0.0, )" +
+         pfac + R"(
+0, 0.1
+, , , , 1
+)" + keywords +
+         "*END\n";
+}
+
+double bulk(double e, double nu) { return e / (3.0 * (1.0 - 2.0 * nu)); }
+
+TEST(ContactStiffnessRules, EachIstfGivesTheSeedsFormula) {
+  const double stfac = 2.0;
+  // Secondary nodes (block 1): every element 10 x 10 x 5 mm.
+  const double ks = stfac * bulk(kE1, kNu1) * std::cbrt(0.01 * 0.01 * 0.005);
+  // Main segments (block 2, elements 5 x 5 x 20 mm): end faces S = 25 mm^2, sides S = 100 mm^2.
+  const double v2 = 0.005 * 0.005 * 0.02, b2 = bulk(kE2, kNu2);
+  const double km_end = stfac * b2 * std::pow(0.005 * 0.005, 2) / v2;
+  const double km_side = stfac * b2 * std::pow(0.005 * 0.02, 2) / v2;
+  const double km_lo = std::min(km_end, km_side), km_hi = std::max(km_end, km_side);
+  struct Case {
+    const char* rule;
+    double lo, hi;
+  };
+  const Case cases[] = {
+      {"MAIN", km_lo, km_hi},
+      {"MEAN", 0.5 * (km_lo + ks), 0.5 * (km_hi + ks)},
+      {"MAX", std::max(km_lo, ks), std::max(km_hi, ks)},
+      {"MIN", std::min(km_lo, ks), std::min(km_hi, ks)},
+      {"SERIES", km_lo * ks / (km_lo + ks), km_hi * ks / (km_hi + ks)},
+      {"1000", km_lo, km_hi},
+      {"2", 0.5 * (km_lo + ks), 0.5 * (km_hi + ks)},
+  };
+  for (const Case& c : cases) {
+    const std::string keyword = "*CONTACT_STIFFNESS\n1, " + std::string(c.rule) +
+                                ", 2.0\n*CONTACT_DISCRETIZATION\n1, N2S\n";
+    const Model model = read_deck_string(two_blocks(keyword), "istf.k");
+    Simulation sim(model);
+    const auto& pairs = sim.contact_reports().at(0).pairs;
+    ASSERT_EQ(pairs.size(), 1u) << c.rule;
+    EXPECT_EQ(pairs[0].part1, 1);
+    EXPECT_EQ(pairs[0].part2, 2);
+    EXPECT_NEAR(pairs[0].penalty_min, c.lo, 1e-12 * c.lo) << c.rule;
+    EXPECT_NEAR(pairs[0].penalty_max, c.hi, 1e-12 * c.hi) << c.rule;
+  }
+  // Stmin / Stmax bound Istf 2..5: chosen inside each rule's range so that both act.
+  for (const std::string rule : {"MEAN", "SERIES"}) {
+    const double lo = rule == "MEAN" ? 0.5 * (km_lo + ks) : km_lo * ks / (km_lo + ks);
+    const double hi = rule == "MEAN" ? 0.5 * (km_hi + ks) : km_hi * ks / (km_hi + ks);
+    char bounds[96];
+    std::snprintf(bounds, sizeof bounds, "%.17g, %.17g", 1.2 * lo, 0.9 * hi);
+    const std::string keyword = "*CONTACT_STIFFNESS\n1, " + rule + ", 2.0, " + bounds +
+                                "\n*CONTACT_DISCRETIZATION\n1, N2S\n";
+    const Model model = read_deck_string(two_blocks(keyword), "istf_bounds.k");
+    Simulation sim(model);
+    const auto& pair = sim.contact_reports().at(0).pairs.at(0);
+    EXPECT_NEAR(pair.penalty_min, 1.2 * lo, 1e-12 * hi) << rule;
+    EXPECT_NEAR(pair.penalty_max, 0.9 * hi, 1e-12 * hi) << rule;
+  }
+}
+
+// Table 29.3.6-1 of seed 001 with the element-based automatic penalty (rule ELEMENT).
+TEST(ContactPenaltyScale, StepRatioRespectsTheAbaqusTable) {
+  std::string without = two_blocks("");
+  without.erase(without.find("*CONTACT\n"), without.find("*END") - without.find("*CONTACT\n"));
+  const Model model_without = read_deck_string(without, "no_contact.k");
+  const double step_without = Simulation(model_without).initial_time_step();
+  const struct {
+    double scale, bound;
+  } table[] = {{1.0, 0.96}, {10.0, 0.34}, {100.0, 0.13}, {1000.0, 0.04}, {10000.0, 0.013}};
+  for (const auto& row : table) {
+    const std::string keywords =
+        "*CONTACT_STIFFNESS\n1, ELEMENT\n*CONTACT_SCALE_PENALTY\n1\n, , , , " +
+        std::to_string(row.scale) + "\n";
+    const Model model = read_deck_string(two_blocks(keywords), "scaled.k");
+    Simulation sim(model);
+    const double ratio = sim.initial_time_step() / step_without;
+    std::cout << "scale " << row.scale << ": step ratio " << ratio << " (Abaqus lower bound "
+              << row.bound << "); pair scale " << sim.contact_reports()[0].pairs.at(0).scale
+              << "\n";
+    EXPECT_EQ(sim.contact_reports()[0].pairs.at(0).scale, row.scale);
+    EXPECT_GE(ratio, row.bound);
+    EXPECT_LE(ratio, 1.0 + 1e-12);
+  }
+}
+
+TEST(ContactPenaltyScale, TheLastAssignmentWinsWhereTheyOverlap) {
+  const std::string all_then_pair = "*CONTACT_SCALE_PENALTY\n1\n, , , , 10.0\nP, 1, P, 2, 100.0\n";
+  const std::string pair_then_all = "*CONTACT_SCALE_PENALTY\n1\nP, 1, P, 2, 100.0\n, , , , 10.0\n";
+  const std::string other_pair =
+      "*CONTACT_SCALE_PENALTY\n1\nP, 2, P, 2, 100.0\n";  // upper with itself
+  double base = 0.0;
+  {
+    const Model model = read_deck_string(two_blocks("", 0.0001, "1.0e12"), "base.k");
+    Simulation sim(model);
+    base = sim.contact_reports()[0].pairs.at(0).penalty_max;
+    EXPECT_DOUBLE_EQ(base, 1e12);
+  }
+  for (const auto& [keywords, scale] :
+       {std::pair{all_then_pair, 100.0}, {pair_then_all, 10.0}, {other_pair, 1.0}}) {
+    const Model model = read_deck_string(two_blocks(keywords, 0.0001, "1.0e12"), "overlap.k");
+    Simulation sim(model);
+    const auto& pair = sim.contact_reports()[0].pairs.at(0);
+    EXPECT_EQ(pair.scale, scale);
+    EXPECT_DOUBLE_EQ(pair.penalty_max, scale * base);
+  }
+}
+
+// ADJUST: block 1's top nodes start 0.1 mm below block 2; with a depth of 0.5 mm they are moved
+// onto it in the reference configuration: no stress and no contact force at the start.
+TEST(ContactAdjust, MovesSecondaryNodesOntoTheMainSurfaceWithoutStress) {
+  for (const std::string adjust : {"0.0005", "AUTO"}) {
+    const Model model =
+        read_deck_string(two_blocks("*CONTACT_INITIAL\n1, OFFSET, " + adjust + "\n"), "adjust.k");
+    int moved = 0, kept = 0;
+    for (std::size_t i = 0; i < model.mesh.nodes.size(); ++i) {
+      if (model.mesh.hex_part.empty()) break;
+      const double z = model.mesh.nodes.z[i];
+      if (std::abs(z - 0.0101) < 1e-12) ++moved;  // block 1's top layer, now on block 2's bottom
+      if (std::abs(z - 0.01) < 1e-12) ++kept;
+    }
+    // AUTO: 5% of block 2's mean edge ((5 + 5 + 20) / 3 mm on its faces) = 0.44 mm > 0.1 mm.
+    EXPECT_EQ(moved, 9 + 25) << adjust;  // block 1's 3 x 3 top nodes, block 2's 5 x 5 bottom nodes
+    EXPECT_EQ(kept, 0) << adjust;
+    Simulation sim(model);
+    sim.advance();
+    EXPECT_LT(sim.contact_reports()[0].stats.normal_force, 1e-6)
+        << adjust;  // round-off of a zero gap
+    EXPECT_LT(sim.energies().internal, 1e-12) << adjust;
+  }
+  // A depth below the gap moves nothing.
+  const Model model =
+      read_deck_string(two_blocks("*CONTACT_INITIAL\n1, OFFSET, 0.00005\n"), "no_adjust.k");
+  int kept = 0;
+  for (std::size_t i = 0; i < model.mesh.nodes.size(); ++i)
+    kept += std::abs(model.mesh.nodes.z[i] - 0.01) < 1e-12;
+  EXPECT_EQ(kept, 9);
+}
+
+}  // namespace
+}  // namespace abut
