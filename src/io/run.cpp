@@ -1,10 +1,10 @@
 #include "abut/io/run.hpp"
 
+#include <fmt/format.h>
 #include <omp.h>
 
 #include <chrono>
 #include <cstdio>
-#include <fmt/format.h>
 #include <optional>
 #include <ostream>
 #include <vector>
@@ -52,7 +52,8 @@ class StateWriter {
       velocity_[3 * i + 1] = sim.vy()[i];
       velocity_[3 * i + 2] = sim.vz()[i];
     }
-    std::vector<FieldView> point_fields{{"displacement", 3, displacement_}, {"velocity", 3, velocity_}};
+    std::vector<FieldView> point_fields{{"displacement", 3, displacement_},
+                                        {"velocity", 3, velocity_}};
     std::vector<FieldView> cell_fields{{"part_id", 1, part_id_}};
     if (sim.has_contact()) {
       sim.contact_fields(contact_force_, contact_pressure_, wear_);
@@ -90,11 +91,13 @@ class HistoryWriter {
   HistoryWriter(const fs::path& dir, bool with_contact)
       : energy_(dir / "energy.csv", {"kinetic", "internal", "hourglass", "contact", "friction",
                                      "external_work", "total", "balance_error"}),
-        parts_(dir / "parts.csv", {"part", "mass", "x", "y", "z", "vx", "vy", "vz", "kinetic", "internal"}) {
+        parts_(dir / "parts.csv",
+               {"part", "mass", "x", "y", "z", "vx", "vy", "vz", "kinetic", "internal"}) {
     if (with_contact)
       contact_.emplace(dir / "contact.csv",
-                       std::vector<std::string>{"contact", "fx", "fy", "fz", "normal_force", "tangential_force",
-                                                "energy", "friction_energy", "max_penetration", "active_points"});
+                       std::vector<std::string>{"contact", "fx", "fy", "fz", "normal_force",
+                                                "tangential_force", "energy", "friction_energy",
+                                                "max_penetration", "active_points"});
   }
 
   void write(const Simulation& sim) {
@@ -102,19 +105,21 @@ class HistoryWriter {
     written_ = true;
     last_time_ = sim.time();
     const Energies e = sim.energies();
-    energy_.write_row(sim.time(), {e.kinetic, e.internal, e.hourglass, e.contact, e.friction, e.external_work,
-                                   e.total(), sim.energy_balance_error()});
+    energy_.write_row(sim.time(), {e.kinetic, e.internal, e.hourglass, e.contact, e.friction,
+                                   e.external_work, e.total(), sim.energy_balance_error()});
     for (const PartState& p : sim.part_states())
-      parts_.write_row(sim.time(), {static_cast<std::int64_t>(p.part_id), p.mass, p.centre_of_mass.x,
-                                    p.centre_of_mass.y, p.centre_of_mass.z, p.velocity.x, p.velocity.y,
-                                    p.velocity.z, p.kinetic, p.internal});
+      parts_.write_row(
+          sim.time(),
+          {static_cast<std::int64_t>(p.part_id), p.mass, p.centre_of_mass.x, p.centre_of_mass.y,
+           p.centre_of_mass.z, p.velocity.x, p.velocity.y, p.velocity.z, p.kinetic, p.internal});
     if (contact_) {
       for (const ContactReport& c : sim.contact_reports()) {
         const ContactStats& st = c.stats;
-        contact_->write_row(sim.time(), {static_cast<std::int64_t>(c.id), st.force.x, st.force.y, st.force.z,
-                                         st.normal_force, st.tangential_force, st.elastic_energy + st.damping_energy,
-                                         st.friction_energy, st.max_penetration,
-                                         static_cast<std::int64_t>(st.active_points)});
+        contact_->write_row(
+            sim.time(),
+            {static_cast<std::int64_t>(c.id), st.force.x, st.force.y, st.force.z, st.normal_force,
+             st.tangential_force, st.elastic_energy + st.damping_energy, st.friction_energy,
+             st.max_penetration, static_cast<std::int64_t>(st.active_points)});
       }
     }
   }
@@ -154,14 +159,17 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
   json.member("nodes", static_cast<std::int64_t>(model.mesh.nodes.size()));
   json.member("elements", static_cast<std::int64_t>(model.mesh.hex_count()));
   json.member("ns_per_element_cycle", report.ns_per_element_cycle);
-  json.member("contact_share_of_wall_time", report.wall_seconds > 0 ? sim.contact_seconds() / report.wall_seconds : 0.0);
+  json.member("contact_share_of_wall_time",
+              report.wall_seconds > 0 ? sim.contact_seconds() / report.wall_seconds : 0.0);
   json.member("initial_time_step", sim.initial_time_step());
   json.member("initial_time_step_limited_by", initial_limit);
   json.member("final_time_step_limited_by", sim.time_step_limit());
   const Energies e = sim.energies();
   json.key("final_energies").begin_object();
   json.member("kinetic", e.kinetic).member("internal", e.internal).member("hourglass", e.hourglass);
-  json.member("contact", e.contact).member("friction", e.friction).member("external_work", e.external_work);
+  json.member("contact", e.contact)
+      .member("friction", e.friction)
+      .member("external_work", e.external_work);
   json.member("total", e.total()).member("balance_error", sim.energy_balance_error());
   json.end_object();
   json.key("parts").begin_array();
@@ -176,17 +184,25 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
   for (const ContactReport& c : sim.contact_reports()) {
     json.begin_object();
     json.member("id", c.id).member("title", c.title);
-    json.member("integration_points", static_cast<std::int64_t>(c.points));
+    json.member("discretisation", c.discretisation).member("normal_law", c.normal_law);
+    json.member("tangential_law", c.tangential_law).member("stiffness_rule", c.stiffness_rule);
+    json.member("contact_points", static_cast<std::int64_t>(c.points));
     json.member("released_points", static_cast<std::int64_t>(c.released_points));
     json.key("penalty_per_part").begin_array();
     for (const PartPenalty& p : c.parts) {
-      json.begin_object().member("part", p.part_id).member("pfac", p.penalty).member("automatic", p.automatic);
+      json.begin_object()
+          .member("part", p.part_id)
+          .member("pfac", p.penalty)
+          .member("automatic", p.automatic);
       json.end_object();
     }
     json.end_array();
     json.key("penalty_per_pair").begin_array();
     for (const PairStiffness& p : c.pairs) {
-      json.begin_object().member("part1", p.part1).member("part2", p.part2).member("scale", p.scale);
+      json.begin_object()
+          .member("part1", p.part1)
+          .member("part2", p.part2)
+          .member("scale", p.scale);
       json.member("penalty_min", p.penalty_min).member("penalty_max", p.penalty_max);
       json.end_object();
     }
@@ -210,17 +226,23 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
   Simulation sim(model);
   const double t_end = model.time.end_time;
   const double span = t_end - model.time.start_time;
-  const double state_interval = model.output.state_interval > 0 ? model.output.state_interval : span / 100.0;
-  const double history_interval = model.output.history_interval > 0 ? model.output.history_interval : span / 1000.0;
-  log << fmt::format("abut: {} nodes, {} hexahedra, {} parts; end time {:.4g}, initial time step {:.4g} ({})\n",
-                     model.mesh.nodes.size(), model.mesh.hex_count(), model.parts.size(), t_end,
-                     sim.initial_time_step(), sim.time_step_limit());
+  const double state_interval =
+      model.output.state_interval > 0 ? model.output.state_interval : span / 100.0;
+  const double history_interval =
+      model.output.history_interval > 0 ? model.output.history_interval : span / 1000.0;
+  log << fmt::format(
+      "abut: {} nodes, {} hexahedra, {} parts; end time {:.4g}, initial time step {:.4g} ({})\n",
+      model.mesh.nodes.size(), model.mesh.hex_count(), model.parts.size(), t_end,
+      sim.initial_time_step(), sim.time_step_limit());
   const std::string initial_limit = sim.time_step_limit();
   for (const ContactReport& c : sim.contact_reports()) {
-    log << fmt::format("abut: contact {}", c.id) << (c.title.empty() ? "" : " \"" + c.title + "\"") << ": pfac";
+    log << fmt::format("abut: contact {}", c.id) << (c.title.empty() ? "" : " \"" + c.title + "\"")
+        << ": pfac";
     for (const PartPenalty& p : c.parts)
-      log << fmt::format(" part {} = {:.4g}{}", p.part_id, p.penalty, p.automatic ? " (automatic)" : "");
-    log << fmt::format(", {} integration points\n", c.points);
+      log << fmt::format(" part {} = {:.4g}{}", p.part_id, p.penalty,
+                         p.automatic ? " (automatic)" : "");
+    log << fmt::format(", {} contact points ({}; {}; {}; {})\n", c.points, c.discretisation,
+                       c.normal_law, c.tangential_law, c.stiffness_rule);
   }
   log << "abut: writing results to " << options.output_dir.string() << "\n";
 
@@ -248,24 +270,31 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
     states.write(sim, true);
   }
   if (options.progress) progress.finish(sim.time(), sim.cycle());
-  report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  report.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   report.end_time = sim.time();
   report.cycles = sim.cycle();
-  const double element_cycles = static_cast<double>(model.mesh.hex_count()) * static_cast<double>(report.cycles);
-  report.ns_per_element_cycle = element_cycles > 0 ? 1e9 * report.wall_seconds / element_cycles : 0.0;
+  const double element_cycles =
+      static_cast<double>(model.mesh.hex_count()) * static_cast<double>(report.cycles);
+  report.ns_per_element_cycle =
+      element_cycles > 0 ? 1e9 * report.wall_seconds / element_cycles : 0.0;
   report.energy_balance_error = sim.energy_balance_error();
   report.pvd = states.pvd();
   write_summary(options.output_dir / "summary.json", sim, report, model, threads, initial_limit);
 
   if (report.stable) {
-    log << fmt::format("abut: completed {} cycles to t = {:.6g} in {:.2f} s ({:.1f} ns per element-cycle, {} threads)\n",
-                       report.cycles, report.end_time, report.wall_seconds, report.ns_per_element_cycle, threads);
+    log << fmt::format(
+        "abut: completed {} cycles to t = {:.6g} in {:.2f} s ({:.1f} ns per element-cycle, {} "
+        "threads)\n",
+        report.cycles, report.end_time, report.wall_seconds, report.ns_per_element_cycle, threads);
     log << fmt::format("abut: energy balance error {:.3f}%\n", 100.0 * report.energy_balance_error);
     if (sim.has_contact())
-      log << fmt::format("abut: contact took {:.0f}% of the wall time\n", 100.0 * sim.contact_seconds() / report.wall_seconds);
+      log << fmt::format("abut: contact took {:.0f}% of the wall time\n",
+                         100.0 * sim.contact_seconds() / report.wall_seconds);
   } else {
     log << "abut: the run went UNSTABLE and stopped: " << report.message << "\n"
-        << fmt::format("abut: the last good state (t = {:.6g}) is in the ParaView series\n", sim.last_good_time());
+        << fmt::format("abut: the last good state (t = {:.6g}) is in the ParaView series\n",
+                       sim.last_good_time());
   }
   log << "abut: ParaView series: " << report.pvd.string() << " (" << states.count() << " states)\n";
   return report;

@@ -1,5 +1,7 @@
 #include "contact_set.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -121,8 +123,9 @@ ContactSettings settings_of(const Model& model, const ContactSpec& spec) {
   if (spec.penalty_curve.valid()) {
     const FunctionRef f = spec.penalty_curve;
     s.normal_law = CurvePenalty{[table, f, term](double d) {
-      Variables v;
+      Variables v;  // a *CURVE is read at d; a *FUNCTION gets d as its t (as fcn(fid, d) would)
       v.term = term;
+      v.t = d;
       return table->value(f, d, v);
     }};
   }
@@ -275,6 +278,80 @@ SourceLocation location_of(const ContactSpec& spec, const std::string& setting) 
   return spec.where;
 }
 
+// The laws of a contact in the deck's words, for the log and summary.json.
+void describe(const ContactSpec& spec, ContactReport& r) {
+  r.discretisation = spec.discretisation == Discretisation::NodeToSurface ? "N2S" : "S2S";
+  const bool one_way =
+      spec.symmetric ? !*spec.symmetric : spec.one_way || spec.surface1.type == EntityType::NodeSet;
+  r.discretisation += one_way ? " one-way" : " symmetric";
+  r.normal_law = spec.penalty_curve.valid() ? "CURVE" : "LINEAR";
+  r.normal_law += spec.sense == ContactSense::Positive   ? " POSITIVE"
+                  : spec.sense == ContactSense::Negative ? " NEGATIVE"
+                                                         : " BILATERAL";
+  if (spec.adhesion)
+    r.normal_law += fmt::format(", adhesion sig_max = {:.4g}", spec.adhesion->max_stress);
+  using Law = ContactSpec::FrictionLaw;
+  const auto& c = spec.friction_c;
+  switch (spec.friction_law) {
+    case Law::Impetus:
+      r.tangential_law = spec.friction_function.valid() ? "COULOMB mu = fcn"
+                         : spec.friction > 0.0 ? fmt::format("COULOMB mu = {:.4g}", spec.friction)
+                                               : "NONE";
+      break;
+    case Law::None:
+      r.tangential_law = "NONE";
+      break;
+    case Law::Coulomb:
+      r.tangential_law =
+          fmt::format("COULOMB mu_s = {:.4g}, mu_d = {:.4g}", spec.mu_static, spec.mu_dynamic);
+      break;
+    case Law::Tresca:
+      r.tangential_law =
+          fmt::format("TRESCA m_s = {:.4g}, m_d = {:.4g}, k = {:.4g}", c[0], c[1], c[2]);
+      break;
+    case Law::Stick:
+      r.tangential_law = "STICK";
+      break;
+    case Law::Freeze:
+      r.tangential_law = "FREEZE";
+      break;
+    case Law::Viscous:
+      r.tangential_law = "VISCOUS (Ifric 1)";
+      break;
+    case Law::Darmstad:
+      r.tangential_law = "DARMSTAD (Ifric 2)";
+      break;
+    case Law::Renard:
+      r.tangential_law = "RENARD (Ifric 3)";
+      break;
+  }
+  if (spec.stick_stress)
+    r.tangential_law += fmt::format(", sticking until {:.4g}", *spec.stick_stress);
+  switch (spec.stiffness.rule) {
+    case StiffnessRule::FacetPenalty:
+      r.stiffness_rule = spec.element_penalty ? "ELEMENT" : "PFAC";
+      break;
+    case StiffnessRule::Main:
+      r.stiffness_rule = "MAIN (Istf 1000)";
+      break;
+    case StiffnessRule::Mean:
+      r.stiffness_rule = "MEAN (Istf 2)";
+      break;
+    case StiffnessRule::Maximum:
+      r.stiffness_rule = "MAX (Istf 3)";
+      break;
+    case StiffnessRule::Minimum:
+      r.stiffness_rule = "MIN (Istf 4)";
+      break;
+    case StiffnessRule::Series:
+      r.stiffness_rule = "SERIES (Istf 5)";
+      break;
+  }
+  if (spec.stiffness.rule != StiffnessRule::FacetPenalty)
+    r.stiffness_rule += fmt::format(", stfac = {:.4g}", spec.stiffness.scale);
+  if (!spec.pair_scales.empty()) r.stiffness_rule += ", pair scale factors";
+}
+
 }  // namespace
 
 ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
@@ -318,7 +395,7 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
     report.id = spec.id;
     report.title = spec.title;
     for (const auto& [part, p] : penalties) report.parts.push_back(p);
-    report.discretisation = spec.discretisation;
+    describe(spec, report);
     try {
       interfaces_.emplace_back(settings_of(model, spec),
                                contact_surface(model.mesh, faces1, penalty_of, bulk_of),

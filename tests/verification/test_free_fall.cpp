@@ -40,8 +40,8 @@ TEST(FreeFall, ConstantAccelerationIsIntegratedExactly) {
   const std::size_t corner = verification::node_near(model, 0.0, 0.0, 1.0);
   verification::run_to(sim, model.time.end_time);
   const double t = sim.time();
-  std::cout << "free fall: z error " << sim.z()[corner] - (1.0 - 0.5 * 9.81 * t * t) << " m, balance error "
-            << sim.energy_balance_error() << "\n";
+  std::cout << "free fall: z error " << sim.z()[corner] - (1.0 - 0.5 * 9.81 * t * t)
+            << " m, balance error " << sim.energy_balance_error() << "\n";
   EXPECT_NEAR(sim.z()[corner], 1.0 - 0.5 * 9.81 * t * t, 1e-9);
   EXPECT_NEAR(sim.vz()[corner], -9.81 * t, 1e-6 * 9.81 * t);
   const Energies e = sim.energies();

@@ -67,7 +67,8 @@ TEST(FreeVibration, PeriodIsTwoLOverC) {
     previous_v = v;
   });
   ASSERT_GE(crossings.size(), 10u);
-  const double period = 2.0 * (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+  const double period =
+      2.0 * (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
   const double expected = 2.0 * 1.0 / std::sqrt(210.0e9 / 7800.0);
   std::cout << "period " << period << " s, 2L/c = " << expected << " s, error "
             << 100.0 * (period - expected) / expected << "%\n";

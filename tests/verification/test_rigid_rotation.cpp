@@ -50,7 +50,8 @@ TEST(RigidRotation, NoSpuriousStrainEnergyAfterAQuarterTurn) {
   verification::run_to(sim, model.time.end_time);
   const Energies e = sim.energies();
   std::cout << "after a quarter turn: internal energy " << e.internal / kinetic0
-            << " of the kinetic energy, kinetic energy change " << (e.kinetic - kinetic0) / kinetic0 << "\n";
+            << " of the kinetic energy, kinetic energy change " << (e.kinetic - kinetic0) / kinetic0
+            << "\n";
   EXPECT_LT(e.internal, 1e-4 * kinetic0);
   EXPECT_LT(std::abs(e.hourglass), 1e-4 * kinetic0);
   EXPECT_NEAR(e.kinetic, kinetic0, 1e-3 * kinetic0);

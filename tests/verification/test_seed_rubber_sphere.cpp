@@ -29,7 +29,8 @@ TEST(SeedRubberSphere, RunsAsPrintedWithTheSeedsPenaltyAndRebounds) {
             << " Pa/m (seed 3e12)\n";
   EXPECT_NEAR(steel, 1.68e13, 0.01 * 1.68e13);
   ASSERT_EQ(contacts[0].pairs.size(), 1u);
-  EXPECT_DOUBLE_EQ(contacts[0].pairs[0].penalty_min, std::min(steel, rubber));  // the smaller (seed)
+  EXPECT_DOUBLE_EQ(contacts[0].pairs[0].penalty_min,
+                   std::min(steel, rubber));  // the smaller (seed)
   EXPECT_DOUBLE_EQ(contacts[0].pairs[0].penalty_max, std::min(steel, rubber));
 
   double worst_balance = 0.0;
@@ -43,8 +44,8 @@ TEST(SeedRubberSphere, RunsAsPrintedWithTheSeedsPenaltyAndRebounds) {
   std::cout << "rubber sphere at 1 ms: centre z = " << sphere.centre_of_mass.z
             << " m, vz = " << sphere.velocity.z << " m/s; worst energy balance error "
             << 100.0 * worst_balance << "%\n";
-  EXPECT_GT(sphere.velocity.z, 0.0);              // moving up again: it rebounded
-  EXPECT_GT(sphere.centre_of_mass.z, 0.02);       // and left the block (top at z = 0.01)
+  EXPECT_GT(sphere.velocity.z, 0.0);         // moving up again: it rebounded
+  EXPECT_GT(sphere.centre_of_mass.z, 0.02);  // and left the block (top at z = 0.01)
   EXPECT_LT(worst_balance, 0.02);
   EXPECT_GT(sim.contact_reports()[0].stats.friction_energy, 0.0);  // mu = 0.1 acted
 }

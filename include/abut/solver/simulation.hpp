@@ -44,6 +44,8 @@ struct PartState {
 class Simulation {
  public:
   explicit Simulation(const Model& model);
+  Simulation(Model&&) =
+      delete;  // the simulation keeps a reference to its model: it must outlive it
   ~Simulation();
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
