@@ -1,5 +1,6 @@
 // ns per contact point-cycle: two flat 100 x 100 facet surfaces pressed together (symmetric,
-// 2x2 points per facet, friction), one apply() per iteration, nodes moving slightly each cycle.
+// friction), one apply() per iteration, nodes moving slightly each cycle. Surface-to-surface with
+// 2x2 points per facet (ns per point-cycle), node-to-surface (ns per node-cycle).
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
@@ -37,10 +38,11 @@ struct Plates {
   abut::ContactInput input(double t) const { return {x, y, z, vx, vy, vz, t, 1e-7}; }
 };
 
-void BM_ContactPointCycle(benchmark::State& state) {
+void run(benchmark::State& state, abut::Discretisation discretisation, const char* counter) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
   Plates p(100);
   abut::ContactSettings s;
+  s.discretisation = discretisation;
   s.tangential_law = abut::Coulomb{0.2, 0.2, {}, {}};
   abut::ContactInterface contact(s, p.upper, p.lower, p.mass, p.input(0.0));
   const std::size_t upper_first = (101 * 101);
@@ -57,11 +59,19 @@ void BM_ContactPointCycle(benchmark::State& state) {
   const auto points = static_cast<double>(contact.point_count());
   state.counters["points"] = points;
   state.counters["active"] = static_cast<double>(contact.stats().active_points);
-  state.counters["ns_per_point_cycle"] =
-      benchmark::Counter(points * static_cast<double>(state.iterations()),
-                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters[counter] = benchmark::Counter(points * static_cast<double>(state.iterations()),
+                                               benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   omp_set_num_threads(omp_get_num_procs());
 }
+
+void BM_ContactPointCycle(benchmark::State& state) {
+  run(state, abut::Discretisation::SurfaceToSurface, "ns_per_point_cycle");
+}
 BENCHMARK(BM_ContactPointCycle)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_ContactNodeCycle(benchmark::State& state) {
+  run(state, abut::Discretisation::NodeToSurface, "ns_per_node_cycle");
+}
+BENCHMARK(BM_ContactNodeCycle)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

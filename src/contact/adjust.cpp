@@ -9,23 +9,13 @@
 #include "abut/contact/quad.hpp"
 
 namespace abut {
-namespace {
-
-QuadCorners corners(const std::array<std::int32_t, 4>& f, std::span<const double> x,
-                    std::span<const double> y, std::span<const double> z) {
-  QuadCorners c;
-  for (int a = 0; a < 4; ++a) c[a] = {x[f[a]], y[f[a]], z[f[a]]};
-  return c;
-}
-
-}  // namespace
 
 std::size_t adjust_onto_surface(const ContactSurface& surface, std::span<const std::int32_t> nodes,
                                 std::span<double> x, std::span<double> y, std::span<double> z,
                                 double depth) {
   std::vector<Box> boxes(surface.size());
   for (std::size_t f = 0; f < surface.size(); ++f) {
-    const QuadCorners c = corners(surface.facets[f], x, y, z);
+    const QuadCorners c = quad_corners(surface.facets[f], x, y, z);
     for (int k = 0; k < 3; ++k) {
       boxes[f].lo[k] = std::min({c[0][k], c[1][k], c[2][k], c[3][k]}) - depth;
       boxes[f].hi[k] = std::max({c[0][k], c[1][k], c[2][k], c[3][k]}) + depth;
@@ -50,7 +40,7 @@ std::size_t adjust_onto_surface(const ContactSurface& surface, std::span<const s
     for (std::size_t c = candidates.offsets[k]; c < candidates.offsets[k + 1]; ++c) {
       const auto& facet = surface.facets[candidates.facets[c]];
       if (std::find(facet.begin(), facet.end(), nodes[k]) != facet.end()) continue;
-      const QuadProjection q = project_onto_quad(corners(facet, x, y, z), p);
+      const QuadProjection q = project_onto_quad(quad_corners(facet, x, y, z), p);
       if (q.crossed_edges != 0 || std::abs(q.gap) > depth || q.distance >= best) continue;
       best = q.distance;
       target[k] = q.point;
@@ -73,7 +63,7 @@ double mean_edge_length(const ContactSurface& surface, std::span<const double> x
   double sum = 0.0;
   std::size_t count = 0;
   for (const auto& f : surface.facets) {
-    const QuadCorners c = corners(f, x, y, z);
+    const QuadCorners c = quad_corners(f, x, y, z);
     for (int a = 0; a < 4; ++a) {
       if (f[a] == f[(a + 1) % 4]) continue;
       sum += norm(c[(a + 1) % 4] - c[a]);

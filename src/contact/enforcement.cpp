@@ -15,12 +15,6 @@ namespace {
 // contact ties it (absorbs round-off of initially coincident surfaces).
 constexpr double kTieGapFraction = 1e-6;
 
-QuadCorners corners_of(const std::array<std::int32_t, 4>& nodes, const ContactInput& in) {
-  QuadCorners c;
-  for (int a = 0; a < 4; ++a) c[a] = {in.x[nodes[a]], in.y[nodes[a]], in.z[nodes[a]]};
-  return c;
-}
-
 Vec3 velocity_at(const std::array<std::int32_t, 4>& nodes, const std::array<double, 4>& shape,
                  const ContactInput& in) {
   Vec3 v;
@@ -41,7 +35,7 @@ ContactInterface::PointFrame ContactInterface::frame(const Side& side, std::size
   r.v = velocity_at(r.nodes, r.shape, in);
   if (node < 0) {
     const std::int32_t f = side.point_facet[p];
-    const QuadCorners c = corners_of(r.nodes, in);
+    const QuadCorners c = quad_corners(r.nodes, in.x, in.y, in.z);
     double jacobian = 0.0;
     r.normal = quad_normal(c, side.point_xi[p], side.point_eta[p], jacobian);
     r.x = quad_point(c, side.point_xi[p], side.point_eta[p]);
@@ -55,7 +49,7 @@ ContactInterface::PointFrame ContactInterface::frame(const Side& side, std::size
   for (std::int32_t k = side.node_facet_start[node]; k < side.node_facet_start[node + 1]; ++k) {
     const std::int32_t f = side.node_facets[k];
     if (!side.active[f]) continue;
-    const QuadCorners c = corners_of(side.surface.facets[f], in);
+    const QuadCorners c = quad_corners(side.surface.facets[f], in.x, in.y, in.z);
     n += cross(c[2] - c[0], c[3] - c[1]);
     r.active = true;
   }
@@ -156,7 +150,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   };
   auto partner_spring = [&](std::int32_t facet, double pxi, double peta) {
     const auto& nodes = target.surface.facets[facet];
-    const QuadCorners c = corners_of(nodes, in);
+    const QuadCorners c = quad_corners(nodes, in.x, in.y, in.z);
     const auto n = quad_shape(pxi, peta);
     Spring r;
     double jacobian = 0.0;
@@ -196,7 +190,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     const std::int32_t facet = pass.tie_facet[p];
     if (!target.active[facet]) return false;
     if (node_point) {  // a tie holds in every direction: a node facing away keeps its whole area
-      const QuadCorners c = corners_of(target.surface.facets[facet], in);
+      const QuadCorners c = quad_corners(target.surface.facets[facet], in.x, in.y, in.z);
       double jacobian = 0.0;
       if (!facing_area(quad_normal(c, pass.tie_xi[p], pass.tie_eta[p], jacobian))) area = f.area;
     }
@@ -262,7 +256,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   }
 
   if (node_point) {
-    const QuadCorners c = corners_of(target.surface.facets[h.facet], in);
+    const QuadCorners c = quad_corners(target.surface.facets[h.facet], in.x, in.y, in.z);
     double jacobian = 0.0;
     const Vec3 n_partner = quad_normal(c, h.xi, h.eta, jacobian);
     if (!facing_area(from_behind ? n_partner * -1.0 : n_partner)) {

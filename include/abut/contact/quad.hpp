@@ -4,12 +4,21 @@
 // edge 0 is eta = -1, edge 1 xi = +1, edge 2 eta = +1, edge 3 xi = -1.
 #include <array>
 #include <cstdint>
+#include <span>
 
 #include "abut/core/vec3.hpp"
 
 namespace abut {
 
 using QuadCorners = std::array<Vec3, 4>;
+
+// The corners of a facet from nodal coordinate arrays.
+inline QuadCorners quad_corners(const std::array<std::int32_t, 4>& nodes, std::span<const double> x,
+                                std::span<const double> y, std::span<const double> z) {
+  QuadCorners c;
+  for (int a = 0; a < 4; ++a) c[a] = {x[nodes[a]], y[nodes[a]], z[nodes[a]]};
+  return c;
+}
 
 inline std::array<double, 4> quad_shape(double xi, double eta) {
   return {0.25 * (1.0 - xi) * (1.0 - eta), 0.25 * (1.0 + xi) * (1.0 - eta),

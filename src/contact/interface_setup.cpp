@@ -1,0 +1,405 @@
+// ContactInterface set-up: checks, parts and pair scales, sides and their contact points
+// (integration points or nodes), passes, and the initial state of every point.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include "abut/contact/integration.hpp"
+#include "abut/contact/interface.hpp"
+#include "abut/contact/quad.hpp"
+#include "abut/core/parallel.hpp"
+
+namespace abut {
+namespace {
+
+// Default delta0_max: 4% of the element thickness (seed 000).
+constexpr double kDefaultInitialMaxFraction = 0.04;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+double longest_edge(const QuadCorners& c) {
+  double longest = 0.0;
+  for (int a = 0; a < 4; ++a) longest = std::max(longest, norm(c[(a + 1) % 4] - c[a]));
+  return longest;
+}
+
+// How far beyond a smooth edge, per unit distance from the facet's plane, a point may lie and
+// still belong to the facet: tan(alpha_edge), the widest dead zone of a convex edge whose
+// normals turn by at most alpha_edge. From 90 degrees on every crossing is accepted.
+double smooth_edge_reach(double alpha_edge_degrees) {
+  if (alpha_edge_degrees >= 90.0) return kInfinity;
+  return std::tan(alpha_edge_degrees * std::numbers::pi / 180.0);
+}
+
+bool is_radioss_rule(StiffnessRule r) { return r != StiffnessRule::FacetPenalty; }
+
+}  // namespace
+
+ContactInterface::ContactInterface(ContactSettings settings, ContactSurface surface1,
+                                   ContactSurface surface2, std::span<const double> node_mass,
+                                   const ContactInput& initial,
+                                   std::span<const std::int32_t> secondary_nodes)
+    : settings_(std::move(settings)), mass_(node_mass.begin(), node_mass.end()) {
+  validate(surface1, surface2, initial.x.size());
+  if (!secondary_nodes.empty() && settings_.discretisation != Discretisation::NodeToSurface)
+    throw ContactSetupError("discretisation",
+                            "secondary nodes are given, but the contact is surface-to-surface");
+  const bool self = surface1.facets == surface2.facets;
+  if (self && settings_.one_way)
+    throw ContactSetupError("one_way",
+                            "one-way contact needs two different surfaces; these two are the same "
+                            "facets (self contact)");
+  if (!secondary_nodes.empty() && !settings_.one_way)
+    throw ContactSetupError(
+        "one_way",
+        "a node group is only a secondary side: node-to-surface contact of a node "
+        "group is one-way");
+  wear_.assign(mass_.size(), 0.0);
+  pressure_.assign(mass_.size(), 0.0);
+  sides_.resize(self ? 1 : 2);
+  sides_[0].surface = std::move(surface1);
+  if (!self) sides_[1].surface = std::move(surface2);
+  build_parts();
+  build_sides(initial, secondary_nodes);
+  build_passes();
+  initial_state(initial);
+}
+
+void ContactInterface::build_parts() {
+  for (const Side& side : sides_)
+    part_ids_.insert(part_ids_.end(), side.surface.part.begin(), side.surface.part.end());
+  std::sort(part_ids_.begin(), part_ids_.end());
+  part_ids_.erase(std::unique(part_ids_.begin(), part_ids_.end()), part_ids_.end());
+  const std::size_t n = part_ids_.size();
+  part_scale_.assign(n * n, 1.0);
+  auto in = [](const std::vector<std::int64_t>& set, std::int64_t part) {
+    return set.empty() || std::find(set.begin(), set.end(), part) != set.end();
+  };
+  for (const PairScale& ps : settings_.pair_scales) {  // in order: the last assignment wins
+    const std::vector<std::int64_t>& second = ps.parts2.empty() ? ps.parts1 : ps.parts2;
+    for (std::size_t a = 0; a < n; ++a)
+      for (std::size_t b = 0; b < n; ++b) {
+        const std::int64_t pa = part_ids_[a], pb = part_ids_[b];
+        if ((in(ps.parts1, pa) && in(second, pb)) || (in(ps.parts1, pb) && in(second, pa)))
+          part_scale_[a * n + b] = ps.scale;
+      }
+  }
+  for (Side& side : sides_) {
+    side.facet_part.resize(side.surface.size());
+    for (std::size_t f = 0; f < side.surface.size(); ++f)
+      side.facet_part[f] = static_cast<std::int32_t>(
+          std::lower_bound(part_ids_.begin(), part_ids_.end(), side.surface.part[f]) -
+          part_ids_.begin());
+  }
+}
+
+void ContactInterface::build_sides(const ContactInput& in,
+                                   std::span<const std::int32_t> secondary_nodes) {
+  const ContactSettings& s = settings_;
+  margin_ = kInfinity;
+  smooth_reach_ = smooth_edge_reach(s.edge_angle);
+  // Typical facet size of each side (median of the longest edges), for the subdivision of S2S
+  // facets.
+  std::vector<double> typical_size;
+  for (const Side& side : sides_) {
+    std::vector<double> sizes;
+    for (const auto& facet : side.surface.facets)
+      sizes.push_back(longest_edge(quad_corners(facet, in.x, in.y, in.z)));
+    std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2),
+                     sizes.end());
+    typical_size.push_back(sizes[sizes.size() / 2]);
+  }
+  for (std::size_t side_index = 0; side_index < sides_.size(); ++side_index) {
+    Side& side = sides_[side_index];
+    const ContactSurface& surface = side.surface;
+    const std::size_t n = surface.size();
+    side.sharp = sharp_edges(surface, in.x, in.y, in.z, s.edge_angle);
+    side.active.assign(n, 1);
+    side.depth.resize(n);
+    side.facet_km.assign(n, 0.0);
+    side.node_area.assign(mass_.size(), 0.0);
+    for (std::size_t f = 0; f < n; ++f) {
+      const QuadCorners c = quad_corners(surface.facets[f], in.x, in.y, in.z);
+      if (s.initial_region) {
+        const Vec3 centre = quad_point(c, 0.0, 0.0);
+        side.active[f] = s.initial_region(centre.x, centre.y, centre.z) ? 1 : 0;
+      }
+      side.depth[f] = s.detection_depth.value_or(0.5 * surface.thickness[f]);
+      margin_ = std::min(margin_, side.depth[f]);
+      if (is_radioss_rule(s.stiffness.rule))
+        side.facet_km[f] = main_segment_stiffness(surface.bulk_modulus[f],
+                                                  norm(cross(c[2] - c[0], c[3] - c[1])) * 0.5,
+                                                  surface.element_volume[f], s.stiffness.scale);
+      side.max_km = std::max(side.max_km, side.facet_km[f]);
+    }
+    // Node -> facets (CSR), for node normals, areas and thicknesses.
+    side.node_facet_start.assign(mass_.size() + 1, 0);
+    for (const auto& facet : surface.facets)
+      for (int a = 0; a < 4; ++a)
+        if (a == 0 || facet[a] != facet[a - 1]) ++side.node_facet_start[facet[a] + 1];
+    for (std::size_t i = 0; i < mass_.size(); ++i)
+      side.node_facet_start[i + 1] += side.node_facet_start[i];
+    side.node_facets.assign(side.node_facet_start.back(), -1);
+    std::vector<std::int32_t> fill(side.node_facet_start.begin(), side.node_facet_start.end() - 1);
+    for (std::size_t f = 0; f < n; ++f)
+      for (int a = 0; a < 4; ++a)
+        if (a == 0 || surface.facets[f][a] != surface.facets[f][a - 1])
+          side.node_facets[fill[surface.facets[f][a]]++] = static_cast<std::int32_t>(f);
+    const double other_size = typical_size[sides_.size() == 1 ? 0 : 1 - side_index];
+    build_points(side, in, other_size,
+                 side_index == 0 ? secondary_nodes : std::span<const std::int32_t>{});
+  }
+  if (s.search_margin) margin_ = *s.search_margin;
+
+  for (const Side& side : sides_)
+    for (const auto& facet : side.surface.facets)
+      surface_nodes_.insert(surface_nodes_.end(), facet.begin(), facet.end());
+  std::sort(surface_nodes_.begin(), surface_nodes_.end());
+  surface_nodes_.erase(std::unique(surface_nodes_.begin(), surface_nodes_.end()),
+                       surface_nodes_.end());
+}
+
+void ContactInterface::build_points(Side& side, const ContactInput& in, double other_size,
+                                    std::span<const std::int32_t> secondary_nodes) {
+  const ContactSettings& s = settings_;
+  const ContactSurface& surface = side.surface;
+  std::vector<double> facet_area(surface.size(), 0.0);
+  auto add_point = [&](std::int32_t f, std::int32_t node, double xi, double eta, double weight) {
+    side.point_facet.push_back(f);
+    side.point_node.push_back(node);
+    side.point_xi.push_back(xi);
+    side.point_eta.push_back(eta);
+    side.point_weight.push_back(weight);
+  };
+  // Integration points (S2S). A facet two or more times larger than the facets it meets would
+  // press its few points into single small facets of the other side with the stiffness of its
+  // whole area: it is split into m x m cells about the size of the other side's facets, each
+  // integrated with the rule of the accuracy level, so both sides resolve the overlap alike.
+  std::vector<FacetPoint> rules[16];
+  for (std::size_t f = 0; f < surface.size(); ++f) {
+    const QuadCorners c = quad_corners(surface.facets[f], in.x, in.y, in.z);
+    const int cells =
+        static_cast<int>(std::clamp(std::floor(longest_edge(c) / other_size), 1.0, 32.0));
+    for (int j = 0; j < cells; ++j)
+      for (int i = 0; i < cells; ++i) {
+        // Sharp-edge strips only in cells on the facet's sharp edges (edge 0: eta = -1,
+        // 1: xi = +1, 2: eta = +1, 3: xi = -1).
+        std::uint8_t sharp = side.sharp[f];
+        if (j > 0) sharp &= ~1u;
+        if (i < cells - 1) sharp &= ~2u;
+        if (j < cells - 1) sharp &= ~4u;
+        if (i > 0) sharp &= ~8u;
+        std::vector<FacetPoint>& cell_rule = rules[sharp];
+        if (cell_rule.empty()) cell_rule = facet_rule(s.accuracy_level, s.accuracy_edge, sharp);
+        const double inv = 1.0 / cells;
+        for (const FacetPoint& q : cell_rule) {
+          const double xi = -1.0 + (2.0 * i + 1.0 + q.xi) * inv,
+                       eta = -1.0 + (2.0 * j + 1.0 + q.eta) * inv;
+          const double weight = q.weight * inv * inv;
+          double jacobian = 0.0;
+          quad_normal(c, xi, eta, jacobian);
+          const auto shape = quad_shape(xi, eta);
+          for (int a = 0; a < 4; ++a)
+            side.node_area[surface.facets[f][a]] += shape[a] * weight * jacobian;
+          facet_area[f] += weight * jacobian;
+          if (s.discretisation == Discretisation::SurfaceToSurface)
+            add_point(static_cast<std::int32_t>(f), -1, xi, eta, weight);
+        }
+      }
+  }
+  // Nodes (N2S): every node of the surface, or the given ones; a node point sits at corner 0 of
+  // a facet made of its node four times (xi = eta = -1), so the shape functions are (1, 0, 0, 0).
+  if (s.discretisation == Discretisation::NodeToSurface) {
+    std::vector<std::int32_t> nodes(secondary_nodes.begin(), secondary_nodes.end());
+    if (nodes.empty())
+      for (const auto& facet : surface.facets)
+        nodes.insert(nodes.end(), facet.begin(), facet.end());
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    for (const std::int32_t node : nodes) {
+      if (node < 0 || static_cast<std::size_t>(node) >= mass_.size() ||
+          side.node_facet_start[node] == side.node_facet_start[node + 1])
+        throw ContactSetupError("secondary_nodes", "node index " + std::to_string(node) +
+                                                       " is not a node of a surface-1 facet");
+      add_point(side.node_facets[side.node_facet_start[node]], node, -1.0, -1.0, 0.0);
+    }
+  }
+  // Per point: penalty, Radioss secondary stiffness, share of its facet, depth, thickness, part.
+  const std::size_t n = side.point_facet.size();
+  for (auto* v : {&side.point_pfac, &side.point_ks, &side.point_share, &side.point_depth,
+                  &side.point_thickness})
+    v->assign(n, 0.0);
+  side.point_part.assign(n, 0);
+  side.max_point_depth = 0.0;
+  const bool radioss = is_radioss_rule(s.stiffness.rule);
+  for (std::size_t p = 0; p < n; ++p) {
+    const std::int32_t node = side.point_node[p];
+    std::int32_t first = side.point_facet[p], last = first + 1;
+    const std::int32_t* facets = nullptr;
+    if (node >= 0) {  // over the facets around the node
+      facets = side.node_facets.data();
+      first = side.node_facet_start[node];
+      last = side.node_facet_start[node + 1];
+    }
+    for (std::int32_t k = first; k < last; ++k) {
+      const std::int32_t f = facets ? facets[k] : k;
+      side.point_pfac[p] = std::max(side.point_pfac[p], surface.penalty[f]);
+      side.point_thickness[p] = std::max(side.point_thickness[p], surface.thickness[f]);
+      if (radioss)
+        side.point_ks[p] =
+            std::max(side.point_ks[p],
+                     secondary_node_stiffness(surface.bulk_modulus[f], surface.element_volume[f],
+                                              s.stiffness.scale));
+    }
+    side.point_part[p] = side.facet_part[side.point_facet[p]];
+    if (node >= 0) {
+      side.point_share[p] = 1.0;
+    } else {
+      double jacobian = 0.0;
+      quad_normal(quad_corners(surface.facets[side.point_facet[p]], in.x, in.y, in.z),
+                  side.point_xi[p], side.point_eta[p], jacobian);
+      side.point_share[p] = side.point_weight[p] * jacobian / facet_area[side.point_facet[p]];
+    }
+    side.point_depth[p] = s.detection_depth.value_or(0.5 * side.point_thickness[p]);
+    side.max_point_depth = std::max(side.max_point_depth, side.point_depth[p]);
+  }
+}
+
+void ContactInterface::build_passes() {
+  if (sides_.size() == 1) {
+    passes_.resize(1);
+    passes_[0].weight = 0.5;  // both sides of a self-contact pair are in the one pass
+  } else if (settings_.one_way) {
+    passes_.resize(1);
+    passes_[0].own = 0;
+    passes_[0].target = 1;
+  } else {
+    passes_.resize(2);
+    passes_[0].own = 0;
+    passes_[0].target = 1;
+    passes_[0].weight = 0.5;
+    passes_[1].own = 1;
+    passes_[1].target = 0;
+    passes_[1].weight = 0.5;
+  }
+  for (Pass& pass : passes_) {
+    const std::size_t n = sides_[pass.own].point_facet.size();
+    for (auto* v : {&pass.state, &pass.sliding, &pass.adhered, &pass.hit}) v->assign(n, 0);
+    pass.tie_facet.assign(n, -1);
+    pass.hit_facet.assign(n, -1);
+    for (auto* v : {&pass.offset,
+                    &pass.shift,
+                    &pass.htx,
+                    &pass.hty,
+                    &pass.htz,
+                    &pass.tie_xi,
+                    &pass.tie_eta,
+                    &pass.hit_xi,
+                    &pass.hit_eta,
+                    &pass.fx,
+                    &pass.fy,
+                    &pass.fz,
+                    &pass.area,
+                    &pass.pressure,
+                    &pass.slip_speed,
+                    &pass.normal_force,
+                    &pass.tangential_force,
+                    &pass.energy,
+                    &pass.damping_work,
+                    &pass.slip_work,
+                    &pass.penetration,
+                    &pass.omega2,
+                    &pass.qx,
+                    &pass.qy,
+                    &pass.qz})
+      v->assign(n, 0.0);
+  }
+}
+
+// Initial penetrations (seed 000 delta0_offset / delta0_max, Radioss Inacti), clearance
+// (OptiStruct CLEARANCE: the gap found at t = 0 is replaced by the clearance) and FREEZE ties,
+// from each point's partner in the initial configuration.
+void ContactInterface::initial_state(const ContactInput& in) {
+  rebuild_broad_phase(in);
+  const ContactSettings& s = settings_;
+  initial_stable_step_ = kInfinity;
+  double omega2_max = 0.0;
+  for (Pass& pass : passes_) {
+    const Side& own = sides_[pass.own];
+    const Side& target = sides_[pass.target];
+    const std::size_t n = own.point_facet.size();
+    std::vector<double> omega2(n, 0.0);
+#pragma omp parallel for schedule(dynamic, \
+                                  256) if (n >= static_cast <std::size_t>(kParallelMinimum) / 4)
+    for (std::size_t p = 0; p < n; ++p) {
+      const PointFrame f = frame(own, p, in);
+      // Stable step bound before any contact: the point's stiffest possible spring on its lightest
+      // node.
+      double m_min = kInfinity;
+      for (auto node : f.nodes) m_min = std::min(m_min, mass_[node]);
+      const double k_bound = spring(own, p, f.area, target, -1);
+      if (m_min > 0.0) omega2[p] = 2.0 * k_bound / m_min;
+      if (!f.active) continue;
+      const Partner h = partner_of(pass, p, f, in, -1);
+      if (h.facet < 0) continue;
+      if (s.freeze) {
+        pass.state[p] = kTied;
+        pass.tie_facet[p] = h.facet;
+        pass.tie_xi[p] = h.xi;
+        pass.tie_eta[p] = h.eta;
+        pass.offset[p] = -h.gap;  // tied at its initial distance, open or closed
+        continue;
+      }
+      const double gap = s.sense == ContactSense::Negative ? -h.gap : h.gap;
+      if (s.clearance) {
+        pass.shift[p] = *s.clearance - gap;
+        continue;
+      }
+      if (!(gap < 0.0) || s.sense == ContactSense::Bilateral) continue;
+      const double depth = -gap;
+      switch (s.initial_penetration) {
+        case InitialPenetration::Force:
+          break;
+        case InitialPenetration::Shift:
+          pass.offset[p] = depth;
+          break;
+        case InitialPenetration::Offset: {
+          const double allowed =
+              s.initial_max.value_or(kDefaultInitialMaxFraction * own.point_thickness[p]);
+          if (depth > allowed)
+            pass.state[p] = kReleased;
+          else
+            pass.offset[p] = std::min(depth, s.initial_offset);
+        }
+      }
+    }
+    // Before contact: a facet's springs on its lightest node against an equal mass, 2 k / m_min.
+    // S2S: k sums the springs of the facet's points. N2S: each corner node's spring in proportion
+    // to the facet's share of the node's area, so that both discretisations bound alike (with the
+    // facet penalty rule k = pfac A either way). Less would not do: the node's own element
+    // stiffens it as well.
+    std::vector<double> per_facet(own.surface.size(), 0.0);
+    if (own.point_node.empty() || own.point_node[0] < 0) {
+      for (std::size_t p = 0; p < n; ++p) per_facet[own.point_facet[p]] += omega2[p];
+    } else {
+      std::vector<double> node_omega2(mass_.size(), 0.0);
+      for (std::size_t p = 0; p < n; ++p) node_omega2[own.point_node[p]] = omega2[p];
+      for (std::size_t f = 0; f < own.surface.size(); ++f) {
+        const auto& nodes = own.surface.facets[f];
+        const QuadCorners c = quad_corners(nodes, in.x, in.y, in.z);
+        const double area = 0.5 * norm(cross(c[2] - c[0], c[3] - c[1]));
+        double m_min = kInfinity;
+        for (auto node : nodes) m_min = std::min(m_min, mass_[node]);
+        for (auto node : nodes)  // omega2 of a node was 2 k / m_node
+          if (own.node_area[node] > 0.0)
+            per_facet[f] +=
+                node_omega2[node] * mass_[node] / m_min * 0.25 * area / own.node_area[node];
+      }
+    }
+    for (double w : per_facet) omega2_max = std::max(omega2_max, w);
+  }
+  if (omega2_max > 0.0) initial_stable_step_ = 2.0 / std::sqrt(omega2_max);
+}
+
+}  // namespace abut

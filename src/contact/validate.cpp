@@ -1,0 +1,97 @@
+// The checks of a contact interface's settings and surfaces, in the library's own terms.
+#include <cmath>
+#include <string>
+
+#include "abut/contact/interface.hpp"
+
+namespace abut {
+
+void ContactInterface::validate(const ContactSurface& s1, const ContactSurface& s2,
+                                std::size_t coordinates) const {
+  const ContactSettings& s = settings_;
+  auto fail = [](const char* setting, const std::string& message) {
+    throw ContactSetupError(setting, message);
+  };
+  if (s.accuracy_level < 1) fail("accuracy_level", "expected 1 (low), 2 (standard) or more (high)");
+  if (!(s.damping >= 0.0)) fail("damping", "the fraction of critical damping must be >= 0");
+  if (!(s.end_time >= s.begin_time)) fail("end_time", "the contact must not end before it begins");
+  if (!(s.initial_offset >= 0.0))
+    fail("initial_offset", "the initial penetration offset must be >= 0");
+  if (s.initial_max && !(*s.initial_max >= 0.0)) fail("initial_max", "must be >= 0");
+  if (!(s.edge_tolerance >= 0.0)) fail("edge_tolerance", "the edge tolerance must be >= 0");
+  if (!(s.edge_angle > 0.0 && s.edge_angle <= 180.0))
+    fail("edge_angle", "expected an angle in (0, 180] degrees");
+  if (s.stick_stress && !(*s.stick_stress > 0.0))
+    fail("stick_stress", "the sticking failure stress must be > 0");
+  if (s.search_margin && !(*s.search_margin > 0.0))
+    fail("search_margin", "the search margin must be > 0");
+  if (s.detection_depth && !(*s.detection_depth > 0.0))
+    fail("detection_depth", "the detection depth must be > 0");
+  if (s.tangential_penalty && !(*s.tangential_penalty > 0.0))
+    fail("tangential_penalty", "the tangential penalty must be > 0");
+  if (s.clearance && !std::isfinite(*s.clearance))
+    fail("clearance", "the clearance must be a finite length");
+  if (s.adhesion && !(s.adhesion->gap > 0.0 && s.adhesion->max_stress >= 0.0 &&
+                      s.adhesion->fluid_viscosity >= 0.0))
+    fail("adhesion",
+         "adhesion needs a gap > 0, a maximum adhesive stress >= 0 and a viscosity >= 0");
+  if (s.freeze && s.stick_stress)
+    fail("freeze", "a frozen contact cannot also have a sticking failure stress");
+  if (const auto* c = std::get_if<Coulomb>(&s.tangential_law)) {
+    if (!(c->mu_static >= 0.0) || !(c->mu_dynamic >= 0.0))
+      fail("tangential_law", "the friction coefficients must be >= 0");
+    if (!c->function && std::holds_alternative<std::monostate>(c->model) &&
+        c->mu_dynamic > c->mu_static)
+      fail("tangential_law", "the dynamic friction coefficient must not exceed the static one");
+  }
+  if (const auto* t = std::get_if<Tresca>(&s.tangential_law)) {
+    if (!(t->shear_yield > 0.0))
+      fail("tangential_law", "Tresca friction needs a shear yield stress > 0");
+    if (!(t->factor_static >= 0.0 && t->factor_dynamic >= 0.0 &&
+          t->factor_dynamic <= t->factor_static))
+      fail("tangential_law", "Tresca friction needs shear factors with 0 <= dynamic <= static");
+  }
+  if (const auto* c = std::get_if<CurvePenalty>(&s.normal_law); c && !c->pressure)
+    fail("normal_law", "the penalty curve is missing");
+  if (s.friction_filter.kind != FrictionFilter::Kind::None && !(s.friction_filter.xfreq > 0.0))
+    fail("friction_filter", "the filter coefficient must be > 0");
+  if (s.friction_filter.kind == FrictionFilter::Kind::Simple && !(s.friction_filter.xfreq <= 1.0))
+    fail("friction_filter", "the simple filter coefficient must be in (0, 1]");
+  const StiffnessSettings& k = s.stiffness;
+  if (!(k.scale > 0.0) || !(k.minimum >= 0.0) || !(k.maximum > k.minimum))
+    fail("stiffness", "expected a stiffness scale > 0 and 0 <= minimum < maximum");
+  for (const PairScale& ps : s.pair_scales)
+    if (!(ps.scale > 0.0) || !std::isfinite(ps.scale))
+      fail("pair_scales", "a penalty scale factor must be > 0");
+  if (s1.size() == 0) fail("surface1", "surface 1 has no facets");
+  if (s2.size() == 0) fail("surface2", "surface 2 has no facets");
+  const bool radioss = k.rule != StiffnessRule::FacetPenalty;
+  int which = 1;
+  for (const ContactSurface* surface : {&s1, &s2}) {
+    const std::string name = "surface" + std::to_string(which++);
+    const std::size_t n = surface->size();
+    if (surface->part.size() != n || surface->penalty.size() != n || surface->thickness.size() != n)
+      fail(name.c_str(), "part, penalty and thickness need one entry per facet");
+    for (std::size_t f = 0; f < n; ++f) {
+      if (!(surface->penalty[f] > 0.0) || !std::isfinite(surface->penalty[f]))
+        fail(name.c_str(),
+             "the penalty stiffness of part " + std::to_string(surface->part[f]) + " must be > 0");
+      if (!(surface->thickness[f] > 0.0))
+        fail(name.c_str(),
+             "a facet of part " + std::to_string(surface->part[f]) + " has no positive thickness");
+      if (radioss && (surface->bulk_modulus.size() != n || surface->element_volume.size() != n ||
+                      !(surface->bulk_modulus[f] > 0.0) || !(surface->element_volume[f] > 0.0)))
+        fail(
+            "stiffness",
+            "the Radioss stiffness rules need each facet's bulk modulus and element volume (part " +
+                std::to_string(surface->part[f]) + ")");
+      for (auto node : surface->facets[f])
+        if (node < 0 || static_cast<std::size_t>(node) >= mass_.size() ||
+            static_cast<std::size_t>(node) >= coordinates)
+          fail(name.c_str(),
+               "a facet refers to node index " + std::to_string(node) + " beyond the nodal arrays");
+    }
+  }
+}
+
+}  // namespace abut
