@@ -120,6 +120,16 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   const Side& own = sides_[pass.own];
   const Side& target = sides_[pass.target];
   if (pass.state[p] == kReleased) return;
+  // Most points have no candidate and no partner to keep: nothing to evaluate (the outcome of the
+  // full path below when no partner is found).
+  if (last_partner < 0 && pass.state[p] != kTied &&
+      pass.candidates.offsets[p] == pass.candidates.offsets[p + 1]) {
+    pass.htx[p] = pass.hty[p] = pass.htz[p] = 0.0;
+    pass.sliding[p] = 0;
+    pass.offset[p] = 0.0;
+    pass.adhered[p] = 0;
+    return;
+  }
   const PointFrame f = frame(own, p, in);
   if (!f.active) return;
   const ContactSettings& s = settings_;
