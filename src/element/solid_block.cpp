@@ -39,10 +39,11 @@
 #include <type_traits>
 
 #include "abut/core/error.hpp"
+#include "abut/core/parallel.hpp"
 #include "abut/element/hex8.hpp"
 #include "abut/element/stable_step.hpp"
-#include "abut/core/parallel.hpp"
 #include "abut/material/elastic.hpp"
+#include "abut/material/metal.hpp"
 #include "abut/material/mooney_rivlin.hpp"
 #include "abut/material/sym_tensor.hpp"
 
@@ -54,6 +55,12 @@ enum Failure : unsigned char { kOk = 0, kInverted = 1, kNonFinite = 2 };
 
 struct ElasticLaw {
   LameConstants lame;
+};
+
+// J2 plasticity (metal.hpp): hypoelastic trial, radial return, plastic strain per element.
+struct MetalLaw {
+  LameConstants lame;
+  FlowStress flow;
 };
 
 struct RubberLaw {
@@ -91,7 +98,8 @@ std::string input_prefix(std::int64_t part_id) {
   return s;
 }
 
-void check_material(std::int64_t part_id, const MaterialParams& material) {
+void check_material(std::int64_t part_id, const MaterialParams& material,
+                    const FunctionTable* functions) {
   const std::string where = input_prefix(part_id);
   if (is_rigid(material)) {
     throw InputError(where + "a rigid material cannot be used for a deformable solid block");
@@ -103,6 +111,13 @@ void check_material(std::int64_t part_id, const MaterialParams& material) {
       throw InputError(where + "Poisson's ratio must lie in (-1, 0.5)");
     }
   }
+  if (const auto* m = std::get_if<MetalParams>(&material)) {
+    if (!(m->young > 0.0)) throw InputError(where + "Young's modulus must be > 0");
+    if (!(m->poisson > -1.0 && m->poisson < 0.5))
+      throw InputError(where + "Poisson's ratio must lie in (-1, 0.5)");
+    if (!m->johnson_cook && !(functions && m->flow_curve.valid()))
+      throw InputError(where + "the flow stress curve of *MAT_METAL is missing");
+  }
   if (const auto* m = std::get_if<MooneyRivlinParams>(&material)) {
     if (!(m->bulk > 0.0)) throw InputError(where + "bulk modulus K must be > 0");
     if (!(m->c1 + m->c2 >= 0.0)) throw InputError(where + "C1 + C2 must be >= 0");
@@ -113,7 +128,6 @@ void check_material(std::int64_t part_id, const MaterialParams& material) {
     }
   }
 }
-
 
 }  // namespace
 
@@ -129,7 +143,8 @@ struct SolidBlock::Impl {
   double bulk_viscosity_quadratic = kDefaultBulkViscosityQuadratic;
   double bulk_viscosity_linear = kDefaultBulkViscosityLinear;
   double newtonian_viscosity = 0.0;  // sum of alpha_k of the Mooney-Rivlin terms with beta_k = 0
-  double lame_lambda = 0.0, lame_mu = 0.0;  // initial moduli for the stable step (mu with viscous terms)
+  double lame_lambda = 0.0,
+         lame_mu = 0.0;  // initial moduli for the stable step (mu with viscous terms)
   int viscous_terms = 0;
 
   std::vector<double> reference_volume;  // 1 per element
@@ -137,11 +152,13 @@ struct SolidBlock::Impl {
   // stored per element as R[6 j + k - 1] (component j), so that F = sum_k c_k (x) R_k.
   static constexpr std::size_t kReferenceModes = 18;
   std::vector<double> reference_gradient;
-  std::vector<double> stress;         // 6 per element (Sym3 order)
-  std::vector<double> viscous;        // 6 per active viscous term per element
-  std::vector<double> hourglass;      // generalized hourglass forces, 12 per element
-  std::vector<double> forces;         // 24 per element
-  std::vector<double> internal_work;  // per-element increments of the last step
+  std::vector<double> stress;                // 6 per element (Sym3 order)
+  std::vector<double> viscous;               // 6 per active viscous term per element
+  std::vector<double> hourglass;             // generalized hourglass forces, 12 per element
+  std::vector<double> forces;                // 24 per element
+  std::vector<double> internal_work;         // per-element increments of the last step
+  std::vector<double> plastic_strain;        // equivalent plastic strain (metals)
+  const FunctionTable* functions = nullptr;  // flow curves of *MAT_METAL
   std::vector<double> hourglass_work;
   std::vector<double> stable;
   std::vector<unsigned char> failure;
@@ -246,6 +263,14 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
   Sym3 now;
   if constexpr (std::is_same_v<Law, ElasticLaw>) {
     now = dt > 0.0 ? add(rotated, hooke(law.lame, strain_increment)) : old;
+  } else if constexpr (std::is_same_v<Law, MetalLaw>) {
+    now = old;
+    if (dt > 0.0) {
+      const PlasticUpdate u = radial_return(add(rotated, hooke(law.lame, strain_increment)),
+                                            law.lame.mu, plastic_strain[e], dt, law.flow);
+      now = u.stress;
+      plastic_strain[e] += u.plastic_strain_increment;
+    }
   } else {
     // F = sum_a x_a (x) B0_a = sum_k c_k (x) R_k with R_k = 8 G0_k / V0 (hex8.hpp).
     const double* r0 = &reference_gradient[kReferenceModes * e];
@@ -260,7 +285,8 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
     }
     now = mooney_rivlin_stress(*law.params, f);
     const Sym3 dev_increment = deviator(strain_increment);
-    double* history = viscous.data() + 6 * static_cast<std::size_t>(viscous_terms) * e;  // may be empty
+    double* history =
+        viscous.data() + 6 * static_cast<std::size_t>(viscous_terms) * e;  // may be empty
     for (int k = 0; k < viscous_terms; ++k) {
       double* hk = history + 6 * k;
       Sym3 h{{hk[0], hk[1], hk[2], hk[3], hk[4], hk[5]}};
@@ -406,10 +432,12 @@ BlockStep SolidBlock::Impl::step(const NodalState& s, double dt, const Law& law)
 }
 
 SolidBlock::SolidBlock(std::int64_t part_id, const MaterialParams& material,
-                       std::vector<Hex8> hexes, const Nodes& reference)
+                       std::vector<Hex8> hexes, const Nodes& reference,
+                       const FunctionTable* functions)
     : impl_(std::make_unique<Impl>()) {
-  check_material(part_id, material);
+  check_material(part_id, material, functions);
   Impl& m = *impl_;
+  m.functions = functions;
   m.part_id = part_id;
   m.material = material;
   m.hexes = std::move(hexes);
@@ -468,6 +496,7 @@ SolidBlock::SolidBlock(std::int64_t part_id, const MaterialParams& material,
   m.hourglass.assign(12 * n, 0.0);
   m.forces.assign(24 * n, 0.0);
   m.internal_work.assign(n, 0.0);
+  if (std::holds_alternative<MetalParams>(material)) m.plastic_strain.assign(n, 0.0);
   m.hourglass_work.assign(n, 0.0);
   m.stable.assign(n, 0.0);
   m.failure.assign(n, kOk);
@@ -491,7 +520,8 @@ void SolidBlock::add_lumped_mass(std::vector<double>& nodal_mass) const {
 double SolidBlock::initial_stable_step(const Nodes& reference) const {
   double step = std::numeric_limits<double>::infinity();
   for (const Hex8& hex : impl_->hexes) {
-    const double length = hex8_critical_length(hex8_modal_gradient_at(hex, reference), impl_->lame_lambda, impl_->lame_mu);
+    const double length = hex8_critical_length(hex8_modal_gradient_at(hex, reference),
+                                               impl_->lame_lambda, impl_->lame_mu);
     step = std::min(step, impl_->critical_step(length, 0.0));
   }
   return step;
@@ -505,6 +535,10 @@ BlockStep SolidBlock::update(const NodalState& state, double dt) {
   if (const auto* e = std::get_if<ElasticParams>(&m.material)) {
     return m.step(state, dt, ElasticLaw{lame_constants(*e)});
   }
+  if (const auto* metal = std::get_if<MetalParams>(&m.material)) {
+    const LameConstants lame{m.lame_lambda, m.lame_mu};
+    return m.step(state, dt, MetalLaw{lame, FlowStress(*metal, m.functions)});
+  }
   const auto& rubber = std::get<MooneyRivlinParams>(m.material);
   return m.step(state, dt, RubberLaw{&rubber, dt > 0.0 ? viscous_step(rubber, dt) : ViscousStep{}});
 }
@@ -517,6 +551,11 @@ void SolidBlock::von_mises_stress(std::vector<double>& out) const {
     const double* s = &impl_->stress[6 * e];
     out[e] = von_mises(Sym3{{s[0], s[1], s[2], s[3], s[4], s[5]}});
   }
+}
+
+void SolidBlock::plastic_strain(std::vector<double>& out) const {
+  out = impl_->plastic_strain;
+  out.resize(size(), 0.0);
 }
 
 void SolidBlock::pressure(std::vector<double>& out) const {

@@ -196,6 +196,8 @@ void read_smooth_mesh(DeckReader&, Block&);
 void read_mat_elastic(DeckReader&, Block&);
 void read_mat_mooney_rivlin(DeckReader&, Block&);
 void read_mat_rigid(DeckReader&, Block&);
+void read_mat_metal(DeckReader&, Block&);
+void read_mat_jc(DeckReader&, Block&);
 void read_part(DeckReader&, Block&);
 void read_set_node(DeckReader&, Block&);
 void read_set_part(DeckReader&, Block&);

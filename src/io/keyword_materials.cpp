@@ -1,4 +1,4 @@
-// *MAT_ELASTIC, *MAT_MOONEY_RIVLIN, *MAT_RIGID, *PART.
+// *MAT_ELASTIC, *MAT_MOONEY_RIVLIN, *MAT_RIGID, *MAT_METAL, *MAT_JC, *PART.
 #include "deck_reader.hpp"
 
 namespace abut::deck {
@@ -117,6 +117,76 @@ void read_part(DeckReader& d, Block& b) {
     r.unsupported_unless(7, 1e20, "element erosion (eps_v_erode)");
     d.model.parts.push_back(part);
   }
+}
+
+}  // namespace abut::deck
+
+namespace abut::deck {
+namespace {
+
+// Line 1 of *MAT_METAL and *MAT_JC: mid, rho, E, nu, did, thpid, eosid.
+MetalParams metal_elasticity(const Row& r) {
+  MetalParams p;
+  p.density = density(r, 1);
+  p.young = r.number(2);
+  r.require(p.young > 0.0, 2, "expected a Young's modulus > 0");
+  p.poisson = r.number_or(3, 0.0);
+  r.require(p.poisson >= 0.0 && p.poisson < 0.5, 3, "poisson must be in [0, 0.5)");
+  r.unsupported_unless(4, 0.0, "a damage property (did)");
+  no_thermal(r, 5);
+  r.unsupported_unless(6, 0.0, "an equation of state (eosid)");
+  return p;
+}
+
+// Thermal softening needs a temperature field (the heat issue).
+void no_thermal_softening(const Row& r, std::size_t m, std::size_t t0, std::size_t tm) {
+  r.unsupported_unless(m, 0.0, "thermal softening (m): abut has no temperature field yet, and");
+  r.unsupported_unless(t0, 0.0, "thermal softening (T0): abut has no temperature field yet, and");
+  r.unsupported_unless(tm, 0.0, "thermal softening (Tm): abut has no temperature field yet, and");
+}
+
+}  // namespace
+
+void read_mat_metal(DeckReader& d, Block& b) {
+  const Row r1 = b.row({"mid", "rho", "E", "nu", "did", "thpid", "eosid"});
+  const Row r2 = b.row({"cid", "xi", "yield", "c", "eps_dot0", "m", "T0", "Tm"});
+  MetalParams p = metal_elasticity(r1);
+  r2.unsupported_unless(1, 0.0, "kinematic hardening (xi)");
+  r2.unsupported_unless(2, 0.0, "a yield surface other than von Mises (yield)");
+  r2.unsupported_unless(3, 0.0, "rate hardening of *MAT_METAL (c; *MAT_JC has it)");
+  if (r2.given(4)) r2.require(r2.number(4) > 0.0, 4, "expected a reference strain rate > 0");
+  no_thermal_softening(r2, 5, 6, 7);
+  if (auto r3 = b.optional_row({"s0", "s1", "eps_d", "mu"})) {
+    for (std::size_t i = 0; i < 4; ++i)
+      r3->unsupported_unless(i, 0.0, "the fields of line 3 (damage and friction)");
+  }
+  const std::size_t index = d.model.materials.size();
+  d.bind_function(d.other_id(r2, 0), r2.where(0), [index](Model& model, FunctionRef f) {
+    std::get<MetalParams>(model.materials[index].params).flow_curve = f;
+  });
+  add_material(d, r1, p);
+}
+
+void read_mat_jc(DeckReader& d, Block& b) {
+  const Row r1 = b.row({"mid", "rho", "E", "nu", "did", "thpid", "eosid"});
+  const Row r2 = b.row({"A", "B", "n", "C", "m", "T0", "Tm", "eps_dot0"});
+  MetalParams p = metal_elasticity(r1);
+  p.johnson_cook = true;
+  p.a = r2.number(0);
+  r2.require(p.a > 0.0, 0, "expected an initial yield stress A > 0");
+  p.b = r2.number_or(1, 0.0);
+  r2.require(p.b >= 0.0, 1, "expected a hardening modulus B >= 0");
+  p.n = r2.number_or(2, 1.0);
+  r2.require(p.n > 0.0, 2, "expected a hardening exponent n > 0");
+  p.c = r2.number_or(3, 0.0);
+  r2.require(p.c >= 0.0, 3, "expected a rate coefficient C >= 0");
+  no_thermal_softening(r2, 4, 5, 6);
+  p.rate0 = r2.number_or(7, 1.0);
+  r2.require(p.rate0 > 0.0, 7, "expected a reference strain rate > 0");
+  if (auto r3 = b.optional_row({"-", "-", "d", "e"})) {
+    for (std::size_t i = 0; i < 4; ++i) r3->unsupported_unless(i, 0.0, "the fields of line 3");
+  }
+  add_material(d, r1, p);
 }
 
 }  // namespace abut::deck

@@ -64,8 +64,10 @@ class StateWriter {
     if (!failed) {
       sim.von_mises_stress(von_mises_);
       sim.pressure(pressure_);
+      sim.plastic_strain(plastic_strain_);
       cell_fields.push_back({"von_mises_stress", 1, von_mises_});
       cell_fields.push_back({"pressure", 1, pressure_});
+      cell_fields.push_back({"plastic_strain", 1, plastic_strain_});
     }
     const std::string name = fmt::format("states/state_{:04d}.vtu", series_.size());
     const HexGridView grid{x, y, z, model_.mesh.hexes};
@@ -82,7 +84,7 @@ class StateWriter {
   const Model& model_;
   PvdSeries series_;
   double last_time_ = 0.0;
-  std::vector<double> displacement_, velocity_, part_id_, von_mises_, pressure_;
+  std::vector<double> displacement_, velocity_, part_id_, von_mises_, pressure_, plastic_strain_;
   std::vector<double> contact_force_, contact_pressure_, wear_;
 };
 

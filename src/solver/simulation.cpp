@@ -139,7 +139,7 @@ void Simulation::Impl::setup() {
       std::vector<Hex8> hexes;
       hexes.reserve(it->second.size());
       for (const std::int32_t e : it->second) hexes.push_back(mesh.hexes[e]);
-      blocks.emplace_back(part.id, material, std::move(hexes), mesh.nodes);
+      blocks.emplace_back(part.id, material, std::move(hexes), mesh.nodes, &model.functions);
       blocks.back().add_lumped_mass(part_mass);
       block_hex_index.push_back(it->second);
       info.block = static_cast<std::int32_t>(blocks.size() - 1);
@@ -558,24 +558,25 @@ const std::vector<double>& Simulation::vy() const { return impl_->vy; }
 const std::vector<double>& Simulation::vz() const { return impl_->vz; }
 const std::vector<double>& Simulation::nodal_mass() const { return impl_->mass; }
 
-void Simulation::von_mises_stress(std::vector<double>& out) const {
+void Simulation::element_field(void (SolidBlock::*field)(std::vector<double>&) const,
+                               std::vector<double>& out) const {
   out.assign(impl_->model.mesh.hex_count(), 0.0);
   std::vector<double> block_values;
   for (std::size_t b = 0; b < impl_->blocks.size(); ++b) {
-    impl_->blocks[b].von_mises_stress(block_values);
+    (impl_->blocks[b].*field)(block_values);
     for (std::size_t e = 0; e < block_values.size(); ++e)
       out[impl_->block_hex_index[b][e]] = block_values[e];
   }
 }
 
+void Simulation::von_mises_stress(std::vector<double>& out) const {
+  element_field(&SolidBlock::von_mises_stress, out);
+}
 void Simulation::pressure(std::vector<double>& out) const {
-  out.assign(impl_->model.mesh.hex_count(), 0.0);
-  std::vector<double> block_values;
-  for (std::size_t b = 0; b < impl_->blocks.size(); ++b) {
-    impl_->blocks[b].pressure(block_values);
-    for (std::size_t e = 0; e < block_values.size(); ++e)
-      out[impl_->block_hex_index[b][e]] = block_values[e];
-  }
+  element_field(&SolidBlock::pressure, out);
+}
+void Simulation::plastic_strain(std::vector<double>& out) const {
+  element_field(&SolidBlock::plastic_strain, out);
 }
 
 Energies Simulation::energies() const { return impl_->energy; }

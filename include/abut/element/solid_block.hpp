@@ -12,6 +12,7 @@
 #include <memory>
 #include <vector>
 
+#include "abut/core/functions.hpp"
 #include "abut/material/material.hpp"
 #include "abut/mesh/mesh.hpp"
 
@@ -35,8 +36,9 @@ struct BlockStep {
 class SolidBlock {
  public:
   // `reference` holds the initial coordinates (needed by total-Lagrangian hyperelasticity).
+  // `functions`: the curves and functions a material refers to (*MAT_METAL's flow curve).
   SolidBlock(std::int64_t part_id, const MaterialParams& material, std::vector<Hex8> hexes,
-             const Nodes& reference);
+             const Nodes& reference, const FunctionTable* functions = nullptr);
   ~SolidBlock();
   SolidBlock(SolidBlock&&) noexcept;
   SolidBlock& operator=(SolidBlock&&) noexcept;
@@ -58,6 +60,7 @@ class SolidBlock {
 
   // Per-element results at the last update (for output).
   void von_mises_stress(std::vector<double>& out) const;  // resized to size()
+  void plastic_strain(std::vector<double>& out) const;    // equivalent plastic strain; 0 if elastic
   void pressure(std::vector<double>& out) const;          // p = -trace(sigma)/3
   // Cauchy stress, 6 per element (xx, yy, zz, xy, yz, zx); resized to 6 * size().
   void stress(std::vector<double>& out) const;

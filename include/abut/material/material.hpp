@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <variant>
 
+#include "abut/core/functions.hpp"
+
 namespace abut {
 
 // *MAT_ELASTIC: isotropic linear elasticity (objective rate form for large rotations).
@@ -31,7 +33,21 @@ struct RigidParams {
   double density = 0.0;
 };
 
-using MaterialParams = std::variant<ElasticParams, MooneyRivlinParams, RigidParams>;
+// *MAT_METAL and *MAT_JC: isotropic elasticity with von Mises (J2) plasticity and isotropic
+// hardening; the flow stress sigma_y(epsp, epsp_rate) is
+//   *MAT_METAL  a *CURVE or *FUNCTION of the plastic strain (cid; a function reads `epsp`),
+//   *MAT_JC     Johnson-Cook (A + B epsp^n)(1 + C ln(epsp_rate / rate0)) for epsp_rate > rate0.
+// See metal.hpp for the return mapping.
+struct MetalParams {
+  double density = 0.0;
+  double young = 0.0;
+  double poisson = 0.0;
+  bool johnson_cook = false;
+  FunctionRef flow_curve;                                  // *MAT_METAL cid
+  double a = 0.0, b = 0.0, n = 1.0, c = 0.0, rate0 = 1.0;  // *MAT_JC
+};
+
+using MaterialParams = std::variant<ElasticParams, MooneyRivlinParams, RigidParams, MetalParams>;
 
 inline double density_of(const MaterialParams& m) {
   return std::visit([](const auto& p) { return p.density; }, m);

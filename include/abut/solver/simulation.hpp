@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "abut/core/vec3.hpp"
+#include "abut/element/solid_block.hpp"
 #include "abut/solver/contact_report.hpp"
 #include "abut/solver/model.hpp"
 
@@ -76,6 +77,7 @@ class Simulation {
   // Per-hex results in Model mesh order (rigid hexes: 0).
   void von_mises_stress(std::vector<double>& out) const;
   void pressure(std::vector<double>& out) const;
+  void plastic_strain(std::vector<double>& out) const;  // equivalent plastic strain per hex
 
   Energies energies() const;
   // Relative energy balance error: (total - total_0 - external_work) / max(total, total_0, |W|).
@@ -97,6 +99,8 @@ class Simulation {
   double last_good_time() const;
 
  private:
+  void element_field(void (SolidBlock::*field)(std::vector<double>&) const,
+                     std::vector<double>& out) const;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -1,0 +1,79 @@
+// *MAT_METAL and *MAT_JC: fields into MetalParams, the flow curve bound, unsupported options as
+// errors at their field.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "test_deck_helpers.hpp"
+
+namespace abut {
+namespace {
+
+using testing::error_of;
+using testing::model_of;
+
+const std::string kMesh = R"(*UNIT_SYSTEM
+SI
+*TIME
+1.0e-3
+*COMPONENT_BOX
+1, 1, 1, 1, 1
+0.0, 0.0, 0.0, 0.01, 0.01, 0.01
+*PART
+"bar"
+1, 1
+)";
+
+TEST(DeckMetals, MetalReadsItsFlowCurve) {
+  const Model m = model_of(
+      kMesh + "*MAT_METAL\n1, 7800.0, 210.0e9, 0.3\n7\n*FUNCTION\n7\n167e6 + 415e6*epsp^0.3\n");
+  const auto& p = std::get<MetalParams>(m.materials.at(0).params);
+  EXPECT_DOUBLE_EQ(p.young, 210e9);
+  EXPECT_DOUBLE_EQ(p.poisson, 0.3);
+  EXPECT_FALSE(p.johnson_cook);
+  ASSERT_TRUE(p.flow_curve.valid());
+  Variables v;
+  v.epsp = 0.1;
+  EXPECT_NEAR(m.functions.value(p.flow_curve, 0.1, v), 167e6 + 415e6 * std::pow(0.1, 0.3), 1e-3);
+}
+
+TEST(DeckMetals, JohnsonCookFieldsAndDefaults) {
+  const Model m = model_of(kMesh + "*MAT_JC\n1, 8960.0, 124.0e9, 0.34\n90e6, 292e6, 0.31, 0.025\n");
+  const auto& p = std::get<MetalParams>(m.materials.at(0).params);
+  EXPECT_TRUE(p.johnson_cook);
+  EXPECT_DOUBLE_EQ(p.a, 90e6);
+  EXPECT_DOUBLE_EQ(p.b, 292e6);
+  EXPECT_DOUBLE_EQ(p.n, 0.31);
+  EXPECT_DOUBLE_EQ(p.c, 0.025);
+  EXPECT_DOUBLE_EQ(p.rate0, 1.0);
+}
+
+TEST(DeckMetals, UnsupportedOptionsAreErrorsAtTheirField) {
+  EXPECT_EQ(
+      error_of(kMesh + "*MAT_METAL\n1, 7800.0, 210.0e9, 0.3\n7, 0.5\n*CURVE\n7\n0, 1e8\n1, 2e8\n")
+          .where()
+          .field,
+      "xi");
+  EXPECT_EQ(
+      error_of(kMesh + "*MAT_METAL\n1, 7800.0, 210.0e9, 0.3\n7, 0, 1\n*CURVE\n7\n0, 1e8\n1, 2e8\n")
+          .where()
+          .field,
+      "yield");
+  EXPECT_EQ(
+      error_of(kMesh +
+               "*MAT_METAL\n1, 7800.0, 210.0e9, 0.3\n7, 0, 0, 0.1\n*CURVE\n7\n0, 1e8\n1, 2e8\n")
+          .where()
+          .field,
+      "c");
+  const InputError thermal =
+      error_of(kMesh + "*MAT_JC\n1, 8960.0, 124.0e9, 0.34\n90e6, 292e6, 0.31, 0.025, 1.09\n");
+  EXPECT_EQ(thermal.where().field, "m");
+  EXPECT_EQ(thermal.where().line, 13u);
+  EXPECT_EQ(error_of(kMesh + "*MAT_JC\n1, 8960.0, 124.0e9, 0.34\n0, 292e6\n").where().field, "A");
+  EXPECT_EQ(error_of(kMesh + "*MAT_METAL\n1, 7800.0, 210.0e9, 0.3\n9\n").where().field,
+            "cid");  // no curve 9
+}
+
+}  // namespace
+}  // namespace abut

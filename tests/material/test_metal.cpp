@@ -1,0 +1,97 @@
+// J2 radial return of *MAT_METAL / *MAT_JC (metal.hpp) against closed forms.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "abut/core/error.hpp"
+#include "abut/material/metal.hpp"
+
+namespace abut {
+namespace {
+
+constexpr double kE = 200e9, kNu = 0.3;
+constexpr double kG = kE / (2.0 * (1.0 + kNu));
+
+MetalParams johnson_cook(double a, double b, double n, double c = 0.0) {
+  MetalParams p;
+  p.density = 7800.0;
+  p.young = kE;
+  p.poisson = kNu;
+  p.johnson_cook = true;
+  p.a = a;
+  p.b = b;
+  p.n = n;
+  p.c = c;
+  return p;
+}
+
+// Linear hardening sigma_y = A + H epsp (JC with n = 1): the return has the closed form
+// dp = (q_trial - sigma_y(epsp)) / (3G + H) (Simo & Hughes 1998, box 3.2), and the returned
+// deviator is the trial one scaled by (q_trial - 3G dp) / q_trial; the pressure is unchanged.
+TEST(RadialReturn, LinearHardeningClosedForm) {
+  const double a = 300e6, h = 1e9, epsp = 0.01;
+  const MetalParams p = johnson_cook(a, h, 1.0);
+  const FlowStress flow(p, nullptr);
+  const Sym3 trial{{500e6, 100e6, -50e6, 80e6, 0.0, -30e6}};
+  const Sym3 s = deviator(trial);
+  const double q = std::sqrt(1.5 * double_dot(s, s));
+  const double dp_expected = (q - (a + h * epsp)) / (3.0 * kG + h);
+  const PlasticUpdate u = radial_return(trial, kG, epsp, 0.0, flow);
+  EXPECT_NEAR(u.plastic_strain_increment, dp_expected, 1e-12 * dp_expected);
+  EXPECT_NEAR(von_mises(u.stress), a + h * (epsp + dp_expected), 1e-9 * a);  // on the yield surface
+  EXPECT_NEAR(trace(u.stress), trace(trial), 1e-6);
+  const double scale = (q - 3.0 * kG * dp_expected) / q;
+  const Sym3 sd = deviator(u.stress);
+  for (int i = 0; i < 6; ++i) EXPECT_NEAR(sd[i], scale * s[i], 1e-6 * q);  // radial
+}
+
+TEST(RadialReturn, ElasticInsideTheYieldSurface) {
+  const MetalParams p = johnson_cook(300e6, 1e9, 1.0);
+  const FlowStress flow(p, nullptr);
+  const Sym3 trial{{200e6, 0.0, 0.0, 10e6, 0.0, 0.0}};
+  const PlasticUpdate u = radial_return(trial, kG, 0.0, 1e-6, flow);
+  EXPECT_EQ(u.plastic_strain_increment, 0.0);
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(u.stress[i], trial[i]);
+}
+
+// Power-law hardening (n = 0.3) and the Johnson-Cook rate factor: the returned state satisfies
+// the consistency condition q_trial - 3G dp = (A + B (epsp + dp)^n)(1 + C ln(dp / dt / rate0)).
+TEST(RadialReturn, PowerLawWithRateSatisfiesConsistency) {
+  const double a = 90e6, b = 292e6, n = 0.31, c = 0.025, epsp = 0.05, dt = 1e-7;
+  const MetalParams p = johnson_cook(a, b, n, c);
+  const FlowStress flow(p, nullptr);
+  const Sym3 trial{{900e6, 0.0, 0.0, 0.0, 0.0, 0.0}};
+  const Sym3 s = deviator(trial);
+  const double q = std::sqrt(1.5 * double_dot(s, s));
+  const PlasticUpdate u = radial_return(trial, kG, epsp, dt, flow);
+  const double dp = u.plastic_strain_increment;
+  ASSERT_GT(dp, 0.0);
+  const double rate = dp / dt;
+  const double sigma_y = (a + b * std::pow(epsp + dp, n)) * (1.0 + c * std::log(rate));
+  EXPECT_NEAR(q - 3.0 * kG * dp, sigma_y, 1e-9 * sigma_y);
+  EXPECT_NEAR(von_mises(u.stress), sigma_y, 1e-9 * sigma_y);
+}
+
+// Below the reference rate the Johnson-Cook factor is 1 (it only strengthens).
+TEST(FlowStress, JohnsonCookRateFactorFromTheReferenceRateOn) {
+  const MetalParams p = johnson_cook(100e6, 200e6, 0.5, 0.1);
+  const FlowStress flow(p, nullptr);
+  EXPECT_DOUBLE_EQ(flow(0.04, 0.5), 100e6 + 200e6 * 0.2);
+  EXPECT_NEAR(flow(0.04, 100.0), (100e6 + 200e6 * 0.2) * (1.0 + 0.1 * std::log(100.0)), 1e-6);
+}
+
+// *MAT_METAL's flow curve from a function table: a *FUNCTION of epsp, and a *CURVE.
+TEST(FlowStress, MetalCurveFromTheFunctionTable) {
+  FunctionTable table;
+  table.add_function(1, "167e6 + 415e6 * epsp^0.3", SourceLocation{});
+  table.add_curve(2, Curve{{0.0, 0.2}, {250e6, 400e6}}, SourceLocation{});
+  table.resolve();
+  MetalParams p;
+  p.flow_curve = table.find(1, SourceLocation{});
+  EXPECT_NEAR(FlowStress(p, &table)(0.1, 0.0), 167e6 + 415e6 * std::pow(0.1, 0.3), 1e-3);
+  p.flow_curve = table.find(2, SourceLocation{});
+  EXPECT_NEAR(FlowStress(p, &table)(0.1, 0.0), 325e6, 1e-3);
+}
+
+}  // namespace
+}  // namespace abut
