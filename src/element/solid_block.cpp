@@ -129,6 +129,35 @@ void check_material(std::int64_t part_id, const MaterialParams& material,
   }
 }
 
+// Effective deviatoric logarithmic strain sqrt(2/3 e_dev:e_dev) of F = sum_k c_k (x) R_k
+// (R_k = 8 G0_k / V0, hex8.hpp), from the eigenvalues of C = F^T F: e_i = ln(lambda_i) / 2.
+double deviatoric_log_strain(const Hex8Modes& c, const double* r0) {
+  const double* cs[3] = {c.x, c.y, c.z};
+  Mat3 f{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      double sum = 0.0;
+      for (int k = 1; k < 7; ++k) sum += cs[i][k] * r0[6 * j + k - 1];
+      f[3 * i + j] = sum;
+    }
+  Sym3 right_cauchy_green;
+  const int pairs[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
+  for (int q = 0; q < 6; ++q) {
+    double sum = 0.0;
+    for (int k = 0; k < 3; ++k) sum += f[3 * k + pairs[q][0]] * f[3 * k + pairs[q][1]];
+    right_cauchy_green[q] = sum;
+  }
+  const SymEigen eig = eigen_symmetric(right_cauchy_green);
+  double e[3], mean = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    e[i] = 0.5 * std::log(eig.values[static_cast<std::size_t>(i)]);
+    mean += e[i] / 3.0;
+  }
+  double sum = 0.0;
+  for (double v : e) sum += (v - mean) * (v - mean);
+  return std::sqrt(2.0 / 3.0 * sum);
+}
+
 }  // namespace
 
 struct SolidBlock::Impl {
@@ -152,12 +181,18 @@ struct SolidBlock::Impl {
   // stored per element as R[6 j + k - 1] (component j), so that F = sum_k c_k (x) R_k.
   static constexpr std::size_t kReferenceModes = 18;
   std::vector<double> reference_gradient;
-  std::vector<double> stress;                // 6 per element (Sym3 order)
-  std::vector<double> viscous;               // 6 per active viscous term per element
-  std::vector<double> hourglass;             // generalized hourglass forces, 12 per element
-  std::vector<double> forces;                // 24 per element
-  std::vector<double> internal_work;         // per-element increments of the last step
-  std::vector<double> plastic_strain;        // equivalent plastic strain (metals)
+  std::vector<double> stress;          // 6 per element (Sym3 order)
+  std::vector<double> viscous;         // 6 per active viscous term per element
+  std::vector<double> hourglass;       // generalized hourglass forces, 12 per element
+  std::vector<double> forces;          // 24 per element
+  std::vector<double> internal_work;   // per-element increments of the last step
+  std::vector<double> plastic_strain;  // equivalent plastic strain (metals)
+  ErosionCriteria erosion;
+  std::vector<std::uint8_t> eroded;
+  std::vector<double> element_internal, element_hourglass;  // cumulative work per element (erosion)
+  std::vector<double> geometric_strain, volume_ratio;       // erosion measures at the last update
+  double eroded_energy = 0.0;
+  std::size_t eroded_count = 0;
   const FunctionTable* functions = nullptr;  // flow curves of *MAT_METAL
   std::vector<double> hourglass_work;
   std::vector<double> stable;
@@ -170,6 +205,7 @@ struct SolidBlock::Impl {
   void element(std::size_t e, const NodalState& s, double dt, const Law& law);
   template <class Law>
   BlockStep step(const NodalState& s, double dt, const Law& law);
+  void erode(BlockStep& out);
   std::string element_name(std::size_t e) const;
   // l / (Q + sqrt(Q^2 + c^2)) with Q = q_speed (bulk viscosity) plus the Newtonian Q_eta.
   double critical_step(double length, double q_speed) const {
@@ -199,6 +235,13 @@ template <class Law>
 void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, const Law& law) {
   // Gather the nodal data once and go to the modal form (hex8.hpp): every per-node sum below
   // (velocity gradients, F, hourglass rates, b:b) becomes a sum over the six modes with G_k != 0.
+  if (!eroded.empty() && eroded[e]) {
+    std::fill_n(&forces[24 * e], 24, 0.0);
+    internal_work[e] = hourglass_work[e] = 0.0;
+    stable[e] = std::numeric_limits<double>::infinity();
+    failure[e] = kOk;
+    return;
+  }
   const Hex8& hex = hexes[e];
   Hex8Coords cur;
   double v[3][8];
@@ -400,6 +443,11 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
   // same way: 4/3 eta eps_dot = rho l Q_eta eps_dot, Q_eta = 4 eta / (3 rho l).
   stable[e] = critical_step(hex8_critical_length(g, lame_lambda, lame_mu), q_speed);
   failure[e] = kOk;
+  if (!eroded.empty()) {
+    volume_ratio[e] = g.volume / reference_volume[e];
+    if (erosion.max_geometric_strain < 1e20)
+      geometric_strain[e] = deviatoric_log_strain(c, &reference_gradient[kReferenceModes * e]);
+  }
 }
 
 template <class Law>
@@ -426,9 +474,38 @@ BlockStep SolidBlock::Impl::step(const NodalState& s, double dt, const Law& law)
   }
   internal_energy += internal;
   hourglass_energy += hourglass_sum;
+  if (!eroded.empty()) erode(out);
   out.internal_energy = internal_energy;
   out.hourglass_energy = hourglass_energy;
+  out.eroded_energy = eroded_energy;
+  out.eroded = eroded_count;
   return out;
+}
+
+// Serial, in element order: the energy each element has taken so far, then the criteria. An eroded
+// element's energy leaves the internal (and hourglass) energy for the eroded energy, so the energy
+// balance still closes; its forces of this step are dropped.
+void SolidBlock::Impl::erode(BlockStep& out) {
+  out.stable_step = std::numeric_limits<double>::infinity();
+  for (std::size_t e = 0; e < hexes.size(); ++e) {
+    if (eroded[e]) continue;
+    element_internal[e] += internal_work[e];
+    element_hourglass[e] += hourglass_work[e];
+    const bool fails = stable[e] < erosion.min_step ||
+                       geometric_strain[e] > erosion.max_geometric_strain ||
+                       volume_ratio[e] - 1.0 > erosion.max_volumetric_strain;
+    if (!fails) {
+      out.stable_step = std::min(out.stable_step, stable[e]);
+      continue;
+    }
+    eroded[e] = 1;
+    ++eroded_count;
+    eroded_energy += element_internal[e] + element_hourglass[e];
+    internal_energy -= element_internal[e];
+    hourglass_energy -= element_hourglass[e];
+    std::fill_n(&forces[24 * e], 24, 0.0);
+    std::fill_n(&stress[6 * e], 6, 0.0);
+  }
 }
 
 SolidBlock::SolidBlock(std::int64_t part_id, const MaterialParams& material,
@@ -464,7 +541,7 @@ SolidBlock::SolidBlock(std::int64_t part_id, const MaterialParams& material,
 
   const std::size_t n = m.hexes.size();
   m.reference_volume.resize(n);
-  if (rubber) m.reference_gradient.resize(Impl::kReferenceModes * n);
+  m.reference_gradient.resize(Impl::kReferenceModes * n);  // hyperelasticity, erosion strain
   for (std::size_t e = 0; e < n; ++e) {
     for (const std::int32_t node : m.hexes[e]) {
       if (node < 0 || static_cast<std::size_t>(node) >= reference.size()) {
@@ -482,7 +559,7 @@ SolidBlock::SolidBlock(std::int64_t part_id, const MaterialParams& material,
                        "counter-clockwise on the bottom face seen from above, 5-8 above them");
     }
     m.reference_volume[e] = g.volume;
-    if (rubber) {
+    {
       double* r0 = &m.reference_gradient[Impl::kReferenceModes * e];
       for (int k = 1; k < 7; ++k) {
         r0[k - 1] = 8.0 * g.gx[k] / g.volume;
@@ -552,6 +629,27 @@ void SolidBlock::von_mises_stress(std::vector<double>& out) const {
     out[e] = von_mises(Sym3{{s[0], s[1], s[2], s[3], s[4], s[5]}});
   }
 }
+
+void SolidBlock::set_erosion(const ErosionCriteria& criteria) {
+  Impl& m = *impl_;
+  if (!(criteria.min_step >= 0.0) || !(criteria.max_geometric_strain > 0.0) ||
+      !(criteria.max_volumetric_strain > 0.0))
+    throw InputError(input_prefix(m.part_id) +
+                     "erosion limits must be > 0 (the time step limit >= 0)");
+  m.erosion = criteria;
+  const std::size_t n = m.hexes.size();
+  if (!criteria.any()) {
+    m.eroded.clear();
+    return;
+  }
+  m.eroded.assign(n, 0);
+  m.element_internal.assign(n, 0.0);
+  m.element_hourglass.assign(n, 0.0);
+  m.geometric_strain.assign(n, 0.0);
+  m.volume_ratio.assign(n, 1.0);
+}
+
+const std::vector<std::uint8_t>& SolidBlock::eroded() const { return impl_->eroded; }
 
 void SolidBlock::plastic_strain(std::vector<double>& out) const {
   out = impl_->plastic_strain;

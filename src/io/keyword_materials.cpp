@@ -112,9 +112,12 @@ void read_part(DeckReader& d, Block& b) {
       s.max_angle = alpha_max;
       d.smoothing.push_back(s);
     }
-    r.unsupported_unless(5, 0.0, "element erosion (dt_erode)");
-    r.unsupported_unless(6, 1e20, "element erosion (eps_geo_erode)");
-    r.unsupported_unless(7, 1e20, "element erosion (eps_v_erode)");
+    part.erosion.min_step = r.number_or(5, 0.0);
+    r.require(part.erosion.min_step >= 0.0, 5, "expected a time step >= 0 (0: off)");
+    part.erosion.max_geometric_strain = r.number_or(6, 1e20);
+    r.require(part.erosion.max_geometric_strain > 0.0, 6, "expected a strain > 0 (1e20: off)");
+    part.erosion.max_volumetric_strain = r.number_or(7, 1e20);
+    r.require(part.erosion.max_volumetric_strain > 0.0, 7, "expected a strain > 0 (1e20: off)");
     d.model.parts.push_back(part);
   }
 }

@@ -69,8 +69,24 @@ class StateWriter {
       cell_fields.push_back({"pressure", 1, pressure_});
       cell_fields.push_back({"plastic_strain", 1, plastic_strain_});
     }
+    // Eroded elements disappear from the states.
+    std::span<const Hex8> hexes = model_.mesh.hexes;
+    const std::vector<std::uint8_t> eroded = sim.eroded_hexes();
+    if (std::find(eroded.begin(), eroded.end(), std::uint8_t{1}) != eroded.end()) {
+      alive_hexes_.clear();
+      for (std::size_t e = 0; e < eroded.size(); ++e)
+        if (!eroded[e]) alive_hexes_.push_back(model_.mesh.hexes[e]);
+      alive_values_.resize(cell_fields.size());
+      for (std::size_t k = 0; k < cell_fields.size(); ++k) {
+        alive_values_[k].clear();
+        for (std::size_t e = 0; e < eroded.size(); ++e)
+          if (!eroded[e]) alive_values_[k].push_back(cell_fields[k].values[e]);
+        cell_fields[k].values = alive_values_[k];
+      }
+      hexes = alive_hexes_;
+    }
     const std::string name = fmt::format("states/state_{:04d}.vtu", series_.size());
-    const HexGridView grid{x, y, z, model_.mesh.hexes};
+    const HexGridView grid{x, y, z, hexes};
     write_vtu(dir_ / name, grid, point_fields, cell_fields);
     series_.add(time, name);
     last_time_ = time;
@@ -86,13 +102,15 @@ class StateWriter {
   double last_time_ = 0.0;
   std::vector<double> displacement_, velocity_, part_id_, von_mises_, pressure_, plastic_strain_;
   std::vector<double> contact_force_, contact_pressure_, wear_;
+  std::vector<Hex8> alive_hexes_;
+  std::vector<std::vector<double>> alive_values_;
 };
 
 class HistoryWriter {
  public:
   HistoryWriter(const fs::path& dir, bool with_contact)
       : energy_(dir / "energy.csv", {"kinetic", "internal", "hourglass", "contact", "friction",
-                                     "external_work", "total", "balance_error"}),
+                                     "eroded", "external_work", "total", "balance_error"}),
         parts_(dir / "parts.csv",
                {"part", "mass", "x", "y", "z", "vx", "vy", "vz", "kinetic", "internal"}) {
     if (with_contact)
@@ -107,8 +125,9 @@ class HistoryWriter {
     written_ = true;
     last_time_ = sim.time();
     const Energies e = sim.energies();
-    energy_.write_row(sim.time(), {e.kinetic, e.internal, e.hourglass, e.contact, e.friction,
-                                   e.external_work, e.total(), sim.energy_balance_error()});
+    energy_.write_row(sim.time(),
+                      {e.kinetic, e.internal, e.hourglass, e.contact, e.friction, e.eroded,
+                       e.external_work, e.total(), sim.energy_balance_error()});
     for (const PartState& p : sim.part_states())
       parts_.write_row(
           sim.time(),
@@ -171,6 +190,7 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
   json.member("kinetic", e.kinetic).member("internal", e.internal).member("hourglass", e.hourglass);
   json.member("contact", e.contact)
       .member("friction", e.friction)
+      .member("eroded", e.eroded)
       .member("external_work", e.external_work);
   json.member("total", e.total()).member("balance_error", sim.energy_balance_error());
   json.end_object();

@@ -130,6 +130,10 @@ void Simulation::Impl::setup() {
 
     std::vector<double> part_mass(n_nodes, 0.0);
     if (info.rigid) {
+      if (part.erosion.any())
+        throw InputError(part.where,
+                         "part " + std::to_string(part.id) +
+                             " is rigid: element erosion applies to deformable parts only");
       const double rho = density_of(material);
       for (const std::int32_t e : it->second) {
         const double v = hex_volume(mesh.nodes, mesh.hexes[e]);
@@ -140,6 +144,7 @@ void Simulation::Impl::setup() {
       hexes.reserve(it->second.size());
       for (const std::int32_t e : it->second) hexes.push_back(mesh.hexes[e]);
       blocks.emplace_back(part.id, material, std::move(hexes), mesh.nodes, &model.functions);
+      blocks.back().set_erosion(part.erosion);
       blocks.back().add_lumped_mass(part_mass);
       block_hex_index.push_back(it->second);
       info.block = static_cast<std::int32_t>(blocks.size() - 1);
@@ -296,9 +301,11 @@ void Simulation::Impl::compute_forces(double dt) {
   energy.friction = contacts->friction_energy();
   energy.internal = 0.0;
   energy.hourglass = 0.0;
+  energy.eroded = 0.0;
   for (const BlockStep& s : block_steps) {
     energy.internal += s.internal_energy;
     energy.hourglass += s.hourglass_energy;
+    energy.eroded += s.eroded_energy;
   }
 }
 
@@ -575,6 +582,15 @@ void Simulation::von_mises_stress(std::vector<double>& out) const {
 void Simulation::pressure(std::vector<double>& out) const {
   element_field(&SolidBlock::pressure, out);
 }
+std::vector<std::uint8_t> Simulation::eroded_hexes() const {
+  std::vector<std::uint8_t> out(impl_->model.mesh.hex_count(), 0);
+  for (std::size_t b = 0; b < impl_->blocks.size(); ++b) {
+    const auto& eroded = impl_->blocks[b].eroded();
+    for (std::size_t e = 0; e < eroded.size(); ++e) out[impl_->block_hex_index[b][e]] = eroded[e];
+  }
+  return out;
+}
+
 void Simulation::plastic_strain(std::vector<double>& out) const {
   element_field(&SolidBlock::plastic_strain, out);
 }

@@ -268,8 +268,13 @@ TEST(DeckParts, TitlesSmoothingAngleAndReferences) {
   EXPECT_EQ(no_part.message(), "part 7 does not exist (defined parts: 1, 2)");
   EXPECT_THAT(error_of("*TIME\n1\n*PART\n\"lonely title\"\n").message(),
               HasSubstr("must be followed by its pid, mid line"));
-  EXPECT_THAT(error_of(with_box("*PART\n2, 1, , , , 1e-9\n")).message(),
-              HasSubstr("element erosion"));
+  // Erosion fields (IMPETUS *PART): read into the part; negative values are errors at their field.
+  const Model eroding = testing::model_of(with_box("*PART\n2, 1, , , , 1e-9, 0.5, 0.3\n"));
+  EXPECT_DOUBLE_EQ(eroding.parts.back().erosion.min_step, 1e-9);
+  EXPECT_DOUBLE_EQ(eroding.parts.back().erosion.max_geometric_strain, 0.5);
+  EXPECT_DOUBLE_EQ(eroding.parts.back().erosion.max_volumetric_strain, 0.3);
+  EXPECT_EQ(error_of(with_box("*PART\n2, 1, , , , -1\n")).where().field, "dt_erode");
+  EXPECT_EQ(error_of(with_box("*PART\n2, 1, , , , , 0\n")).where().field, "eps_geo_erode");
 }
 
 TEST(DeckSets, NodeAndPartSets) {

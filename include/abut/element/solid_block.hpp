@@ -8,6 +8,7 @@
 // stress at x^n. Forces are stored per element (24 values: node a, direction i at e*24+a*3+i)
 // and are the forces acting ON the nodes (i.e. minus the internal force vector), so that the
 // solver can assemble them node by node in a fixed order (bitwise identical for any thread count).
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -27,9 +28,24 @@ struct NodalState {
   const double* vz;
 };
 
+// When an element is removed (*PART erosion fields, IMPETUS): its critical step falls below
+// min_step, its effective deviatoric logarithmic strain sqrt(2/3 e_dev:e_dev) exceeds
+// max_geometric_strain, or its volumetric strain V/V0 - 1 exceeds max_volumetric_strain.
+struct ErosionCriteria {
+  double min_step = 0.0;
+  double max_geometric_strain = 1e20;
+  double max_volumetric_strain = 1e20;
+  bool any() const {
+    return min_step > 0.0 || max_geometric_strain < 1e20 || max_volumetric_strain < 1e20;
+  }
+};
+
 struct BlockStep {
-  double internal_energy = 0.0;   // cumulative strain energy of the block (work of stresses)
-  double hourglass_energy = 0.0;  // cumulative work of the hourglass forces
+  double internal_energy =
+      0.0;  // cumulative strain energy of the living elements (work of stresses)
+  double hourglass_energy = 0.0;  // cumulative work of the hourglass forces of the living elements
+  double eroded_energy = 0.0;     // internal and hourglass energy the eroded elements held
+  std::size_t eroded = 0;         // elements eroded so far
   double stable_step = 0.0;       // smallest element stable time step at x^n (no scale factor)
 };
 
@@ -61,7 +77,11 @@ class SolidBlock {
   // Per-element results at the last update (for output).
   void von_mises_stress(std::vector<double>& out) const;  // resized to size()
   void plastic_strain(std::vector<double>& out) const;    // equivalent plastic strain; 0 if elastic
-  void pressure(std::vector<double>& out) const;          // p = -trace(sigma)/3
+  // Erosion: an element meeting a criterion at the end of a step is removed for good: no forces,
+  // no stress, no step limit; its mass stays on its nodes.
+  void set_erosion(const ErosionCriteria& criteria);
+  const std::vector<std::uint8_t>& eroded() const;  // 1 per eroded element
+  void pressure(std::vector<double>& out) const;    // p = -trace(sigma)/3
   // Cauchy stress, 6 per element (xx, yy, zz, xy, yz, zx); resized to 6 * size().
   void stress(std::vector<double>& out) const;
 

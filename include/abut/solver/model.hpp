@@ -11,6 +11,7 @@
 #include "abut/core/error.hpp"
 #include "abut/core/functions.hpp"
 #include "abut/core/units.hpp"
+#include "abut/element/solid_block.hpp"
 #include "abut/material/material.hpp"
 #include "abut/mesh/geometry.hpp"
 #include "abut/mesh/mesh.hpp"
@@ -42,6 +43,7 @@ struct Part {
   std::int64_t id = 0;
   std::string title;
   std::int64_t material_id = 0;
+  ErosionCriteria erosion;  // dt_erode, eps_geo_erode, eps_v_erode
   SourceLocation where;
 };
 

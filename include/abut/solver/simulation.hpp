@@ -25,9 +25,10 @@ struct Energies {
   double hourglass = 0.0;
   double contact = 0.0;
   double friction = 0.0;
+  double eroded = 0.0;  // internal and hourglass energy the eroded elements held
   double external_work = 0.0;
-  // total = kinetic + internal + hourglass + contact + friction
-  double total() const { return kinetic + internal + hourglass + contact + friction; }
+  // total = kinetic + internal + hourglass + contact + friction + eroded
+  double total() const { return kinetic + internal + hourglass + contact + friction + eroded; }
 };
 
 struct PartState {
@@ -78,6 +79,7 @@ class Simulation {
   void von_mises_stress(std::vector<double>& out) const;
   void pressure(std::vector<double>& out) const;
   void plastic_strain(std::vector<double>& out) const;  // equivalent plastic strain per hex
+  std::vector<std::uint8_t> eroded_hexes() const;       // 1 per eroded hex (mesh order)
 
   Energies energies() const;
   // Relative energy balance error: (total - total_0 - external_work) / max(total, total_0, |W|).
