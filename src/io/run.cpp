@@ -79,8 +79,10 @@ class StateWriter {
       alive_values_.resize(cell_fields.size());
       for (std::size_t k = 0; k < cell_fields.size(); ++k) {
         alive_values_[k].clear();
+        const auto components = static_cast<std::size_t>(cell_fields[k].components);
         for (std::size_t e = 0; e < eroded.size(); ++e)
-          if (!eroded[e]) alive_values_[k].push_back(cell_fields[k].values[e]);
+          for (std::size_t c = 0; !eroded[e] && c < components; ++c)
+            alive_values_[k].push_back(cell_fields[k].values[components * e + c]);
         cell_fields[k].values = alive_values_[k];
       }
       hexes = alive_hexes_;
