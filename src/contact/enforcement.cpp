@@ -107,7 +107,7 @@ double ContactInterface::spring(const Side& own, std::size_t p, double area, con
   }
   if (settings_.stiffness.rule == StiffnessRule::FacetPenalty) {
     const double pfac =
-        f >= 0 ? std::min(own.point_pfac[p], target.surface.penalty[f]) : own.point_pfac[p];
+        std::min(own.point_pfac[p], f >= 0 ? target.surface.penalty[f] : target.max_pfac);
     return pfac * area * scale;
   }
   const double km = f >= 0 ? target.facet_km[f] : target.max_km;

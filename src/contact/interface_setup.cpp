@@ -126,6 +126,7 @@ void ContactInterface::build_sides(const ContactInput& in,
         side.active[f] = s.initial_region(centre.x, centre.y, centre.z) ? 1 : 0;
       }
       side.depth[f] = s.detection_depth.value_or(0.5 * surface.thickness[f]);
+      side.max_pfac = std::max(side.max_pfac, surface.penalty[f]);
       margin_ = std::min(margin_, side.depth[f]);
       if (is_radioss_rule(s.stiffness.rule))
         side.facet_km[f] = main_segment_stiffness(surface.bulk_modulus[f],

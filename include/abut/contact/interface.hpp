@@ -107,7 +107,8 @@ class ContactInterface {
     std::vector<double> point_pfac, point_ks, point_share, point_depth, point_thickness;
     std::vector<std::int32_t> point_part;
     double max_point_depth = 0.0;
-    double max_km = 0.0;  // stiffest main segment (stable-step bound)
+    double max_km = 0.0;    // stiffest main segment (stable-step bound)
+    double max_pfac = 0.0;  // stiffest facet penalty (stable-step bound)
     std::array<std::int32_t, 4> point_nodes(std::size_t p) const {
       const std::int32_t n = point_node[p];
       return n >= 0 ? std::array<std::int32_t, 4>{n, n, n, n} : surface.facets[point_facet[p]];
