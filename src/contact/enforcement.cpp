@@ -122,12 +122,16 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   if (pass.state[p] == kReleased) return;
   // Most points have no candidate and no partner to keep: nothing to evaluate (the outcome of the
   // full path below when no partner is found).
-  if (last_partner < 0 && pass.state[p] != kTied &&
-      pass.candidates.offsets[p] == pass.candidates.offsets[p + 1]) {
+  // A point without a partner forgets its friction history, initial offset and adhesive bond.
+  auto lose_partner = [&pass, p] {
     pass.htx[p] = pass.hty[p] = pass.htz[p] = 0.0;
     pass.sliding[p] = 0;
     pass.offset[p] = 0.0;
     pass.adhered[p] = 0;
+  };
+  if (last_partner < 0 && pass.state[p] != kTied &&
+      pass.candidates.offsets[p] == pass.candidates.offsets[p + 1]) {
+    lose_partner();
     return;
   }
   const PointFrame f = frame(own, p, in);
@@ -230,9 +234,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
 
   const Partner h = partner_of(pass, p, f, in, last_partner);
   if (h.facet < 0) {
-    clear_history();
-    pass.offset[p] = 0.0;
-    pass.adhered[p] = 0;
+    lose_partner();
     return;
   }
   const bool from_behind = s.sense == ContactSense::Negative;

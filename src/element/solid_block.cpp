@@ -105,16 +105,14 @@ void check_material(std::int64_t part_id, const MaterialParams& material,
     throw InputError(where + "a rigid material cannot be used for a deformable solid block");
   }
   if (!(density_of(material) > 0.0)) throw InputError(where + "density must be > 0");
-  if (const auto* e = std::get_if<ElasticParams>(&material)) {
-    if (!(e->young > 0.0)) throw InputError(where + "Young's modulus must be > 0");
-    if (!(e->poisson > -1.0 && e->poisson < 0.5)) {
+  auto check_isotropic = [&](double young, double poisson) {
+    if (!(young > 0.0)) throw InputError(where + "Young's modulus must be > 0");
+    if (!(poisson > -1.0 && poisson < 0.5))
       throw InputError(where + "Poisson's ratio must lie in (-1, 0.5)");
-    }
-  }
+  };
+  if (const auto* e = std::get_if<ElasticParams>(&material)) check_isotropic(e->young, e->poisson);
   if (const auto* m = std::get_if<MetalParams>(&material)) {
-    if (!(m->young > 0.0)) throw InputError(where + "Young's modulus must be > 0");
-    if (!(m->poisson > -1.0 && m->poisson < 0.5))
-      throw InputError(where + "Poisson's ratio must lie in (-1, 0.5)");
+    check_isotropic(m->young, m->poisson);
     if (!m->johnson_cook && !(functions && m->flow_curve.valid()))
       throw InputError(where + "the flow stress curve of *MAT_METAL is missing");
   }

@@ -25,11 +25,10 @@ void no_thermal(const Row& r, std::size_t thpid) {
   r.unsupported_unless(thpid, 0.0, "a thermal property (thpid)");
 }
 
-}  // namespace
-
-void read_mat_elastic(DeckReader& d, Block& b) {
-  const Row r = b.row({"mid", "rho", "E", "nu", "did", "thpid"});
-  ElasticParams p;
+// mid, rho, E, nu, did, thpid of *MAT_ELASTIC, *MAT_METAL and *MAT_JC.
+template <class Params>
+Params isotropic_elasticity(const Row& r) {
+  Params p;
   p.density = density(r, 1);
   p.young = r.number(2);
   r.require(p.young > 0.0, 2, "expected a Young's modulus > 0");
@@ -37,6 +36,14 @@ void read_mat_elastic(DeckReader& d, Block& b) {
   r.require(p.poisson >= 0.0 && p.poisson < 0.5, 3, "poisson must be in [0, 0.5)");
   r.unsupported_unless(4, 0.0, "a damage property (did)");
   no_thermal(r, 5);
+  return p;
+}
+
+}  // namespace
+
+void read_mat_elastic(DeckReader& d, Block& b) {
+  const Row r = b.row({"mid", "rho", "E", "nu", "did", "thpid"});
+  const ElasticParams p = isotropic_elasticity<ElasticParams>(r);
   if (auto r2 = b.optional_row({"a", "b", "c", "c_dec"})) {
     r2->unsupported_unless(0, 0.0, "non-linear elasticity (a)");
     r2->unsupported_unless(1, 0.0, "non-linear elasticity (b)");
@@ -129,14 +136,7 @@ namespace {
 
 // Line 1 of *MAT_METAL and *MAT_JC: mid, rho, E, nu, did, thpid, eosid.
 MetalParams metal_elasticity(const Row& r) {
-  MetalParams p;
-  p.density = density(r, 1);
-  p.young = r.number(2);
-  r.require(p.young > 0.0, 2, "expected a Young's modulus > 0");
-  p.poisson = r.number_or(3, 0.0);
-  r.require(p.poisson >= 0.0 && p.poisson < 0.5, 3, "poisson must be in [0, 0.5)");
-  r.unsupported_unless(4, 0.0, "a damage property (did)");
-  no_thermal(r, 5);
+  MetalParams p = isotropic_elasticity<MetalParams>(r);
   r.unsupported_unless(6, 0.0, "an equation of state (eosid)");
   return p;
 }

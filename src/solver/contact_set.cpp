@@ -56,6 +56,13 @@ std::map<std::int64_t, PartPenalty> part_penalties(const Model& model, const Con
   return out;
 }
 
+// One-way unless *CONTACT_DISCRETIZATION says symmetric: *CONTACT one_way, or a node group as
+// surface 1 (it has no facets of its own to be a main side).
+bool one_way_of(const ContactSpec& spec) {
+  if (spec.symmetric) return !*spec.symmetric;
+  return spec.one_way || spec.surface1.type == EntityType::NodeSet;
+}
+
 // The tangential law of a contact: *CONTACT_FRICTION, or seed 000's Coulomb mu (constant or fcn).
 TangentialLaw tangential_law_of(const ContactSpec& spec, const FunctionTable* table, double term) {
   using Law = ContactSpec::FrictionLaw;
@@ -173,12 +180,8 @@ ContactSettings settings_of(const Model& model, const ContactSpec& spec) {
   s.initial_max = spec.initial_max;
   s.edge_tolerance = spec.edge_tolerance;
   s.edge_angle = spec.edge_angle;
-  s.one_way = spec.one_way;
+  s.one_way = one_way_of(spec);
   s.stick_stress = spec.stick_stress;
-  if (!spec.symmetric)
-    s.one_way = spec.one_way || spec.surface1.type == EntityType::NodeSet;
-  else
-    s.one_way = !*spec.symmetric;
   return s;
 }
 
@@ -281,9 +284,7 @@ SourceLocation location_of(const ContactSpec& spec, const std::string& setting) 
 // The laws of a contact in the deck's words, for the log and summary.json.
 void describe(const ContactSpec& spec, ContactReport& r) {
   r.discretisation = spec.discretisation == Discretisation::NodeToSurface ? "N2S" : "S2S";
-  const bool one_way =
-      spec.symmetric ? !*spec.symmetric : spec.one_way || spec.surface1.type == EntityType::NodeSet;
-  r.discretisation += one_way ? " one-way" : " symmetric";
+  r.discretisation += one_way_of(spec) ? " one-way" : " symmetric";
   r.normal_law = spec.penalty_curve.valid() ? "CURVE" : "LINEAR";
   r.normal_law += spec.sense == ContactSense::Positive   ? " POSITIVE"
                   : spec.sense == ContactSense::Negative ? " NEGATIVE"
