@@ -32,6 +32,10 @@ struct Nodes {
 };
 
 using Hex8 = std::array<std::int32_t, 8>;  // node indices (not user ids)
+// 4-node shell (node indices, counter-clockwise about the shell normal (x3 - x1) x (x4 - x2)).
+// A triangle repeats its third node: n4 == n3.
+using Quad4 = std::array<std::int32_t, 4>;
+inline bool is_triangle(const Quad4& q) { return q[3] == q[2]; }
 
 // Exact shapes of generated components. A component is a set of structured blocks; its map
 // takes (block, grid coordinates) to a point. Grid coordinates run from 0 to the element count
@@ -96,7 +100,17 @@ struct Mesh {
     return h < hex_element.size() ? hex_element[h] : hex_id[h];
   }
 
+  // Shell elements (*ELEMENT_SHELL and the shell generators). Their ids are a namespace of their
+  // own, as in LS-DYNA; generators number after the largest hex and shell id so that messages
+  // stay unambiguous.
+  std::vector<Quad4> shells;
+  std::vector<std::int64_t> shell_id;    // user element ids
+  std::vector<std::int64_t> shell_part;  // user part id of each shell
+
   std::size_t hex_count() const { return hexes.size(); }
+  std::size_t shell_count() const { return shells.size(); }
+  void add_shell(std::int64_t id, std::int64_t part, const Quad4& nodes_of_shell);
+  std::int64_t next_shell_id() const;
   // Appends a hex and keeps all per-hex arrays parallel.
   // `element`: the user element the hex belongs to (default: itself).
   void add_hex(std::int64_t id, std::int64_t part, const Hex8& nodes_of_hex,

@@ -44,6 +44,10 @@ struct Part {
   std::string title;
   std::int64_t material_id = 0;
   ErosionCriteria erosion;  // dt_erode, eps_geo_erode, eps_v_erode
+  double thickness = 1.0;   // h: shell thickness (used by shell elements only)
+  // *PART_SHELL: integration points through the thickness (odd) and hourglass coefficient.
+  int shell_points = 5;
+  double shell_hourglass = 0.05;
   SourceLocation where;
 };
 
