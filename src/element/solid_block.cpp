@@ -45,6 +45,7 @@
 #include "abut/material/elastic.hpp"
 #include "abut/material/metal.hpp"
 #include "abut/material/mooney_rivlin.hpp"
+#include "abut/material/point_law.hpp"
 #include "abut/material/sym_tensor.hpp"
 
 namespace abut {
@@ -52,16 +53,6 @@ namespace abut {
 namespace {
 
 enum Failure : unsigned char { kOk = 0, kInverted = 1, kNonFinite = 2 };
-
-struct ElasticLaw {
-  LameConstants lame;
-};
-
-// J2 plasticity (metal.hpp): hypoelastic trial, radial return, plastic strain per element.
-struct MetalLaw {
-  LameConstants lame;
-  FlowStress flow;
-};
 
 struct RubberLaw {
   const MooneyRivlinParams* params;
@@ -82,12 +73,6 @@ void gradient_times_volume(const Hex8Modes& u, const Hex8ModalGradient& g, doubl
     l[3 * i + 1] = 8.0 * sy;
     l[3 * i + 2] = 8.0 * sz;
   }
-}
-
-Sym3 add(const Sym3& a, const Sym3& b) {
-  Sym3 s;
-  for (int c = 0; c < 6; ++c) s[c] = a[c] + b[c];
-  return s;
 }
 
 // Messages are built with append: GCC 12 reports a false -Wrestrict for "literal" + std::string&&.
@@ -302,15 +287,12 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
   const Sym3 old{{stored[0], stored[1], stored[2], stored[3], stored[4], stored[5]}};
   const Sym3 rotated = dt > 0.0 ? rotate(rotation, old) : old;
   Sym3 now;
-  if constexpr (std::is_same_v<Law, ElasticLaw>) {
-    now = dt > 0.0 ? add(rotated, hooke(law.lame, strain_increment)) : old;
-  } else if constexpr (std::is_same_v<Law, MetalLaw>) {
+  if constexpr (!std::is_same_v<Law, RubberLaw>) {  // hypoelastic point laws (point_law.hpp)
     now = old;
     if (dt > 0.0) {
-      const PlasticUpdate u = radial_return(add(rotated, hooke(law.lame, strain_increment)),
-                                            law.lame.mu, plastic_strain[e], dt, law.flow);
-      now = u.stress;
-      plastic_strain[e] += u.plastic_strain_increment;
+      double no_plasticity = 0.0;
+      now = law.update(rotated, strain_increment, dt,
+                       plastic_strain.empty() ? no_plasticity : plastic_strain[e]);
     }
   } else {
     // F = sum_a x_a (x) B0_a = sum_k c_k (x) R_k with R_k = 8 G0_k / V0 (hex8.hpp).
@@ -608,11 +590,11 @@ BlockStep SolidBlock::update(const NodalState& state, double dt) {
   }
   Impl& m = *impl_;
   if (const auto* e = std::get_if<ElasticParams>(&m.material)) {
-    return m.step(state, dt, ElasticLaw{lame_constants(*e)});
+    return m.step(state, dt, ElasticPoint{lame_constants(*e)});
   }
   if (const auto* metal = std::get_if<MetalParams>(&m.material)) {
     const LameConstants lame{m.lame_lambda, m.lame_mu};
-    return m.step(state, dt, MetalLaw{lame, FlowStress(*metal, m.functions)});
+    return m.step(state, dt, MetalPoint{lame, FlowStress(*metal, m.functions)});
   }
   const auto& rubber = std::get<MooneyRivlinParams>(m.material);
   return m.step(state, dt, RubberLaw{&rubber, dt > 0.0 ? viscous_step(rubber, dt) : ViscousStep{}});

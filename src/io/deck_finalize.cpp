@@ -210,6 +210,9 @@ DeckResult DeckReader::finish() {
   model.vx0.assign(n, 0.0);
   model.vy0.assign(n, 0.0);
   model.vz0.assign(n, 0.0);
+  model.wx0.assign(n, 0.0);
+  model.wy0.assign(n, 0.0);
+  model.wz0.assign(n, 0.0);
   for (const PendingVelocity& v : velocities) {
     std::array<FunctionRef, 3> fcn;
     for (std::size_t k = 0; k < 3; ++k) {
@@ -231,6 +234,9 @@ DeckResult DeckReader::finish() {
       model.vx0[static_cast<std::size_t>(i)] = velocity.x;
       model.vy0[static_cast<std::size_t>(i)] = velocity.y;
       model.vz0[static_cast<std::size_t>(i)] = velocity.z;
+      model.wx0[static_cast<std::size_t>(i)] = v.angular_velocity.x;
+      model.wy0[static_cast<std::size_t>(i)] = v.angular_velocity.y;
+      model.wz0[static_cast<std::size_t>(i)] = v.angular_velocity.z;
     }
   }
 

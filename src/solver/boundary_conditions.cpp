@@ -13,7 +13,8 @@ bool is_part_entity(const EntityRef& e) {
 
 BoundaryConditions resolve_boundary_conditions(
     const Model& model, const std::vector<std::int32_t>& rigid_body_of_node,
-    const std::vector<std::pair<std::int64_t, std::size_t>>& rigid_body_of_part) {
+    const std::vector<std::pair<std::int64_t, std::size_t>>& rigid_body_of_part,
+    const std::vector<double>& rotary_inertia) {
   BoundaryConditions bc;
   for (const MotionBoundary& m : model.motions) {
     const bool rotates = m.fixed_rotation != 0 ||
@@ -45,11 +46,15 @@ BoundaryConditions resolve_boundary_conditions(
     deformable_nodes.erase(std::unique(deformable_nodes.begin(), deformable_nodes.end()),
                            deformable_nodes.end());
     if (!deformable_nodes.empty()) {
-      if (rotates)
+      std::vector<std::int32_t> rotating;  // nodes with rotational degrees of freedom (shells)
+      if (!rotary_inertia.empty())
+        for (const std::int32_t n : deformable_nodes)
+          if (rotary_inertia[n] > 0.0) rotating.push_back(n);
+      if (rotates && rotating.empty())
         throw InputError(m.where,
-                         "rotational constraints and RX/RY/RZ motions act on rigid parts "
-                         "only; solid nodes have no rotational degrees of freedom");
-      bc.nodal.push_back({&m, std::move(deformable_nodes)});
+                         "rotational constraints and RX/RY/RZ motions act on shell nodes and "
+                         "rigid parts; solid nodes have no rotational degrees of freedom");
+      bc.nodal.push_back({&m, std::move(deformable_nodes), std::move(rotating)});
     }
   }
   return bc;

@@ -18,6 +18,12 @@ using Mat3 = std::array<double, 9>;
 
 inline double trace(const Sym3& s) { return s[0] + s[1] + s[2]; }
 
+inline Sym3 add(const Sym3& a, const Sym3& b) {
+  Sym3 s;
+  for (int i = 0; i < 6; ++i) s[i] = a[i] + b[i];
+  return s;
+}
+
 // Deviatoric part s - tr(s)/3 I.
 inline Sym3 deviator(const Sym3& s) {
   const double mean = trace(s) / 3.0;

@@ -204,6 +204,8 @@ struct Model {
 
   // Initial nodal velocities (*INITIAL_VELOCITY already applied), one entry per node.
   std::vector<double> vx0, vy0, vz0;
+  // Initial nodal angular velocities (the omega of *INITIAL_VELOCITY); used by shell nodes.
+  std::vector<double> wx0, wy0, wz0;
 
   std::vector<MotionBoundary> motions;
   std::vector<Gravity> gravity;

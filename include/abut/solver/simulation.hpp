@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "abut/core/vec3.hpp"
+#include "abut/element/shell_block.hpp"
 #include "abut/element/solid_block.hpp"
 #include "abut/solver/contact_report.hpp"
 #include "abut/solver/model.hpp"
@@ -108,6 +109,8 @@ class Simulation {
  private:
   void element_field(void (SolidBlock::*field)(std::vector<double>&) const,
                      std::vector<double>& out) const;
+  void shell_field(void (ShellBlock::*field)(std::vector<double>&) const,
+                   std::vector<double>& out) const;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -1,0 +1,70 @@
+#pragma once
+// The material-point seam of hypoelastic laws: an element hands a point its old stress (already
+// rotated to the current frame), the strain increment of the step, the step and the point's
+// plastic strain; the law returns the new stress and advances the plastic strain. Hexahedra call
+// `update` as it is (3-D); shells call plane_stress_update, which finds the thickness strain that
+// makes the normal stress vanish. A new hypoelastic law is one value type with `update`.
+#include <cmath>
+
+#include "abut/material/elastic.hpp"
+#include "abut/material/metal.hpp"
+#include "abut/material/sym_tensor.hpp"
+
+namespace abut {
+
+// *MAT_ELASTIC: Hooke's law on the increment.
+struct ElasticPoint {
+  LameConstants lame;
+  Sym3 update(const Sym3& rotated, const Sym3& increment, double /*dt*/,
+              double& /*plastic_strain*/) const {
+    return add(rotated, hooke(lame, increment));
+  }
+};
+
+// *MAT_METAL, *MAT_JC: elastic trial and radial return (metal.hpp).
+struct MetalPoint {
+  LameConstants lame;
+  FlowStress flow;
+  Sym3 update(const Sym3& rotated, const Sym3& increment, double dt, double& plastic_strain) const {
+    const PlasticUpdate u =
+        radial_return(add(rotated, hooke(lame, increment)), lame.mu, plastic_strain, dt, flow);
+    plastic_strain += u.plastic_strain_increment;
+    return u.stress;
+  }
+};
+
+// Plane stress (sigma_zz = 0, z the normal) for any law above: the thickness strain increment
+// d_zz is the root of sigma_zz(d_zz), found by Newton steps with the elastic slope lambda + 2 mu
+// first and secants after (Hallquist, LS-DYNA Theory Manual, "iterative plane stress" for
+// materials without a plane-stress return). Elastic points converge in one step; a plastic
+// point in a few, because sigma_zz is monotonic in d_zz with a slope between the elastic and the
+// tangent modulus. `increment[2]` is ignored; on return it holds the d_zz found.
+template <class Law>
+Sym3 plane_stress_update(const Law& law, const Sym3& rotated, Sym3& increment, double dt,
+                         double& plastic_strain) {
+  const double slope0 = law.lame.lambda + 2.0 * law.lame.mu;
+  double dzz = -(rotated[2] + law.lame.lambda * (increment[0] + increment[1])) / slope0;
+  double epsp = plastic_strain;
+  increment[2] = dzz;
+  Sym3 stress = law.update(rotated, increment, dt, epsp);
+  const double scale = std::abs(stress[0]) + std::abs(stress[1]) + std::abs(stress[3]) +
+                       std::abs(stress[4]) + std::abs(stress[5]) + 1e-300;
+  double previous_dzz = dzz, previous_szz = stress[2], slope = slope0;
+  for (int iteration = 0; iteration < 30 && std::abs(stress[2]) > 1e-12 * scale; ++iteration) {
+    dzz -= stress[2] / slope;
+    epsp = plastic_strain;
+    increment[2] = dzz;
+    stress = law.update(rotated, increment, dt, epsp);
+    if (dzz != previous_dzz) {
+      const double secant = (stress[2] - previous_szz) / (dzz - previous_dzz);
+      if (secant > 0.0) slope = secant;
+    }
+    previous_dzz = dzz;
+    previous_szz = stress[2];
+  }
+  plastic_strain = epsp;
+  stress[2] = 0.0;
+  return stress;
+}
+
+}  // namespace abut

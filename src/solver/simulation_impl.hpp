@@ -1,0 +1,101 @@
+#pragma once
+// The state of a Simulation (simulation.hpp), shared by its set-up (simulation_setup.cpp), its
+// time loop (simulation.cpp) and its results (simulation_results.cpp).
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "abut/element/shell_block.hpp"
+#include "abut/element/solid_block.hpp"
+#include "abut/solver/simulation.hpp"
+#include "boundary_conditions.hpp"
+#include "contact_set.hpp"
+#include "rigid_body.hpp"
+
+namespace abut {
+
+struct PartInfo {
+  std::int64_t part_id = 0;
+  std::string title;
+  bool rigid = false;
+  std::size_t element_count = 0;
+  double mass = 0.0;
+  std::int32_t block = -1;        // deformable solids: index into blocks
+  std::int32_t shell_block = -1;  // deformable shells: index into shell_blocks
+  std::vector<std::int32_t> nodes;
+  std::vector<double> node_mass;  // this part's share of each node's lumped mass
+};
+
+struct Simulation::Impl {
+  const Model& model;
+  std::size_t n_nodes = 0;
+  std::vector<double> x, y, z;             // x^n
+  std::vector<double> x0, y0, z0;          // reference
+  std::vector<double> vhx, vhy, vhz;       // v^{n+1/2} after kick
+  std::vector<double> vx, vy, vz;          // v^n
+  std::vector<double> ox, oy, oz;          // v^{n-1/2} during the kick
+  std::vector<double> fx, fy, fz;          // f^n
+  std::vector<double> mass, inverse_mass;  // lumped
+  std::vector<std::uint8_t> node_fixed;    // *NODE bc
+  std::vector<std::int32_t> rigid_body_of_node;
+
+  std::vector<SolidBlock> blocks;
+  std::vector<std::vector<std::int32_t>> block_hex_index;  // block element -> mesh hex
+  std::vector<BlockStep> block_steps;
+  std::vector<ShellBlock> shell_blocks;
+  std::vector<std::vector<std::int32_t>> block_shell_index;  // block element -> mesh shell
+  std::vector<BlockStep> shell_steps;
+  // Where each element's force on a node sits (CSR node -> slots, in block and element order:
+  // the fixed summation order that makes forces independent of the thread count). A slot points
+  // into a block's element_forces(), which never reallocates: fx, fy, fz there, and for a shell
+  // the moments mx, my, mz right after (moment slots).
+  std::vector<std::int32_t> slot_start, moment_slot_start;
+  std::vector<const double*> slots, moment_slots;
+
+  // Rotational degrees of freedom (nodes of shells; all empty without shells): angular
+  // velocities omega^{n+1/2} (and omega^{n-1/2} during the kick), moments, rotary inertia.
+  std::vector<double> whx, why, whz, owx, owy, owz, mx, my, mz;
+  std::vector<double> rotary_inertia, inverse_rotary_inertia;
+  bool rotations() const { return !rotary_inertia.empty(); }
+
+  std::unique_ptr<ContactSet> contacts;
+  std::int64_t limiting_contact = -1;
+  double contact_seconds = 0.0;  // wall time spent in contact (for the summary)
+
+  std::vector<RigidBody> bodies;
+  std::vector<PartInfo> parts;
+  BoundaryConditions bc;
+
+  double t = 0.0;
+  std::int64_t n = 0;
+  double dt_prev = 0.0;  // dt^{n-1/2}
+  double dt_next = 0.0;  // dt^{n+1/2}
+  double stable = 0.0;   // unscaled stable step at x^n
+  double dt_initial = 0.0;
+  std::int32_t limiting_block = -1;        // index into blocks, or
+  std::int32_t limiting_shell_block = -1;  // index into shell_blocks
+
+  Energies energy;
+  double total0 = 0.0;
+  double external_work_done = 0.0;  // up to t^{n+1/2}
+
+  std::vector<double> good_x, good_y, good_z;
+  double good_t = 0.0;
+
+  explicit Impl(const Model& m) : model(m) {}
+
+  void setup();
+  void compute_forces(double dt);
+  void kick();
+  void drift();
+  Vec3 gravity_at(double time) const;
+  void apply_nodal_boundaries(double dt_avg);  // on v^{n+1/2}, from v^{n-1/2} in ox, oy, oz
+  void apply_rigid_boundaries(double dt_avg);
+  void apply_nodal_rotation(const PrescribedMotion& p, const std::vector<std::int32_t>& nodes,
+                            double* w, const double* w_old, double dt_avg);
+  void build_force_slots();
+  std::string limit_description() const;
+};
+
+}  // namespace abut
