@@ -157,24 +157,34 @@ DeckResult DeckReader::finish() {
   // *CONTACT_* keywords, now that every *CONTACT, function and entity is known.
   merge_contact_keywords(model, contact_keywords);
 
-  // Rotations are rigid-body degrees of freedom.
+  // Rotations are degrees of freedom of rigid parts and of shell nodes.
+  std::vector<bool> shell_node(mesh.nodes.size(), false);
+  for (const Quad4& q : mesh.shells)
+    for (const std::int32_t node : q) shell_node[static_cast<std::size_t>(node)] = true;
   for (const MotionBoundary& m : model.motions) {
     const bool rotates =
         m.fixed_rotation != 0 || std::any_of(m.motions.begin(), m.motions.end(),
                                              [](const auto& p) { return p.direction >= 3; });
     if (!rotates) continue;
-    if (m.entity.type != EntityType::Part && m.entity.type != EntityType::PartSet) {
-      throw InputError(
-          m.where,
-          "rotational constraints and RX, RY, RZ motions apply to rigid parts (P or PS) only");
-    }
-    for (const std::int64_t pid : model.parts_of(m.entity)) {
-      if (!is_rigid(model.material_of_part(pid))) {
-        throw InputError(
-            m.where,
-            "rotational constraints and RX, RY, RZ motions apply to rigid parts only; part " +
-                std::to_string(pid) + " is not rigid (*MAT_RIGID)");
+    if (m.entity.type == EntityType::Part || m.entity.type == EntityType::PartSet) {
+      for (const std::int64_t pid : model.parts_of(m.entity)) {
+        const bool shells = std::find(mesh.shell_part.begin(), mesh.shell_part.end(), pid) !=
+                            mesh.shell_part.end();
+        if (!is_rigid(model.material_of_part(pid)) && !shells) {
+          throw InputError(m.where,
+                           "rotational constraints and RX, RY, RZ motions apply to rigid parts "
+                           "and shells only; part " +
+                               std::to_string(pid) + " is a deformable solid");
+        }
       }
+      continue;
+    }
+    const std::vector<std::int32_t> nodes = model.nodes_of(m.entity);
+    if (std::none_of(nodes.begin(), nodes.end(),
+                     [&](std::int32_t i) { return shell_node[static_cast<std::size_t>(i)]; })) {
+      throw InputError(m.where,
+                       "rotational constraints and RX, RY, RZ motions apply to rigid parts (P or "
+                       "PS) and shell nodes; none of these nodes belongs to a shell");
     }
   }
 
