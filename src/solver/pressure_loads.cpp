@@ -28,6 +28,19 @@ bool normalise_face(Quad4& q) {
   return false;  // q1 == q3 or q2 == q4: a quad folded onto its diagonal
 }
 
+std::string entity_name(const EntityRef& e) {
+  switch (e.type) {
+    case EntityType::Part:
+      return "part " + std::to_string(e.id);
+    case EntityType::PartSet:
+      return "part set " + std::to_string(e.id);
+    case EntityType::GeometryRegion:
+      return "the region of geometry " + std::to_string(e.id);
+    default:
+      return "the model";
+  }
+}
+
 }  // namespace
 
 std::vector<Quad4> pressure_faces(const Model& model, const PressureLoad& load) {
@@ -64,9 +77,9 @@ std::vector<Quad4> pressure_faces(const Model& model, const PressureLoad& load) 
   for (std::size_t s = 0; s < mesh.shell_count(); ++s)
     if (shell_selected[s]) faces.push_back(mesh.shells[s]);
   if (faces.empty()) {
-    throw InputError(load.entity.where,
-                     "*LOAD_PRESSURE acts on exterior faces of solid elements and on shell "
-                     "elements; the entity has none");
+    throw InputError(load.entity.where, entity_name(load.entity) +
+                                            " has no exterior face of a solid element and no "
+                                            "shell element to carry the pressure");
   }
   return faces;
 }
