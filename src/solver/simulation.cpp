@@ -12,6 +12,7 @@
 #include "abut/core/parallel.hpp"
 #include "abut/element/solid_block.hpp"
 #include "abut/mesh/skin.hpp"
+#include "abut/solver/pressure_loads.hpp"
 #include "boundary_conditions.hpp"
 #include "contact_set.hpp"
 #include "rigid_body.hpp"
@@ -69,6 +70,7 @@ struct Simulation::Impl {
   std::vector<RigidBody> bodies;
   std::vector<PartInfo> parts;
   BoundaryConditions bc;
+  PressureLoads pressure;  // *LOAD_PRESSURE, its forces kept apart for the external work
 
   double t = 0.0;
   std::int64_t n = 0;
@@ -238,6 +240,7 @@ void Simulation::Impl::setup() {
   bc = resolve_boundary_conditions(model, rigid_body_of_node, body_of_part);
 
   contacts = std::make_unique<ContactSet>(model, mass, vhx, vhy, vhz);
+  pressure = PressureLoads(model);
 
   fx.assign(n_nodes, 0.0);
   fy.assign(n_nodes, 0.0);
@@ -287,6 +290,7 @@ void Simulation::Impl::compute_forces(double dt) {
     fy[i] = sy;
     fz[i] = sz;
   }
+  if (!pressure.empty()) pressure.add_forces(t, x, y, z, fx, fy, fz);  // follower load at x^n
   // Contact forces act at x^{n} with the latest velocities v^{n-1/2} (damping, friction).
   const auto contact_start = std::chrono::steady_clock::now();
   contacts->apply({x, y, z, vhx, vhy, vhz, t, dt}, fx, fy, fz);
@@ -379,6 +383,8 @@ void Simulation::Impl::kick() {
     work += (rx + dt_avg * mass[i] * g.x) * mx + (ry + dt_avg * mass[i] * g.y) * my +
             (rz + dt_avg * mass[i] * g.z) * mz;
   }
+  // f^n includes the pressure forces too: add their work back as gravity's.
+  if (!pressure.empty()) work += dt_avg * pressure.mid_step_power(ox, oy, oz, vhx, vhy, vhz);
   // The velocity at t^n is v^{n-1/2} + (dt^{n-1/2}/2) a^n: the kick's change scaled by the
   // share of [t^{n-1/2}, t^{n+1/2}] that lies before t^n (0 at t^0, 1 at the end time where
   // dt^{n+1/2} = 0). The work reported at t^n takes the same share of this kick's work.
