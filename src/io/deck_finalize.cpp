@@ -7,6 +7,7 @@
 
 #include "abut/mesh/refine.hpp"
 #include "abut/solver/contact_surfaces.hpp"
+#include "abut/solver/pressure_loads.hpp"
 #include "deck_reader.hpp"
 
 namespace abut::deck {
@@ -213,6 +214,9 @@ DeckResult DeckReader::finish() {
 
   // OptiStruct ADJUST: secondary nodes onto the main surface, before anything uses the geometry.
   for (std::string& note : adjust_contact_nodes(model)) notes.push_back(std::move(note));
+
+  // *LOAD_PRESSURE: an entity without faces is an error of the deck, found on the final mesh.
+  for (const PressureLoad& p : model.pressures) pressure_faces(model, p);
 
   // Initial velocities on the final nodes, in deck order (a later command overrides an earlier
   // one).

@@ -204,6 +204,7 @@ void read_set_part(DeckReader&, Block&);
 void read_initial_velocity(DeckReader&, Block&);
 void read_bc_motion(DeckReader&, Block&);
 void read_load_gravity(DeckReader&, Block&);
+void read_load_pressure(DeckReader&, Block&);
 void read_curve(DeckReader&, Block&);
 void read_function(DeckReader&, Block&);
 void read_geometry_box(DeckReader&, Block&);

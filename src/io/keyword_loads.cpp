@@ -1,4 +1,4 @@
-// *INITIAL_VELOCITY, *BC_MOTION, *LOAD_GRAVITY.
+// *INITIAL_VELOCITY, *BC_MOTION, *LOAD_GRAVITY, *LOAD_PRESSURE.
 #include <cctype>
 
 #include "deck_reader.hpp"
@@ -148,6 +148,25 @@ void read_load_gravity(DeckReader& d, Block& b) {
     d.bind_function(d.other_id(r, 1), r.where(1),
                     [i](Model& model, FunctionRef f) { model.gravity[i].curve = f; });
     d.model.gravity.push_back(g);
+  }
+}
+
+void read_load_pressure(DeckReader& d, Block& b) {
+  if (b.done()) throw InputError(b.where(), "missing data line: expected entype, enid, cid, sf");
+  while (!b.done()) {
+    const Row r = b.row({"entype", "enid", "cid", "sf"});
+    PressureLoad p;
+    p.entity = d.entity(
+        r, 0, 1,
+        {EntityType::Part, EntityType::PartSet, EntityType::All, EntityType::GeometryRegion});
+    p.scale = r.number_or(3, 1.0);
+    p.where = r.where();
+    const std::size_t i = d.model.pressures.size();
+    d.bind_function(d.other_id(r, 2), r.where(2),
+                    [i](Model& model, FunctionRef f) { model.pressures[i].curve = f; });
+    d.model.pressures.push_back(p);
+    // The faces are resolved (and an entity without any is an error) once the mesh is final.
+    d.entity_references.push_back(p.entity);
   }
 }
 

@@ -86,6 +86,7 @@ void Simulation::Impl::compute_forces(double dt) {
       mz[i] = sz;
     }
   }
+  if (!pressure.empty()) pressure.add_forces(t, x, y, z, fx, fy, fz);  // follower load at x^n
   // Contact forces act at x^{n} with the latest velocities v^{n-1/2} (damping, friction).
   const auto contact_start = std::chrono::steady_clock::now();
   contacts->apply({x, y, z, vhx, vhy, vhz, t, dt}, fx, fy, fz);
@@ -198,6 +199,8 @@ void Simulation::Impl::kick() {
     work += (rx + dt_avg * mass[i] * g.x) * ux + (ry + dt_avg * mass[i] * g.y) * uy +
             (rz + dt_avg * mass[i] * g.z) * uz;
   }
+  // f^n includes the pressure forces too: add their work back as gravity's.
+  if (!pressure.empty()) work += dt_avg * pressure.mid_step_power(ox, oy, oz, vhx, vhy, vhz);
   if (rotations()) {  // reaction moments of rotational constraints, the same way
     for (std::size_t i = 0; i < n_nodes; ++i) {
       const double inertia = rotary_inertia[i];

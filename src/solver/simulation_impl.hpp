@@ -8,6 +8,7 @@
 
 #include "abut/element/shell_block.hpp"
 #include "abut/element/solid_block.hpp"
+#include "abut/solver/pressure_loads.hpp"
 #include "abut/solver/simulation.hpp"
 #include "boundary_conditions.hpp"
 #include "contact_set.hpp"
@@ -66,6 +67,7 @@ struct Simulation::Impl {
   std::vector<RigidBody> bodies;
   std::vector<PartInfo> parts;
   BoundaryConditions bc;
+  PressureLoads pressure;  // *LOAD_PRESSURE, its forces kept apart for the external work
 
   double t = 0.0;
   std::int64_t n = 0;

@@ -187,6 +187,7 @@ void Simulation::Impl::setup() {
   bc = resolve_boundary_conditions(model, rigid_body_of_node, body_of_part, rotary_inertia);
 
   contacts = std::make_unique<ContactSet>(model, mass, vhx, vhy, vhz);
+  pressure = PressureLoads(model);
 
   fx.assign(n_nodes, 0.0);
   fy.assign(n_nodes, 0.0);

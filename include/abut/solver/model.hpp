@@ -106,6 +106,17 @@ struct Gravity {
   SourceLocation where;
 };
 
+// *LOAD_PRESSURE: a pressure, function of time, on the exterior faces of the solid elements and
+// on the shells of an entity (P, PS, ALL, or G: the faces whose nodes all lie in the region).
+// Positive pressure pushes against the face normal: it compresses a solid; on a shell it acts
+// along -n, n = (x3 - x1) x (x4 - x2).
+struct PressureLoad {
+  EntityRef entity;
+  FunctionRef curve;  // pressure [stress] as a function of time
+  double scale = 1.0;
+  SourceLocation where;
+};
+
 // *CONTACT, field by field (seed 000; keyword reference §6). Optional fields are empty when
 // the deck leaves them out, so that the contact code applies the documented defaults.
 struct ContactSpec {
@@ -209,6 +220,7 @@ struct Model {
 
   std::vector<MotionBoundary> motions;
   std::vector<Gravity> gravity;
+  std::vector<PressureLoad> pressures;
   std::vector<ContactSpec> contacts;
 
   // Look-ups by user id; nullptr when absent.
