@@ -36,8 +36,10 @@ class StateWriter {
     for (const std::int64_t p : mesh.shell_part) part_id_.push_back(static_cast<double>(p));
     // Hexahedra have no thickness: 0 tells them apart from shells in ParaView.
     thickness_.assign(mesh.hex_count(), 0.0);
-    for (const std::int64_t p : mesh.shell_part)
-      thickness_.push_back(model.find_part(p)->thickness);
+    for (const std::int64_t p : mesh.shell_part) {
+      const Part* part = model.find_part(p);  // a deck's shell parts exist; a built model's may not
+      thickness_.push_back(part ? part->thickness : 0.0);
+    }
   }
 
   void write(const Simulation& sim, bool failed) {
