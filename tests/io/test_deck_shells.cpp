@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "abut/mesh/shell_generators.hpp"
 #include "test_deck_helpers.hpp"
@@ -157,6 +158,16 @@ TEST(DeckShells, ShellPartsAreNoContactSurfacesYet) {
   EXPECT_THAT(e.message(), HasSubstr("*CONTACT_DISCRETIZATION with method N2S"));
   EXPECT_THAT(error_of(deck + "ALL, 0, ALL, 0\n").message(), HasSubstr("ALL includes part 1"));
   EXPECT_THAT(error_of(deck + "P, 2, P, 1\n").message(), HasSubstr("part 1, which has shells"));
+}
+
+TEST(DeckShells, ShellNodesAsSecondaryNodesOfANodeToSurfaceContact) {
+  // The route the contact-surface error proposes reads: the node set is no surface.
+  const Model m = model_of(kShells + "7, 1, 1, 2, 3, 4\n*COMPONENT_BOX\n1, 2, 1, 1, 1\n" +
+                           "5, 5, 5, 6, 6, 6\n*PART\n2, 1\n*SET_NODE\n9\n1, 2, 3, 4\n" +
+                           "*CONTACT\n1\nNS, 9, P, 2\n*CONTACT_DISCRETIZATION\n1, N2S\n" +
+                           "*BC_MOTION\nP, 1, XYZ\n");
+  EXPECT_EQ(m.contacts.at(0).surface1.type, EntityType::NodeSet);
+  EXPECT_EQ(m.nodes_of(m.motions.at(0).entity), (std::vector<std::int32_t>{0, 1, 2, 3}));
 }
 
 TEST(DeckShells, RefiningShellPartsIsNotSupportedYet) {
