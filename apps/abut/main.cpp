@@ -25,7 +25,8 @@ void print_info(const abut::Model& model, std::ostream& out) {
   if (!model.title.empty()) out << fmt::format("title:      {}\n", model.title);
   out << fmt::format("units:      {}\n", model.units ? std::string(abut::unit_system_name(*model.units))
                                                      : std::string("not stated (*UNIT_SYSTEM)"));
-  out << fmt::format("mesh:       {} nodes, {} hexahedra\n", model.mesh.nodes.size(), model.mesh.hex_count());
+  out << fmt::format("mesh:       {} nodes, {} hexahedra, {} shells\n", model.mesh.nodes.size(),
+                     model.mesh.hex_count(), model.mesh.shell_count());
   out << fmt::format("time:       end {:.6g}, step scale {}, initial stable step {:.4g} ({})\n",
                      model.time.end_time, model.time.step_scale, sim.initial_time_step(), sim.time_step_limit());
   out << "parts:\n";
@@ -66,9 +67,10 @@ int main(int argc, char** argv) {
     const abut::Model& model = result.model;
     if (*check) {
       const abut::Simulation sim(model);
-      std::cout << fmt::format("{}: OK ({} nodes, {} hexahedra, {} parts, initial stable step {:.4g})\n", deck,
-                               model.mesh.nodes.size(), model.mesh.hex_count(), model.parts.size(),
-                               sim.initial_time_step());
+      std::cout << fmt::format(
+          "{}: OK ({} nodes, {} hexahedra, {} shells, {} parts, initial stable step {:.4g})\n",
+          deck, model.mesh.nodes.size(), model.mesh.hex_count(), model.mesh.shell_count(),
+          model.parts.size(), sim.initial_time_step());
       return 0;
     }
     if (*info) {

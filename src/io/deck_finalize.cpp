@@ -11,7 +11,6 @@
 #include "deck_reader.hpp"
 
 namespace abut::deck {
-namespace {
 
 std::string joined(const std::set<std::int64_t>& ids) {
   std::string s;
@@ -27,6 +26,8 @@ SourceLocation with_field(SourceLocation where, const std::string& field) {
   where.field = field;
   return where;
 }
+
+namespace {
 
 const Geometry& geometry_of(const Model& model, const IdReference& ref) {
   const GeometryEntry* g = model.find_geometry(ref.id);
@@ -119,9 +120,13 @@ DeckResult DeckReader::finish() {
   };
   for (const ElementNodes& e : element_nodes)
     require_part(mesh.hex_part[e.hex], element_where(e, "pid"));
+  for (const ShellNodes& e : shell_nodes)
+    require_part(mesh.shell_part[e.shell], shell_where(e, "pid"));
   for (const MeshSource& s : mesh_sources) {
     for (std::size_t h = s.first; h < s.end; ++h)
       require_part(mesh.hex_part[h], with_field(s.where, "pid"));
+    for (std::size_t e = s.first_shell; e < s.end_shell; ++e)
+      require_part(mesh.shell_part[e], with_field(s.where, "pid"));
   }
 
   // Sets and geometries.
@@ -157,6 +162,7 @@ DeckResult DeckReader::finish() {
   }
   // *CONTACT_* keywords, now that every *CONTACT, function and entity is known.
   merge_contact_keywords(model, contact_keywords);
+  resolve_shells();
 
   // Rotations are degrees of freedom of rigid parts and of shell nodes.
   std::vector<bool> shell_node(mesh.nodes.size(), false);
@@ -189,11 +195,22 @@ DeckResult DeckReader::finish() {
     }
   }
 
-  // Mesh refinement and smoothing, once, on the complete mesh.
+  // Mesh refinement and smoothing, once, on the complete mesh. ALL means the solid parts: shell
+  // parts are neither refined nor smoothed (resolve_shells refuses them by P and PS).
+  const auto solid_parts_of = [&](const EntityRef& entity) {
+    std::vector<std::int64_t> parts = model.parts_of(entity);
+    if (entity.type == EntityType::All) {
+      std::erase_if(parts, [&](std::int64_t p) {
+        return std::find(mesh.shell_part.begin(), mesh.shell_part.end(), p) !=
+               mesh.shell_part.end();
+      });
+    }
+    return parts;
+  };
   std::vector<OrderChange> order_changes;
   for (const PendingOrder& o : orders) {
     OrderChange c;
-    c.parts = model.parts_of(o.entity);
+    c.parts = solid_parts_of(o.entity);
     c.order = o.order;
     if (o.region) c.region = geometry_of(model, *o.region);
     order_changes.push_back(std::move(c));
@@ -201,7 +218,7 @@ DeckResult DeckReader::finish() {
   std::vector<SurfaceSmoothing> smoothings;
   for (const PendingSmoothing& s : smoothing) {
     SurfaceSmoothing c;
-    c.parts = model.parts_of(s.entity);
+    c.parts = solid_parts_of(s.entity);
     c.max_angle = s.max_angle;
     c.internal = s.internal;
     if (s.region) c.region = geometry_of(model, *s.region);
@@ -255,7 +272,8 @@ DeckResult DeckReader::finish() {
   }
 
   for (const Part& p : model.parts) {
-    if (std::find(mesh.hex_part.begin(), mesh.hex_part.end(), p.id) == mesh.hex_part.end()) {
+    if (std::find(mesh.hex_part.begin(), mesh.hex_part.end(), p.id) == mesh.hex_part.end() &&
+        std::find(mesh.shell_part.begin(), mesh.shell_part.end(), p.id) == mesh.shell_part.end()) {
       notes.push_back("part " + std::to_string(p.id) + " has no elements");
     }
   }

@@ -247,6 +247,7 @@ void DeckReader::generate(const std::function<void()>& generator, const SourceLo
   Mesh& mesh = model.mesh;
   const std::size_t first_node = mesh.nodes.size();
   const std::size_t first_hex = mesh.hex_count();
+  const std::size_t first_shell = mesh.shell_count();
   try {
     generator();
   } catch (const InputError& e) {
@@ -265,7 +266,13 @@ void DeckReader::generate(const std::function<void()>& generator, const SourceLo
           where, "generated element id " + std::to_string(mesh.hex_id[h]) + " already exists");
     }
   }
-  mesh_sources.push_back({first_hex, mesh.hex_count(), where});
+  for (std::size_t s = first_shell; s < mesh.shell_count(); ++s) {
+    if (!shell_ids_.insert(mesh.shell_id[s]).second) {
+      throw InputError(
+          where, "generated shell id " + std::to_string(mesh.shell_id[s]) + " already exists");
+    }
+  }
+  mesh_sources.push_back({first_hex, mesh.hex_count(), where, first_shell, mesh.shell_count()});
 }
 
 void DeckReader::add_node(std::int64_t id, const Vec3& p, std::uint8_t fixed,
@@ -295,6 +302,21 @@ void DeckReader::add_element(std::int64_t id, std::int64_t part,
 
 SourceLocation DeckReader::element_where(const ElementNodes& e, const std::string& field) const {
   return {files[e.file], e.line, "*ELEMENT_SOLID", field};
+}
+
+void DeckReader::add_shell(std::int64_t id, std::int64_t part,
+                           const std::array<std::int64_t, 4>& node_ids,
+                           const SourceLocation& where) {
+  if (!shell_ids_.insert(id).second) {
+    throw InputError(where, "shell " + std::to_string(id) + " is already defined");
+  }
+  Mesh& mesh = model.mesh;
+  shell_nodes.push_back({mesh.shell_count(), node_ids, files.size() - 1, where.line});
+  mesh.add_shell(id, part, {-1, -1, -1, -1});
+}
+
+SourceLocation DeckReader::shell_where(const ShellNodes& e, const std::string& field) const {
+  return {files[e.file], e.line, "*ELEMENT_SHELL", field};
 }
 
 void DeckReader::claim_id(const std::string& kind, std::int64_t id, const SourceLocation& where) {

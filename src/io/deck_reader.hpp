@@ -53,10 +53,28 @@ struct ElementNodes {
   std::size_t line = 0;
 };
 
-// The command that created hexes [first, end), to name it when a hex's part is missing.
+// *ELEMENT_SHELL rows, resolved like ElementNodes. A triangle has node_ids[3] == node_ids[2].
+struct ShellNodes {
+  std::size_t shell = 0;
+  std::array<std::int64_t, 4> node_ids{};
+  std::size_t file = 0;
+  std::size_t line = 0;
+};
+
+// The command that created hexes [first, end) and shells [first_shell, end_shell), to name it
+// when an element's part is missing.
 struct MeshSource {
   std::size_t first = 0, end = 0;
   SourceLocation where;
+  std::size_t first_shell = 0, end_shell = 0;
+};
+
+// *PART_SHELL, applied once every *PART is known.
+struct PendingPartShell {
+  std::int64_t part = 0;
+  int points = 5;
+  double hourglass = 0.05;
+  SourceLocation where;  // the pid field
 };
 
 struct PendingNodeSet {
@@ -137,6 +155,13 @@ class DeckReader {
   void add_element(std::int64_t id, std::int64_t part, const std::array<std::int64_t, 8>& node_ids,
                    const SourceLocation& where);
   SourceLocation element_where(const ElementNodes& e, const std::string& field) const;
+  // Adds one shell of *ELEMENT_SHELL (nodes resolved later); shell ids are their own namespace.
+  void add_shell(std::int64_t id, std::int64_t part, const std::array<std::int64_t, 4>& node_ids,
+                 const SourceLocation& where);
+  SourceLocation shell_where(const ShellNodes& e, const std::string& field) const;
+  // deck_finalize_shells.cpp: shell nodes, areas, parts, *PART_SHELL, and the commands that do
+  // not take shell parts yet. Part ids must have been checked to exist.
+  void resolve_shells();
   // Records an id of a kind (e.g. "component"); a second use is an error naming the first.
   void claim_id(const std::string& kind, std::int64_t id, const SourceLocation& where);
   // Index of a node id, or -1.
@@ -155,6 +180,9 @@ class DeckReader {
   std::vector<FunctionBinding> function_bindings;
   std::vector<IdReference> geometry_references;  // gids that must exist
   std::vector<ElementNodes> element_nodes;
+  std::vector<ShellNodes> shell_nodes;
+  std::vector<PendingPartShell> part_shells;
+  std::set<std::int64_t> parts_with_thickness;  // *PART rows that give h
   std::vector<MeshSource> mesh_sources;
   std::vector<PendingNodeSet> node_sets;
   std::vector<std::pair<std::int64_t, SourceLocation>> part_set_members;  // (part id, where)
@@ -174,7 +202,7 @@ class DeckReader {
   std::vector<IncludeFrame> frames_{IncludeFrame{}};
   std::vector<std::string> include_stack_;
   std::unordered_map<std::int64_t, std::int32_t> node_index_;
-  std::set<std::int64_t> hex_ids_;
+  std::set<std::int64_t> hex_ids_, shell_ids_;
   std::map<std::pair<std::string, std::int64_t>, SourceLocation> claimed_ids_;
 };
 
@@ -188,6 +216,9 @@ void read_time(DeckReader&, Block&);
 void read_output(DeckReader&, Block&);
 void read_node(DeckReader&, Block&);
 void read_element_solid(DeckReader&, Block&);
+void read_element_shell(DeckReader&, Block&);
+void read_component_shell_plate(DeckReader&, Block&);
+void read_component_shell_tube(DeckReader&, Block&);
 void read_component_box(DeckReader&, Block&);
 void read_component_sphere(DeckReader&, Block&);
 void read_component_cylinder(DeckReader&, Block&);
@@ -199,6 +230,7 @@ void read_mat_rigid(DeckReader&, Block&);
 void read_mat_metal(DeckReader&, Block&);
 void read_mat_jc(DeckReader&, Block&);
 void read_part(DeckReader&, Block&);
+void read_part_shell(DeckReader&, Block&);
 void read_set_node(DeckReader&, Block&);
 void read_set_part(DeckReader&, Block&);
 void read_initial_velocity(DeckReader&, Block&);
@@ -249,6 +281,10 @@ T word_choice(const Row& r, std::size_t i, T fallback,
     if (w == c.word) return c.value;
   r.fail(i, "expected " + expected + ", got '" + r.text(i) + "'");
 }
+
+// "1, 2, 5" (the first 20 ids) or "none", for messages that say what exists (deck_finalize.cpp).
+std::string joined(const std::set<std::int64_t>& ids);
+SourceLocation with_field(SourceLocation where, const std::string& field);
 
 // deck_catalogue.cpp: the supported keywords, the other IMPETUS keywords, suggestions.
 KeywordReader find_keyword_reader(const std::string& keyword);

@@ -1,4 +1,4 @@
-// *MAT_ELASTIC, *MAT_MOONEY_RIVLIN, *MAT_RIGID, *MAT_METAL, *MAT_JC, *PART.
+// *MAT_ELASTIC, *MAT_MOONEY_RIVLIN, *MAT_RIGID, *MAT_METAL, *MAT_JC, *PART, *PART_SHELL.
 #include "deck_reader.hpp"
 
 namespace abut::deck {
@@ -109,7 +109,12 @@ void read_part(DeckReader& d, Block& b) {
     part.material_id = d.material_id(r, 1);
     part.where = r.where();
     unused_field(r, 2);
-    r.unsupported_unless(3, 1.0, "a thickness h (shells and rebars)");
+    // Shells need h given (checked once the mesh is in); hexahedra ignore it.
+    if (r.given(3)) {
+      part.thickness = r.number(3);
+      r.require(part.thickness > 0.0, 3, "expected a thickness h > 0");
+      d.parts_with_thickness.insert(part.id);
+    }
     const double alpha_max = r.number_or(4, 0.0);
     r.require(alpha_max >= 0.0 && alpha_max <= 180.0, 4,
               "expected a smoothing angle in [0, 180] degrees (0: off)");
@@ -126,6 +131,24 @@ void read_part(DeckReader& d, Block& b) {
     part.erosion.max_volumetric_strain = r.number_or(7, 1e20);
     r.require(part.erosion.max_volumetric_strain > 0.0, 7, "expected a strain > 0 (1e20: off)");
     d.model.parts.push_back(part);
+  }
+}
+
+void read_part_shell(DeckReader& d, Block& b) {
+  if (b.done()) throw InputError(b.where(), "missing data line: expected pid, nip, q_hg");
+  while (!b.done()) {
+    const Row r = b.row({"pid", "nip", "q_hg"});
+    PendingPartShell s;
+    s.part = d.part_id(r, 0);
+    s.where = r.where(0);
+    d.claim_id("*PART_SHELL of part", s.part, s.where);
+    const std::int64_t points = r.integer_or(1, 5);
+    r.require(points >= 1 && points <= 9 && points % 2 == 1, 1,
+              "expected an odd number of integration points through the thickness, 1 to 9");
+    s.points = static_cast<int>(points);
+    s.hourglass = r.number_or(2, 0.05);
+    r.require(s.hourglass >= 0.0, 2, "expected a hourglass coefficient >= 0");
+    d.part_shells.push_back(s);
   }
 }
 

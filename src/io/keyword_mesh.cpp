@@ -1,5 +1,5 @@
-// *NODE, *ELEMENT_SOLID, *COMPONENT_BOX, *COMPONENT_SPHERE, *COMPONENT_CYLINDER,
-// *CHANGE_P-ORDER, *SMOOTH_MESH.
+// *NODE, *ELEMENT_SOLID, *ELEMENT_SHELL, *COMPONENT_BOX, *COMPONENT_SPHERE, *COMPONENT_CYLINDER,
+// *COMPONENT_SHELL_PLATE, *COMPONENT_SHELL_TUBE, *CHANGE_P-ORDER, *SMOOTH_MESH.
 #include <algorithm>
 
 #include "abut/mesh/generators.hpp"
@@ -59,6 +59,33 @@ void read_element_solid(DeckReader& d, Block& b) {
     // A mirrored hex is inside out; exchanging its bottom and top faces turns it right side out.
     if (d.frame().transform.mirrors()) std::rotate(nodes.begin(), nodes.begin() + 4, nodes.end());
     d.add_element(d.element_id(r, 0), d.part_id(r, 1), nodes, r.where());
+  }
+}
+
+void read_element_shell(DeckReader& d, Block& b) {
+  while (!b.done()) {
+    const Row r = b.row({"eid", "pid", "n1", "n2", "n3", "n4"});
+    std::array<std::int64_t, 4> nodes{};
+    for (std::size_t k = 0; k < 3; ++k) nodes[k] = d.node_id(r, k + 2);
+    // A triangle: n4 empty, 0 or n3.
+    const bool triangle = !r.given(5) || r.integer(5) == 0;
+    nodes[3] = triangle ? nodes[2] : d.node_id(r, 5);
+    for (std::size_t k = 1; k < 4; ++k) {
+      for (std::size_t j = 0; j < k; ++j) {
+        const bool triangle_form = k == 3 && j == 2;
+        r.require(nodes[k] != nodes[j] || triangle_form, k + 2,
+                  "node " + std::to_string(nodes[k]) + " repeats n" + std::to_string(j + 1) +
+                      ": a shell has 4 different nodes, or 3 with n4 empty, 0 or equal to n3 "
+                      "(triangle)");
+      }
+    }
+    // Mirrored, the node order is reversed so that the shell normal is the mirror image of the
+    // given one (a closed surface keeps its outward normals).
+    if (d.frame().transform.mirrors()) {
+      nodes = nodes[3] == nodes[2] ? std::array{nodes[0], nodes[2], nodes[1], nodes[1]}
+                                   : std::array{nodes[0], nodes[3], nodes[2], nodes[1]};
+    }
+    d.add_shell(d.element_id(r, 0), d.part_id(r, 1), nodes, r.where());
   }
 }
 
@@ -137,6 +164,59 @@ void read_component_cylinder(DeckReader& d, Block& b) {
   c.radius1 = s * r_1;
   c.radius2 = s * r_2;
   d.generate([&] { generate_cylinder(d.model.mesh, c); }, b.where());
+}
+
+void read_component_shell_plate(DeckReader& d, Block& b) {
+  b.title();
+  const Row r1 = b.row({"coid", "pid", "n1", "n2"});
+  const Row r2 = b.row({"x0", "y0", "z0", "x1", "y1", "z1"});
+  const Row r3 = b.row({"x2", "y2", "z2"});
+  ShellPlateComponent c;
+  c.part_id = component_part(d, r1);
+  c.n1 = element_count(r1, 2);
+  c.n2 = element_count(r1, 3);
+  c.p0 = d.frame().transform.point(point(r2, 0));
+  c.p1 = d.frame().transform.point(point(r2, 3));
+  c.p2 = d.frame().transform.point(point(r3, 0));
+  // Mirrored, p1 and p2 exchange so that the normal is the mirror image of the given one.
+  if (d.frame().transform.mirrors()) {
+    std::swap(c.p1, c.p2);
+    std::swap(c.n1, c.n2);
+  }
+  d.generate([&] { generate_shell_plate(d.model.mesh, c); }, b.where());
+}
+
+void read_component_shell_tube(DeckReader& d, Block& b) {
+  b.title();
+  const Row r1 = b.row({"coid", "pid", "n_axial", "n_circ", "shape"});
+  const Row r2 = b.row({"x1", "y1", "z1", "x2", "y2", "z2"});
+  const Row r3 = b.row({"r"});
+  ShellTubeComponent c;
+  c.part_id = component_part(d, r1);
+  c.n_axial = element_count(r1, 2);
+  c.n_circ = element_count(r1, 3);
+  c.section = word_choice<TubeSection>(
+      r1, 4, TubeSection::Round, {{"ROUND", TubeSection::Round}, {"SQUARE", TubeSection::Square}},
+      "ROUND or SQUARE");
+  if (c.section == TubeSection::Square) {
+    r1.require(c.n_circ % 4 == 0, 3,
+               "a SQUARE tube needs a multiple of 4 elements around (a node at each corner)");
+  } else {
+    r1.require(c.n_circ >= 3, 3, "a ROUND tube needs at least 3 elements around");
+  }
+  const Vec3 e1 = point(r2, 0);
+  const Vec3 e2 = point(r2, 3);
+  r2.require(norm(e2 - e1) > 0.0, 3, "expected the second end centre to differ from the first");
+  const double radius = r3.number(0);
+  r3.require(radius > 0.0, 0, "expected a radius > 0");
+  const double s = uniform_scale(d, b.where(), "shell tube");
+  c.end1 = d.frame().transform.point(e1);
+  c.end2 = d.frame().transform.point(e2);
+  c.radius = s * radius;
+  // The section's frame is chosen in the included file's own axes and then placed with it, so a
+  // rotated include rotates a square tube with its content.
+  c.side_direction = d.frame().transform.linear(tube_side_direction(normalized(e2 - e1), {}));
+  d.generate([&] { generate_shell_tube(d.model.mesh, c); }, b.where());
 }
 
 void read_change_p_order(DeckReader& d, Block& b) {

@@ -23,14 +23,23 @@ namespace {
 namespace fs = std::filesystem;
 
 // Writes one ParaView state of the simulation. `failed` marks the last good state of an
-// unstable run: positions from before the failing step, stresses left out.
+// unstable run: positions from before the failing step, stresses left out. Cells are the
+// hexahedra, then the shells; every cell field holds the hex values, then the shell values.
 class StateWriter {
  public:
   StateWriter(const fs::path& dir, const Model& model)
       : dir_(dir), model_(model), series_(dir / "results.pvd") {
     fs::create_directories(dir / "states");
-    part_id_.reserve(model.mesh.hex_count());
-    for (const std::int64_t p : model.mesh.hex_part) part_id_.push_back(static_cast<double>(p));
+    const Mesh& mesh = model.mesh;
+    part_id_.reserve(mesh.hex_count() + mesh.shell_count());
+    for (const std::int64_t p : mesh.hex_part) part_id_.push_back(static_cast<double>(p));
+    for (const std::int64_t p : mesh.shell_part) part_id_.push_back(static_cast<double>(p));
+    // Hexahedra have no thickness: 0 tells them apart from shells in ParaView.
+    thickness_.assign(mesh.hex_count(), 0.0);
+    for (const std::int64_t p : mesh.shell_part) {
+      const Part* part = model.find_part(p);  // a deck's shell parts exist; a built model's may not
+      thickness_.push_back(part ? part->thickness : 0.0);
+    }
   }
 
   void write(const Simulation& sim, bool failed) {
@@ -54,7 +63,7 @@ class StateWriter {
     }
     std::vector<FieldView> point_fields{{"displacement", 3, displacement_},
                                         {"velocity", 3, velocity_}};
-    std::vector<FieldView> cell_fields{{"part_id", 1, part_id_}};
+    std::vector<FieldView> cell_fields{{"part_id", 1, part_id_}, {"thickness", 1, thickness_}};
     if (sim.has_contact()) {
       sim.contact_fields(contact_force_, contact_pressure_, wear_);
       point_fields.push_back({"contact_force", 3, contact_force_});
@@ -65,17 +74,34 @@ class StateWriter {
       sim.von_mises_stress(von_mises_);
       sim.pressure(pressure_);
       sim.plastic_strain(plastic_strain_);
+      // Shells: the largest values over their through-thickness points; no pressure (plane
+      // stress), written as 0 so that every cell has every field.
+      sim.shell_von_mises_stress(shell_values_);
+      von_mises_.insert(von_mises_.end(), shell_values_.begin(), shell_values_.end());
+      pressure_.resize(pressure_.size() + model_.mesh.shell_count(), 0.0);
+      sim.shell_plastic_strain(shell_values_);
+      plastic_strain_.insert(plastic_strain_.end(), shell_values_.begin(), shell_values_.end());
       cell_fields.push_back({"von_mises_stress", 1, von_mises_});
       cell_fields.push_back({"pressure", 1, pressure_});
       cell_fields.push_back({"plastic_strain", 1, plastic_strain_});
     }
     // Eroded elements disappear from the states.
     std::span<const Hex8> hexes = model_.mesh.hexes;
-    const std::vector<std::uint8_t> eroded = sim.eroded_hexes();
+    std::span<const Quad4> shells = model_.mesh.shells;
+    std::vector<std::uint8_t> eroded = sim.eroded_hexes();
+    const std::vector<std::uint8_t> eroded_shells = sim.eroded_shells();
+    eroded.insert(eroded.end(), eroded_shells.begin(), eroded_shells.end());
     if (std::find(eroded.begin(), eroded.end(), std::uint8_t{1}) != eroded.end()) {
+      const std::size_t hex_count = model_.mesh.hex_count();
       alive_hexes_.clear();
-      for (std::size_t e = 0; e < eroded.size(); ++e)
-        if (!eroded[e]) alive_hexes_.push_back(model_.mesh.hexes[e]);
+      alive_shells_.clear();
+      for (std::size_t e = 0; e < eroded.size(); ++e) {
+        if (eroded[e]) continue;
+        if (e < hex_count)
+          alive_hexes_.push_back(model_.mesh.hexes[e]);
+        else
+          alive_shells_.push_back(model_.mesh.shells[e - hex_count]);
+      }
       alive_values_.resize(cell_fields.size());
       for (std::size_t k = 0; k < cell_fields.size(); ++k) {
         alive_values_[k].clear();
@@ -86,9 +112,10 @@ class StateWriter {
         cell_fields[k].values = alive_values_[k];
       }
       hexes = alive_hexes_;
+      shells = alive_shells_;
     }
     const std::string name = fmt::format("states/state_{:04d}.vtu", series_.size());
-    const HexGridView grid{x, y, z, hexes};
+    const HexGridView grid{x, y, z, hexes, shells};
     write_vtu(dir_ / name, grid, point_fields, cell_fields);
     series_.add(time, name);
     last_time_ = time;
@@ -102,9 +129,11 @@ class StateWriter {
   const Model& model_;
   PvdSeries series_;
   double last_time_ = 0.0;
-  std::vector<double> displacement_, velocity_, part_id_, von_mises_, pressure_, plastic_strain_;
+  std::vector<double> displacement_, velocity_, part_id_, thickness_, von_mises_, pressure_,
+      plastic_strain_, shell_values_;
   std::vector<double> contact_force_, contact_pressure_, wear_;
   std::vector<Hex8> alive_hexes_;
+  std::vector<Quad4> alive_shells_;
   std::vector<std::vector<double>> alive_values_;
 };
 
@@ -181,6 +210,7 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
   json.member("threads", threads);
   json.member("nodes", static_cast<std::int64_t>(model.mesh.nodes.size()));
   json.member("elements", static_cast<std::int64_t>(model.mesh.hex_count()));
+  json.member("shells", static_cast<std::int64_t>(model.mesh.shell_count()));
   json.member("ns_per_element_cycle", report.ns_per_element_cycle);
   json.member("contact_share_of_wall_time",
               report.wall_seconds > 0 ? sim.contact_seconds() / report.wall_seconds : 0.0);
@@ -255,9 +285,10 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
   const double history_interval =
       model.output.history_interval > 0 ? model.output.history_interval : span / 1000.0;
   log << fmt::format(
-      "abut: {} nodes, {} hexahedra, {} parts; end time {:.4g}, initial time step {:.4g} ({})\n",
-      model.mesh.nodes.size(), model.mesh.hex_count(), model.parts.size(), t_end,
-      sim.initial_time_step(), sim.time_step_limit());
+      "abut: {} nodes, {} hexahedra, {} shells, {} parts; end time {:.4g}, initial time step "
+      "{:.4g} ({})\n",
+      model.mesh.nodes.size(), model.mesh.hex_count(), model.mesh.shell_count(), model.parts.size(),
+      t_end, sim.initial_time_step(), sim.time_step_limit());
   const std::string initial_limit = sim.time_step_limit();
   for (const ContactReport& c : sim.contact_reports()) {
     log << fmt::format("abut: contact {}", c.id) << (c.title.empty() ? "" : " \"" + c.title + "\"")
@@ -299,7 +330,8 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
   report.end_time = sim.time();
   report.cycles = sim.cycle();
   const double element_cycles =
-      static_cast<double>(model.mesh.hex_count()) * static_cast<double>(report.cycles);
+      static_cast<double>(model.mesh.hex_count() + model.mesh.shell_count()) *
+      static_cast<double>(report.cycles);
   report.ns_per_element_cycle =
       element_cycles > 0 ? 1e9 * report.wall_seconds / element_cycles : 0.0;
   report.energy_balance_error = sim.energy_balance_error();

@@ -110,7 +110,19 @@ void check_grid(const HexGridView& grid) {
       }
     }
   }
+  for (std::size_t e = 0; e < grid.shells.size(); ++e) {
+    for (const std::int32_t node : grid.shells[e]) {
+      if (node < 0 || static_cast<std::size_t>(node) >= n) {
+        throw std::invalid_argument("write_vtu: shell " + std::to_string(e) +
+                                    " refers to node index " + std::to_string(node) + " of " +
+                                    std::to_string(n) + " points");
+      }
+    }
+  }
 }
+
+// Nodes a shell cell lists: 3 for a triangle (n4 == n3), else 4.
+std::size_t shell_corners(const Quad4& shell) { return is_triangle(shell) ? 3 : 4; }
 
 void write_fields(std::ofstream& out, std::string_view tag, std::span<const FieldView> fields) {
   out << "      <" << tag << ">\n";
@@ -146,7 +158,9 @@ void write_vtu(const std::filesystem::path& path, const HexGridView& grid,
                std::span<const FieldView> point_fields, std::span<const FieldView> cell_fields) {
   check_grid(grid);
   const std::size_t points = grid.x.size();
-  const std::size_t cells = grid.hexes.size();
+  const std::size_t cells = grid.hexes.size() + grid.shells.size();
+  std::size_t connectivity = 8 * grid.hexes.size();
+  for (const Quad4& shell : grid.shells) connectivity += shell_corners(shell);
   for (const FieldView& f : point_fields) check_field(f, points, "point");
   for (const FieldView& f : cell_fields) check_field(f, cells, "cell");
 
@@ -172,19 +186,24 @@ void write_vtu(const std::filesystem::path& path, const HexGridView& grid,
     out << "      </Points>\n";
 
     out << "      <Cells>\n";
-    write_data_array<std::int64_t>(out, "Int64", "connectivity", 1, 8 * cells,
+    write_data_array<std::int64_t>(out, "Int64", "connectivity", 1, connectivity,
                                    [&](Base64Stream& s) {
-                                     for (const Hex8& hex : grid.hexes) {
-                                       for (const std::int32_t node : hex) {
+                                     for (const Hex8& hex : grid.hexes)
+                                       for (const std::int32_t node : hex)
                                          s.put(static_cast<std::int64_t>(node));
-                                       }
-                                     }
+                                     for (const Quad4& shell : grid.shells)
+                                       for (std::size_t k = 0; k < shell_corners(shell); ++k)
+                                         s.put(static_cast<std::int64_t>(shell[k]));
                                    });
     write_data_array<std::int64_t>(out, "Int64", "offsets", 1, cells, [&](Base64Stream& s) {
-      for (std::size_t e = 1; e <= cells; ++e) s.put(static_cast<std::int64_t>(8 * e));
+      std::int64_t offset = 0;
+      for (std::size_t e = 0; e < grid.hexes.size(); ++e) s.put(offset += 8);
+      for (const Quad4& shell : grid.shells)
+        s.put(offset += static_cast<std::int64_t>(shell_corners(shell)));
     });
     write_data_array<std::uint8_t>(out, "UInt8", "types", 1, cells, [&](Base64Stream& s) {
-      for (std::size_t e = 0; e < cells; ++e) s.put(kVtkHexahedron);
+      for (std::size_t e = 0; e < grid.hexes.size(); ++e) s.put(kVtkHexahedron);
+      for (const Quad4& shell : grid.shells) s.put(is_triangle(shell) ? kVtkTriangle : kVtkQuad);
     });
     out << "      </Cells>\n";
 

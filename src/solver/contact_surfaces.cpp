@@ -25,7 +25,26 @@ ContactSurface contact_surface(const Mesh& mesh, std::span<const SkinFace> faces
   return s;
 }
 
+void require_solid_surface(const Model& model, const EntityRef& entity) {
+  const bool of_parts = entity.type == EntityType::Part || entity.type == EntityType::PartSet ||
+                        entity.type == EntityType::All;
+  if (model.mesh.shell_count() == 0 || !of_parts) return;
+  const std::vector<std::int64_t> parts = model.parts_of(entity);
+  for (std::size_t s = 0; s < model.mesh.shell_count(); ++s) {
+    const std::int64_t part = model.mesh.shell_part[s];
+    if (std::find(parts.begin(), parts.end(), part) == parts.end()) continue;
+    throw InputError(
+        entity.where,
+        (entity.type == EntityType::All ? "ALL includes part " : "part ") + std::to_string(part) +
+            ", which has shells: shell parts as contact surfaces come with shell contact (not "
+            "supported yet by abut). Use the part's nodes as secondary nodes of a node-to-surface "
+            "contact instead: list them in a *SET_NODE, give that set as surface 1 (entype NS) of "
+            "the *CONTACT and add *CONTACT_DISCRETIZATION with method N2S for it");
+  }
+}
+
 std::vector<SkinFace> contact_faces(const Model& model, const EntityRef& entity, bool merge) {
+  require_solid_surface(model, entity);
   std::vector<SkinFace> faces;
   if (entity.type == EntityType::All) {
     faces = exterior_faces(model.mesh, merge);

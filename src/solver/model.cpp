@@ -119,6 +119,11 @@ std::vector<std::int32_t> Model::nodes_of(const EntityRef& entity) const {
           nodes.insert(nodes.end(), mesh.hexes[h].begin(), mesh.hexes[h].end());
         }
       }
+      for (std::size_t s = 0; s < mesh.shell_count(); ++s) {
+        if (std::find(ids.begin(), ids.end(), mesh.shell_part[s]) != ids.end()) {
+          nodes.insert(nodes.end(), mesh.shells[s].begin(), mesh.shells[s].end());
+        }
+      }
       break;
     }
     case EntityType::All:

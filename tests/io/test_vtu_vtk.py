@@ -1,12 +1,15 @@
 #!/usr/bin/env python3
 """Reads abut's VTU/PVD output back with VTK's own XML reader.
 
-The files come from the GoogleTest VtuWriter.WritesTwoHexSeriesForParaView, which this script
-runs itself (in a temporary directory) so that it does not depend on the order of the tests.
+The files come from the GoogleTests VtuWriter.WritesTwoHexSeriesForParaView and
+VtuWriter.WritesHexesThenShellsForParaView, which this script runs itself (in a temporary
+directory) so that it does not depend on the order of the tests.
 That test writes two unit hexahedra side by side along x, at t = 0 and, sheared by x += 0.25 z,
 at t = 0.001, with point fields velocity = (1 + x, 2 y, -3 z) and
 temperature = 300 + 10 x + y + 0.5 z, and cell fields part = (1, 2) and center = the mean of
-each cell's points. Those formulas are evaluated here on the points VTK read.
+each cell's points. Those formulas are evaluated here on the points VTK read. The second test
+writes shells.vtu: the two unit hexahedra, then a unit quad shell on the top face of the first
+and a triangle (area 1/2) on the top face of the second, with a cell field thickness.
 
 VTK's vtkPVDReader belongs to ParaView, not to VTK, so the .pvd is parsed with xml.etree.
 Exit code 0 on success, 1 on failure.
@@ -18,11 +21,11 @@ import tempfile
 import xml.etree.ElementTree as ET
 
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
-from vtkmodules.vtkCommonDataModel import VTK_HEXAHEDRON
+from vtkmodules.vtkCommonDataModel import VTK_HEXAHEDRON, VTK_QUAD, VTK_TRIANGLE
 from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
-GTEST = "VtuWriter.WritesTwoHexSeriesForParaView"
+GTEST = "VtuWriter.WritesTwoHexSeriesForParaView:VtuWriter.WritesHexesThenShellsForParaView"
 TOL = 1e-12
 
 
@@ -49,7 +52,7 @@ def produce_files(workdir):
     run = subprocess.run([exe, f"--gtest_filter={GTEST}"], cwd=workdir, env=env,
                          capture_output=True, text=True, timeout=120)
     check(run.returncode == 0, f"{GTEST} failed:\n{run.stdout}\n{run.stderr}")
-    check("[  PASSED  ] 1 test" in run.stdout, f"{GTEST} did not run:\n{run.stdout}")
+    check("[  PASSED  ] 2 tests" in run.stdout, f"{GTEST} did not run:\n{run.stdout}")
     return out_dir
 
 
@@ -110,6 +113,22 @@ def check_state(grid, name, shear):
         check(close(center.GetTuple(c), mean), f"{name}: center of cell {c}")
 
 
+def check_shells(grid):
+    check(grid.GetNumberOfCells() == 4, f"shells.vtu: {grid.GetNumberOfCells()} cells, expected 4")
+    types = [grid.GetCellType(c) for c in range(4)]
+    check(types == [VTK_HEXAHEDRON, VTK_HEXAHEDRON, VTK_QUAD, VTK_TRIANGLE],
+          f"shells.vtu: cell types {types}")
+    sizes = vtkCellSizeFilter()
+    sizes.SetInputData(grid)
+    sizes.Update()
+    out = sizes.GetOutput().GetCellData()
+    areas = [out.GetArray("Area").GetValue(c) for c in (2, 3)]
+    check(close(areas, [1.0, 0.5]), f"shells.vtu: shell areas {areas}, expected 1 and 0.5")
+    thickness = grid.GetCellData().GetArray("thickness")
+    values = [thickness.GetValue(c) for c in range(4)]
+    check(close(values, [0.0, 0.0, 0.01, 0.02]), f"shells.vtu: thickness {values}")
+
+
 def main():
     log = vtkStringOutputWindow()
     vtkOutputWindow.SetInstance(log)
@@ -120,8 +139,9 @@ def main():
               f"pvd lists {series}")
         for (time, file), shear in zip(series, (0.0, 0.25)):
             check_state(read_vtu(os.path.join(out_dir, file), log), file, shear)
+        check_shells(read_vtu(os.path.join(out_dir, "shells.vtu"), log))
     print("PASS: VTK reads the 2-state series: 12 points, 2 hexahedra of volume 1, "
-          "fields velocity, temperature, part, center")
+          "fields velocity, temperature, part, center; and hexahedra, a quad and a triangle")
 
 
 if __name__ == "__main__":

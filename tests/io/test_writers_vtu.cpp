@@ -1,6 +1,7 @@
-// VTU and PVD output. VtuWriter.WritesTwoHexSeriesForParaView also produces the files that
-// tests/io/test_vtu_vtk.py reads back with VTK's own reader; it writes them to the directory in
-// the environment variable ABUT_TEST_OUTPUT_DIR, or to ./test_io_output.
+// VTU and PVD output. VtuWriter.WritesTwoHexSeriesForParaView and
+// VtuWriter.WritesHexesThenShellsForParaView also produce the files that tests/io/test_vtu_vtk.py
+// reads back with VTK's own reader; they write them to the directory in the environment variable
+// ABUT_TEST_OUTPUT_DIR, or to ./test_io_output.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -90,7 +91,8 @@ struct TwoHexes {
                        n(i + 1, 0, 1), n(i + 1, 1, 1), n(i, 1, 1)});
     }
   }
-  HexGridView view() const { return {x, y, z, hexes}; }
+  std::vector<Quad4> shells;
+  HexGridView view() const { return {x, y, z, hexes, shells}; }
 };
 
 std::filesystem::path output_dir() {
@@ -166,6 +168,35 @@ TEST(VtuWriter, WritesTwoHexSeriesForParaView) {
   ASSERT_EQ(velocity.size(), 36u);
   EXPECT_EQ(velocity[3 * 11], 1.0 + sheared.x[11]);
   EXPECT_EQ(velocity[3 * 11 + 2], -3.0 * sheared.z[11]);
+}
+
+// The two hexes with a quad shell on the top face of the first (normal +z) and a triangle on the
+// top face of the second; test_vtu_vtk.py reads shells.vtu and checks the cells and their areas.
+TEST(VtuWriter, WritesHexesThenShellsForParaView) {
+  TwoHexes mesh(0.0);
+  mesh.shells.push_back({6, 7, 10, 9});
+  mesh.shells.push_back({7, 8, 11, 11});
+  const std::vector<double> part{1.0, 1.0, 2.0, 3.0}, thickness{0.0, 0.0, 0.01, 0.02};
+  const FieldView cell_fields[] = {{"part_id", 1, part}, {"thickness", 1, thickness}};
+  const auto path = output_dir() / "shells.vtu";
+  write_vtu(path, mesh.view(), {}, cell_fields);
+  const std::string vtu = file_text(path);
+  EXPECT_NE(vtu.find("<Piece NumberOfPoints=\"12\" NumberOfCells=\"4\">"), std::string::npos);
+  const auto connectivity = data_array<std::int64_t>(vtu, "connectivity");
+  ASSERT_EQ(connectivity.size(), 16u + 4u + 3u);
+  EXPECT_EQ(std::vector<std::int64_t>(connectivity.begin() + 16, connectivity.end()),
+            (std::vector<std::int64_t>{6, 7, 10, 9, 7, 8, 11}));
+  EXPECT_EQ(data_array<std::int64_t>(vtu, "offsets"), (std::vector<std::int64_t>{8, 16, 20, 23}));
+  EXPECT_EQ(data_array<std::uint8_t>(vtu, "types"),
+            (std::vector<std::uint8_t>{kVtkHexahedron, kVtkHexahedron, kVtkQuad, kVtkTriangle}));
+  EXPECT_EQ(data_array<double>(vtu, "thickness"), thickness);
+
+  const std::vector<double> hexes_only{1.0, 1.0};
+  const FieldView short_field[] = {{"part_id", 1, hexes_only}};
+  EXPECT_THROW(write_vtu(output_dir() / "bad.vtu", mesh.view(), {}, short_field),
+               std::invalid_argument);
+  mesh.shells[1][3] = 12;  // one past the last node
+  EXPECT_THROW(write_vtu(output_dir() / "bad.vtu", mesh.view(), {}, {}), std::invalid_argument);
 }
 
 TEST(VtuWriter, RejectsInconsistentInput) {

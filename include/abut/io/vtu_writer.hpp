@@ -1,5 +1,6 @@
 #pragma once
-// ParaView output: one VTK XML UnstructuredGrid file (.vtu) of 8-node hexahedra per state, and a
+// ParaView output: one VTK XML UnstructuredGrid file (.vtu) of 8-node hexahedra and 4-node shells
+// (quads, and triangles where n4 == n3) per state, and a
 // ParaView data collection (.pvd) that lists the states with their times.
 //
 // Format: VTK XML file format version 1.0 (docs.vtk.org, "VTK File Formats", XML section), every
@@ -16,21 +17,26 @@
 
 namespace abut {
 
-// VTK's cell type id of the 8-node hexahedron (vtkCellType.h: VTK_HEXAHEDRON = 12).
+// VTK's cell type ids (vtkCellType.h: VTK_HEXAHEDRON = 12, VTK_QUAD = 9, VTK_TRIANGLE = 5).
 inline constexpr unsigned char kVtkHexahedron = 12;
+inline constexpr unsigned char kVtkQuad = 9;
+inline constexpr unsigned char kVtkTriangle = 5;
 
 // Base64 encoding with the standard alphabet and '=' padding (RFC 4648, section 4).
 std::string base64_encode(std::span<const std::byte> bytes);
 
-// Points (structure of arrays, as abut::Nodes) and hexahedra by node index.
+// Points (structure of arrays, as abut::Nodes), hexahedra and shells by node index. The cells of
+// the file are the hexahedra, then the shells (a shell with n4 == n3 is written as a triangle), so
+// cell fields hold the hex values first, then the shell values.
 struct HexGridView {
   std::span<const double> x, y, z;
   std::span<const Hex8> hexes;
+  std::span<const Quad4> shells;
 };
 
 // The mesh in its reference configuration.
 inline HexGridView hex_grid(const Mesh& mesh) {
-  return {mesh.nodes.x, mesh.nodes.y, mesh.nodes.z, mesh.hexes};
+  return {mesh.nodes.x, mesh.nodes.y, mesh.nodes.z, mesh.hexes, mesh.shells};
 }
 
 // One named output field: `components` values per point (or per cell), interleaved, so a vector

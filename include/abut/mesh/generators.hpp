@@ -4,10 +4,12 @@
 // mesh.next_hex_id()) to `mesh` and records the component's exact shape, so that later
 // refinement (*CHANGE_P-ORDER) places new boundary nodes on the true geometry.
 // Throws InputError (no location; the deck reader adds it) on invalid dimensions or counts.
+// Shell components (*COMPONENT_SHELL_PLATE, *COMPONENT_SHELL_TUBE): shell_generators.hpp.
 #include <cstdint>
 
 #include "abut/core/vec3.hpp"
 #include "abut/mesh/mesh.hpp"
+#include "abut/mesh/shell_generators.hpp"
 
 namespace abut {
 
