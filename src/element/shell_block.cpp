@@ -66,7 +66,8 @@ struct ShellBlock::Impl {
   std::vector<double> reference_area;
   std::vector<double> reference_b;  // erosion strain: b1, b2 of the reference frame, 8 per element
   std::vector<double> stress;       // 6 per point
-  std::vector<double> plastic;      // 1 per point (metals)
+  std::vector<PointHistory> history;  // 1 per point (metals)
+  bool fails_by_damage = false;       // erodes when every thickness point has failed
   std::vector<double> hourglass;    // 5 generalized hourglass forces per element
   std::vector<double> forces;       // 24 per element
   std::vector<double> internal_work, hourglass_work, stable;
@@ -188,9 +189,9 @@ void ShellBlock::Impl::element(std::size_t e, const ShellNodalState& s, double d
       const Sym3 old = rotate(turn, now);
       Sym3 increment{{dt * (dxx + zk * kxx), dt * (dyy + zk * kyy), 0.0,
                       0.5 * dt * (gxy + zk * kxy), 0.5 * dt * ks * gyz, 0.5 * dt * ks * gxz}};
-      double no_plasticity = 0.0;
+      PointHistory none;
       now = plane_stress_update(law, old, increment, dt,
-                                plastic.empty() ? no_plasticity : plastic[np * e + k]);
+                                history.empty() ? none : history[np * e + k]);
       work += wk * 0.5 * double_dot(add(old, now), increment);
       std::copy(now.c.begin(), now.c.end(), stored);
     }
@@ -306,9 +307,11 @@ void ShellBlock::Impl::erode(BlockStep& out) {
     if (eroded[e]) continue;
     element_internal[e] += internal_work[e];
     element_hourglass[e] += hourglass_work[e];
+    bool all_failed = fails_by_damage;
+    for (std::size_t k = 0; k < np && all_failed; ++k) all_failed = history[np * e + k].failed();
     const bool fails = stable[e] < erosion.min_step ||
                        geometric_strain[e] > erosion.max_geometric_strain ||
-                       area_ratio[e] - 1.0 > erosion.max_volumetric_strain;
+                       area_ratio[e] - 1.0 > erosion.max_volumetric_strain || all_failed;
     if (!fails) {
       out.stable_step = std::min(out.stable_step, stable[e]);
       continue;
@@ -376,7 +379,10 @@ ShellBlock::ShellBlock(std::int64_t part_id, const MaterialParams& material,
   }
   const std::size_t np = m.points();
   m.stress.assign(6 * np * n, 0.0);
-  if (std::holds_alternative<MetalParams>(material)) m.plastic.assign(np * n, 0.0);
+  if (const auto* metal = std::get_if<MetalParams>(&material)) {
+    m.history.assign(np * n, {});
+    m.fails_by_damage = metal->failure.active;
+  }
   m.hourglass.assign(5 * n, 0.0);
   m.forces.assign(24 * n, 0.0);
   m.internal_work.assign(n, 0.0);
@@ -433,7 +439,7 @@ BlockStep ShellBlock::update(const ShellNodalState& state, double dt) {
     throw InstabilityError(part_prefix(impl_->part_id) + "time step must be finite and >= 0");
   Impl& m = *impl_;
   if (const auto* metal = std::get_if<MetalParams>(&m.material))
-    return m.step(state, dt, MetalPoint{m.lame, FlowStress(*metal, m.functions)});
+    return m.step(state, dt, MetalPoint{m.lame, FlowStress(*metal, m.functions), metal->failure});
   return m.step(state, dt, ElasticPoint{m.lame});
 }
 
@@ -453,9 +459,10 @@ void ShellBlock::plastic_strain(std::vector<double>& out) const {
   const Impl& m = *impl_;
   const std::size_t np = m.points();
   out.assign(m.shells.size(), 0.0);
-  if (m.plastic.empty()) return;
+  if (m.history.empty()) return;
   for (std::size_t e = 0; e < m.shells.size(); ++e)
-    for (std::size_t k = 0; k < np; ++k) out[e] = std::max(out[e], m.plastic[np * e + k]);
+    for (std::size_t k = 0; k < np; ++k)
+      out[e] = std::max(out[e], m.history[np * e + k].plastic_strain);
 }
 
 void ShellBlock::resultants(std::size_t e, double n[3], double mm[3], double q[2]) const {
@@ -480,7 +487,7 @@ void ShellBlock::resultants(std::size_t e, double n[3], double mm[3], double q[2
 void ShellBlock::set_erosion(const ErosionCriteria& criteria) {
   Impl& m = *impl_;
   m.erosion = criteria;
-  if (!criteria.any()) return;
+  if (!criteria.any() && !m.fails_by_damage) return;
   const std::size_t n = m.shells.size();
   m.eroded.assign(n, 0);
   m.element_internal.assign(n, 0.0);

@@ -169,7 +169,8 @@ struct SolidBlock::Impl {
   std::vector<double> hourglass;       // generalized hourglass forces, 12 per element
   std::vector<double> forces;          // 24 per element
   std::vector<double> internal_work;   // per-element increments of the last step
-  std::vector<double> plastic_strain;  // equivalent plastic strain (metals)
+  std::vector<PointHistory> history;  // plastic strain and damage (metals)
+  bool fails_by_damage = false;       // a metal with a damage property: erodes at D >= 1
   ErosionCriteria erosion;
   std::vector<std::uint8_t> eroded;
   std::vector<double> element_internal, element_hourglass;  // cumulative work per element (erosion)
@@ -290,9 +291,8 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
   if constexpr (!std::is_same_v<Law, RubberLaw>) {  // hypoelastic point laws (point_law.hpp)
     now = old;
     if (dt > 0.0) {
-      double no_plasticity = 0.0;
-      now = law.update(rotated, strain_increment, dt,
-                       plastic_strain.empty() ? no_plasticity : plastic_strain[e]);
+      PointHistory none;
+      now = law.update(rotated, strain_increment, dt, history.empty() ? none : history[e]);
     }
   } else {
     // F = sum_a x_a (x) B0_a = sum_k c_k (x) R_k with R_k = 8 G0_k / V0 (hex8.hpp).
@@ -308,10 +308,10 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
     }
     now = mooney_rivlin_stress(*law.params, f);
     const Sym3 dev_increment = deviator(strain_increment);
-    double* history =
+    double* viscous_stress =
         viscous.data() + 6 * static_cast<std::size_t>(viscous_terms) * e;  // may be empty
     for (int k = 0; k < viscous_terms; ++k) {
-      double* hk = history + 6 * k;
+      double* hk = viscous_stress + 6 * k;
       Sym3 h{{hk[0], hk[1], hk[2], hk[3], hk[4], hk[5]}};
       if (dt > 0.0) {
         const Sym3 hr = rotate(rotation, h);
@@ -473,7 +473,8 @@ void SolidBlock::Impl::erode(BlockStep& out) {
     element_hourglass[e] += hourglass_work[e];
     const bool fails = stable[e] < erosion.min_step ||
                        geometric_strain[e] > erosion.max_geometric_strain ||
-                       volume_ratio[e] - 1.0 > erosion.max_volumetric_strain;
+                       volume_ratio[e] - 1.0 > erosion.max_volumetric_strain ||
+                       (fails_by_damage && history[e].failed());
     if (!fails) {
       out.stable_step = std::min(out.stable_step, stable[e]);
       continue;
@@ -553,7 +554,10 @@ SolidBlock::SolidBlock(std::int64_t part_id, const MaterialParams& material,
   m.hourglass.assign(12 * n, 0.0);
   m.forces.assign(24 * n, 0.0);
   m.internal_work.assign(n, 0.0);
-  if (std::holds_alternative<MetalParams>(material)) m.plastic_strain.assign(n, 0.0);
+  if (const auto* metal = std::get_if<MetalParams>(&material)) {
+    m.history.assign(n, {});
+    m.fails_by_damage = metal->failure.active;
+  }
   m.hourglass_work.assign(n, 0.0);
   m.stable.assign(n, 0.0);
   m.failure.assign(n, kOk);
@@ -594,7 +598,7 @@ BlockStep SolidBlock::update(const NodalState& state, double dt) {
   }
   if (const auto* metal = std::get_if<MetalParams>(&m.material)) {
     const LameConstants lame{m.lame_lambda, m.lame_mu};
-    return m.step(state, dt, MetalPoint{lame, FlowStress(*metal, m.functions)});
+    return m.step(state, dt, MetalPoint{lame, FlowStress(*metal, m.functions), metal->failure});
   }
   const auto& rubber = std::get<MooneyRivlinParams>(m.material);
   return m.step(state, dt, RubberLaw{&rubber, dt > 0.0 ? viscous_step(rubber, dt) : ViscousStep{}});
@@ -618,7 +622,7 @@ void SolidBlock::set_erosion(const ErosionCriteria& criteria) {
                      "erosion limits must be > 0 (the time step limit >= 0)");
   m.erosion = criteria;
   const std::size_t n = m.hexes.size();
-  if (!criteria.any()) {
+  if (!criteria.any() && !m.fails_by_damage) {
     m.eroded.clear();
     return;
   }
@@ -632,8 +636,13 @@ void SolidBlock::set_erosion(const ErosionCriteria& criteria) {
 const std::vector<std::uint8_t>& SolidBlock::eroded() const { return impl_->eroded; }
 
 void SolidBlock::plastic_strain(std::vector<double>& out) const {
-  out = impl_->plastic_strain;
-  out.resize(size(), 0.0);
+  out.assign(size(), 0.0);
+  for (std::size_t e = 0; e < impl_->history.size(); ++e) out[e] = impl_->history[e].plastic_strain;
+}
+
+void SolidBlock::damage(std::vector<double>& out) const {
+  out.assign(size(), 0.0);
+  for (std::size_t e = 0; e < impl_->history.size(); ++e) out[e] = impl_->history[e].damage;
 }
 
 void SolidBlock::pressure(std::vector<double>& out) const {

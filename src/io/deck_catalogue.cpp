@@ -33,6 +33,7 @@ const std::map<std::string, KeywordReader, std::less<>>& supported() {
       {"*MAT_RIGID", read_mat_rigid},
       {"*MAT_METAL", read_mat_metal},
       {"*MAT_JC", read_mat_jc},
+      {"*PROP_DAMAGE_JC", read_prop_damage_jc},
       {"*PART", read_part},
       {"*PART_SHELL", read_part_shell},
       {"*SET_NODE", read_set_node},

@@ -151,6 +151,13 @@ DeckResult DeckReader::finish() {
   // Curves and functions used by other commands.
   for (const FunctionBinding& f : function_bindings)
     f.bind(model, model.functions.find(f.id, f.where));
+  for (const DamageBinding& b : damage_bindings) {
+    const auto it = damage_properties.find(b.id);
+    if (it == damage_properties.end())
+      throw InputError(b.where, "damage property " + std::to_string(b.id) +
+                                    " is not defined (expected a *PROP_DAMAGE_JC with this did)");
+    std::get<MetalParams>(model.materials[b.material].params).failure = it->second;
+  }
 
   // Entities: every id must exist.
   for (const EntityRef& e : entity_references) {

@@ -39,6 +39,13 @@ struct FunctionBinding {
   std::function<void(Model&, FunctionRef)> bind;
 };
 
+// A material's did: its *PROP_DAMAGE_JC, bound once the whole deck is read.
+struct DamageBinding {
+  std::int64_t id = 0;
+  SourceLocation where;
+  std::size_t material = 0;  // index into Model::materials
+};
+
 struct IdReference {
   std::int64_t id = 0;
   SourceLocation where;
@@ -178,6 +185,8 @@ class DeckReader {
   Parameters parameters;
 
   std::vector<FunctionBinding> function_bindings;
+  std::map<std::int64_t, DuctileFailure> damage_properties;  // *PROP_DAMAGE_JC by did
+  std::vector<DamageBinding> damage_bindings;
   std::vector<IdReference> geometry_references;  // gids that must exist
   std::vector<ElementNodes> element_nodes;
   std::vector<ShellNodes> shell_nodes;
@@ -229,6 +238,7 @@ void read_mat_mooney_rivlin(DeckReader&, Block&);
 void read_mat_rigid(DeckReader&, Block&);
 void read_mat_metal(DeckReader&, Block&);
 void read_mat_jc(DeckReader&, Block&);
+void read_prop_damage_jc(DeckReader&, Block&);
 void read_part(DeckReader&, Block&);
 void read_part_shell(DeckReader&, Block&);
 void read_set_node(DeckReader&, Block&);

@@ -25,16 +25,17 @@ void no_thermal(const Row& r, std::size_t thpid) {
   r.unsupported_unless(thpid, 0.0, "a thermal property (thpid)");
 }
 
-// mid, rho, E, nu, did, thpid of *MAT_ELASTIC, *MAT_METAL and *MAT_JC.
+// mid, rho, E, nu, did, thpid of *MAT_ELASTIC, *MAT_METAL and *MAT_JC (the metals read did
+// themselves).
 template <class Params>
-Params isotropic_elasticity(const Row& r) {
+Params isotropic_elasticity(const Row& r, bool damage = false) {
   Params p;
   p.density = density(r, 1);
   p.young = r.number(2);
   r.require(p.young > 0.0, 2, "expected a Young's modulus > 0");
   p.poisson = r.number_or(3, 0.0);
   r.require(p.poisson >= 0.0 && p.poisson < 0.5, 3, "poisson must be in [0, 0.5)");
-  r.unsupported_unless(4, 0.0, "a damage property (did)");
+  if (!damage) r.unsupported_unless(4, 0.0, "a damage property (did) on this material");
   no_thermal(r, 5);
   return p;
 }
@@ -157,10 +158,13 @@ void read_part_shell(DeckReader& d, Block& b) {
 namespace abut::deck {
 namespace {
 
-// Line 1 of *MAT_METAL and *MAT_JC: mid, rho, E, nu, did, thpid, eosid.
-MetalParams metal_elasticity(const Row& r) {
-  MetalParams p = isotropic_elasticity<MetalParams>(r);
+// Line 1 of *MAT_METAL and *MAT_JC: mid, rho, E, nu, did, thpid, eosid. The did is bound to its
+// *PROP_DAMAGE_JC at the end of the deck (the material about to be added is the next one).
+MetalParams metal_elasticity(DeckReader& d, const Row& r) {
+  MetalParams p = isotropic_elasticity<MetalParams>(r, true);
   r.unsupported_unless(6, 0.0, "an equation of state (eosid)");
+  if (r.given(4) && r.integer(4) != 0)
+    d.damage_bindings.push_back({r.integer(4), r.where(4), d.model.materials.size()});
   return p;
 }
 
@@ -176,7 +180,7 @@ void no_thermal_softening(const Row& r, std::size_t m, std::size_t t0, std::size
 void read_mat_metal(DeckReader& d, Block& b) {
   const Row r1 = b.row({"mid", "rho", "E", "nu", "did", "thpid", "eosid"});
   const Row r2 = b.row({"cid", "xi", "yield", "c", "eps_dot0", "m", "T0", "Tm"});
-  MetalParams p = metal_elasticity(r1);
+  MetalParams p = metal_elasticity(d, r1);
   r2.unsupported_unless(1, 0.0, "kinematic hardening (xi)");
   r2.unsupported_unless(2, 0.0, "a yield surface other than von Mises (yield)");
   r2.unsupported_unless(3, 0.0, "rate hardening of *MAT_METAL (c; *MAT_JC has it)");
@@ -196,7 +200,7 @@ void read_mat_metal(DeckReader& d, Block& b) {
 void read_mat_jc(DeckReader& d, Block& b) {
   const Row r1 = b.row({"mid", "rho", "E", "nu", "did", "thpid", "eosid"});
   const Row r2 = b.row({"A", "B", "n", "C", "m", "T0", "Tm", "eps_dot0"});
-  MetalParams p = metal_elasticity(r1);
+  MetalParams p = metal_elasticity(d, r1);
   p.johnson_cook = true;
   p.a = r2.number(0);
   r2.require(p.a > 0.0, 0, "expected an initial yield stress A > 0");
@@ -213,6 +217,31 @@ void read_mat_jc(DeckReader& d, Block& b) {
     for (std::size_t i = 0; i < 4; ++i) r3->unsupported_unless(i, 0.0, "the fields of line 3");
   }
   add_material(d, r1, p);
+}
+
+// *PROP_DAMAGE_JC: did, d1, d2, d3, d4, d5, eps_dot0 (material.hpp, DuctileFailure).
+void read_prop_damage_jc(DeckReader& d, Block& b) {
+  if (b.done()) throw InputError(b.where(), "missing data line: expected did, d1, d2, d3, d4");
+  while (!b.done()) {
+    const Row r = b.row({"did", "d1", "d2", "d3", "d4", "d5", "eps_dot0"});
+    const std::int64_t id = r.integer(0);
+    r.require(id > 0, 0, "expected a damage property id > 0");
+    d.claim_id("damage property", id, r.where(0));
+    DuctileFailure f;
+    f.active = true;
+    f.d1 = r.number_or(1, 0.0);
+    f.d2 = r.number_or(2, 0.0);
+    f.d3 = r.number_or(3, 0.0);
+    f.d4 = r.number_or(4, 0.0);
+    r.require(f.d1 + f.d2 > 0.0, 1,
+              "expected a failure strain d1 + d2 > 0 at zero triaxiality (d1 alone: a constant "
+              "plastic failure strain)");
+    r.unsupported_unless(5, 0.0, "thermal softening of the failure strain (d5): abut has no "
+                                 "temperature field yet, and");
+    f.rate0 = r.number_or(6, 1.0);
+    r.require(f.rate0 > 0.0, 6, "expected a reference strain rate > 0");
+    d.damage_properties[id] = f;
+  }
 }
 
 }  // namespace abut::deck

@@ -1,5 +1,7 @@
 #include "abut/material/metal.hpp"
 
+#include "abut/material/point_law.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -46,6 +48,14 @@ PlasticUpdate radial_return(const Sym3& trial, double shear_modulus, double plas
   return {{{pressure + scale * s[0], pressure + scale * s[1], pressure + scale * s[2], scale * s[3],
             scale * s[4], scale * s[5]}},
           dp};
+}
+
+double failure_strain(const DuctileFailure& f, const Sym3& stress, double plastic_strain_rate) {
+  const double q = von_mises(stress);
+  const double triaxiality = q > 0.0 ? trace(stress) / (3.0 * q) : 0.0;
+  const double ratio = plastic_strain_rate / f.rate0;
+  return (f.d1 + f.d2 * std::exp(f.d3 * triaxiality)) *
+         (1.0 + f.d4 * std::log(ratio > 1.0 ? ratio : 1.0));
 }
 
 }  // namespace abut

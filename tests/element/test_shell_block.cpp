@@ -184,19 +184,19 @@ TEST(PlaneStress, MetalPointKeepsZeroNormalStressOnTheFlowSurface) {
   params.density = 7800, params.young = 2e11, params.poisson = 0.3;
   params.johnson_cook = true, params.a = 3e8, params.b = 0.0;
   const LameConstants lame{2e11 * 0.3 / (1.3 * 0.4), 2e11 / 2.6};
-  const MetalPoint law{lame, FlowStress(params, &table)};
+  const MetalPoint law{lame, FlowStress(params, &table), {}};
   Sym3 stress;
-  double epsp = 0.0;
+  PointHistory history;
   for (int step = 0; step < 40; ++step) {
     Sym3 increment{{1e-4, 1e-4, 0, 0, 0, 0}};
-    stress = plane_stress_update(law, stress, increment, 0.0, epsp);
+    stress = plane_stress_update(law, stress, increment, 0.0, history);
   }
   EXPECT_NEAR(stress[0], 3e8, 1e-6 * 3e8);
   EXPECT_NEAR(stress[1], 3e8, 1e-6 * 3e8);
   EXPECT_EQ(stress[2], 0.0);
   // Total strain 4e-3 in each direction, elastic part sigma_y (1 - nu) / E = 1.05e-3; the
   // equivalent plastic strain of equibiaxial flow is 2 x the in-plane plastic strain.
-  EXPECT_NEAR(epsp, 2.0 * (4e-3 - 3e8 * 0.7 / 2e11), 1e-6);
+  EXPECT_NEAR(history.plastic_strain, 2.0 * (4e-3 - 3e8 * 0.7 / 2e11), 1e-6);
 }
 
 }  // namespace

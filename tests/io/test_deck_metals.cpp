@@ -75,5 +75,26 @@ TEST(DeckMetals, UnsupportedOptionsAreErrorsAtTheirField) {
             "cid");  // no curve 9
 }
 
+TEST(DeckMetals, DamagePropertyBindsToTheMetalsDid) {
+  const Model m = model_of(kMesh +
+                           "*MAT_JC\n1, 7800.0, 210.0e9, 0.3, 4\n300e6, 500e6, 0.5\n"
+                           "*PROP_DAMAGE_JC\n4, 0.05, 3.44, -2.12, 0.002, 0, 2.0\n");
+  const auto& f = std::get<MetalParams>(m.materials.at(0).params).failure;
+  EXPECT_TRUE(f.active);
+  EXPECT_DOUBLE_EQ(f.d1, 0.05);
+  EXPECT_DOUBLE_EQ(f.d2, 3.44);
+  EXPECT_DOUBLE_EQ(f.d3, -2.12);
+  EXPECT_DOUBLE_EQ(f.d4, 0.002);
+  EXPECT_DOUBLE_EQ(f.rate0, 2.0);
+  const std::string jc = "*MAT_JC\n1, 7800.0, 210.0e9, 0.3, 4\n300e6, 500e6, 0.5\n";
+  const InputError missing = error_of(kMesh + jc);
+  EXPECT_EQ(missing.where().field, "did");
+  EXPECT_EQ(missing.where().line, 12u);
+  EXPECT_EQ(error_of(kMesh + jc + "*PROP_DAMAGE_JC\n4, 0.05, 0, 0, 0, 1.0\n").where().field,
+            "d5");  // thermal: no temperature field
+  EXPECT_EQ(error_of(kMesh + jc + "*PROP_DAMAGE_JC\n4, 0.0\n").where().field, "d1");
+  EXPECT_EQ(error_of(kMesh + "*MAT_ELASTIC\n1, 7800.0, 210.0e9, 0.3, 4\n").where().field, "did");
+}
+
 }  // namespace
 }  // namespace abut

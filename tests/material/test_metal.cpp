@@ -5,6 +5,7 @@
 
 #include "abut/core/error.hpp"
 #include "abut/material/metal.hpp"
+#include "abut/material/point_law.hpp"
 
 namespace abut {
 namespace {
@@ -91,6 +92,47 @@ TEST(FlowStress, MetalCurveFromTheFunctionTable) {
   EXPECT_NEAR(FlowStress(p, &table)(0.1, 0.0), 167e6 + 415e6 * std::pow(0.1, 0.3), 1e-3);
   p.flow_curve = table.find(2, SourceLocation{});
   EXPECT_NEAR(FlowStress(p, &table)(0.1, 0.0), 325e6, 1e-3);
+}
+
+// Johnson & Cook (1985): eps_f = [d1 + d2 exp(d3 sigma*)][1 + d4 ln(rate / rate0)], sigma* the
+// mean stress over the von Mises stress.
+TEST(DuctileFailure, JohnsonCookFailureStrain) {
+  DuctileFailure f;
+  f.active = true, f.d1 = 0.05, f.d2 = 3.44, f.d3 = -2.12, f.d4 = 0.002, f.rate0 = 1.0;
+  const Sym3 uniaxial{{400e6, 0, 0, 0, 0, 0}};  // sigma* = 1/3
+  EXPECT_NEAR(failure_strain(f, uniaxial, 0.5), 0.05 + 3.44 * std::exp(-2.12 / 3.0), 1e-12);
+  EXPECT_NEAR(failure_strain(f, uniaxial, 1000.0),
+              (0.05 + 3.44 * std::exp(-2.12 / 3.0)) * (1.0 + 0.002 * std::log(1000.0)), 1e-12);
+  const Sym3 shear{{0, 0, 0, 200e6, 0, 0}};  // sigma* = 0
+  EXPECT_NEAR(failure_strain(f, shear, 0.0), 0.05 + 3.44, 1e-12);
+}
+
+TEST(DuctileFailure, APointFailsWhenItsDamageReachesOneAndThenCarriesNoStress) {
+  // Uniaxial plastic straining at constant triaxiality 1/3: D = epsp / eps_f.
+  FunctionTable table;
+  MetalParams p;
+  p.density = 7800, p.young = 2e11, p.poisson = 0.3, p.johnson_cook = true, p.a = 3e8;
+  DuctileFailure f;
+  f.active = true, f.d1 = 0.1;
+  const LameConstants lame{2e11 * 0.3 / (1.3 * 0.4), 2e11 / 2.6};
+  const MetalPoint law{lame, FlowStress(p, &table), f};
+  PointHistory h;
+  Sym3 stress;
+  int steps = 0;
+  while (!h.failed() && steps < 10000) {
+    // deviatoric strain increment of uniaxial plastic flow (incompressible), 1e-4 axial
+    const Sym3 increment{{1e-4, -0.5e-4, -0.5e-4, 0, 0, 0}};
+    stress = law.update(stress, increment, 1e-3, h);
+    if (!h.failed()) {
+      EXPECT_NEAR(h.damage, h.plastic_strain / 0.1, 1e-12);
+    }
+    ++steps;
+  }
+  ASSERT_TRUE(h.failed());
+  EXPECT_NEAR(h.plastic_strain, 0.1, 2e-4);
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(stress[i], 0.0);
+  const Sym3 after = law.update(stress, Sym3{{1e-4, 0, 0, 0, 0, 0}}, 1e-3, h);
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(after[i], 0.0);
 }
 
 }  // namespace

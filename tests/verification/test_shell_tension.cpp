@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <string>
 #include <vector>
 
 #include "run_to.hpp"
@@ -98,6 +99,42 @@ TEST(ShellMetalTension, StressFollowsTheFlowCurveAndUnloadsElastically) {
   EXPECT_LT(worst_flow, 0.005);
   EXPECT_LT(worst_split, 0.005);
   EXPECT_LT(worst_unload, 0.005);
+}
+
+// Johnson-Cook failure (*PROP_DAMAGE_JC, Johnson & Cook 1985): under uniaxial stress the
+// triaxiality is 1/3 throughout, so the damage D = epsp / eps_f reaches 1 when the plastic
+// strain reaches eps_f = d1 + d2 exp(d3 / 3) (no rate term: d4 = 0), here 0.02 + 0.1 exp(-0.5)
+// = 0.0807. All five thickness points strain alike, fail together and the shell erodes in that
+// cycle: the test reads the plastic strain of the last cycle before the erosion and requires the
+// failure strain to lie between it and one cycle's increment more. The eroded energy is what the
+// element held.
+TEST(ShellMetalTension, JohnsonCookFailureErodesTheShellAtTheFailureStrain) {
+  std::string deck = kDeck;
+  deck.replace(deck.find("1, 7800.0, 210.0e9, 0.3\n5"), 25, "1, 7800.0, 210.0e9, 0.3, 3\n5");
+  deck.replace(deck.find("*END"), 4, "*PROP_DAMAGE_JC\n3, 0.02, 0.1, -1.5\n*END");
+  const Model model = read_deck_string(deck, "shell_failure.k");
+  Simulation sim(model);
+  const double eps_f = 0.02 + 0.1 * std::exp(-0.5);
+  std::vector<double> ep;
+  double before = 0.0, increment = 0.0, internal_before = 0.0;
+  bool eroded = false;
+  verification::run_to(sim, 0.001, [&](const Simulation& s) {
+    if (eroded) return;
+    if (s.eroded_shells()[0]) {
+      eroded = true;
+      EXPECT_NEAR(s.energies().eroded, internal_before, 0.01 * internal_before);
+      return;
+    }
+    s.shell_plastic_strain(ep);
+    increment = ep[0] - before;
+    before = ep[0];
+    internal_before = s.energies().internal;
+  });
+  ASSERT_TRUE(eroded);
+  std::cout << "eroded after epsp = " << before << " (+" << increment << " per cycle), eps_f = "
+            << eps_f << "\n";
+  EXPECT_LE(before, eps_f);
+  EXPECT_GE(before + 1.5 * increment, eps_f);
 }
 
 }  // namespace

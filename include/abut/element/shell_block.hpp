@@ -88,6 +88,8 @@ class ShellBlock {
   // Resultants per element in its frame: N (xx, yy, xy), M (xx, yy, xy), Q (xz, yz).
   void resultants(std::size_t element, double n[3], double m[3], double q[2]) const;
 
+  // Erosion as SolidBlock; with a damage property, a shell erodes once every thickness point
+  // has failed (a failed point carries no stress before that).
   void set_erosion(const ErosionCriteria& criteria);
   const std::vector<std::uint8_t>& eroded() const;
   void set_element_ids(std::vector<std::int64_t> ids);

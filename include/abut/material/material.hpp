@@ -38,6 +38,17 @@ struct RigidParams {
 //   *MAT_METAL  a *CURVE or *FUNCTION of the plastic strain (cid; a function reads `epsp`),
 //   *MAT_JC     Johnson-Cook (A + B epsp^n)(1 + C ln(epsp_rate / rate0)) for epsp_rate > rate0.
 // See metal.hpp for the return mapping.
+// *PROP_DAMAGE_JC, the ductile failure of Johnson & Cook (1985, Eng. Fract. Mech. 21:31): the
+// failure strain eps_f = [d1 + d2 exp(d3 sigma*)] [1 + d4 ln max(epsp_rate / rate0, 1)] with the
+// triaxiality sigma* = mean stress / von Mises stress; the damage D = sum d epsp / eps_f grows
+// with the plastic strain, and a point with D >= 1 has failed: it carries no stress from then on.
+// d1 alone is a constant plastic failure strain. (The thermal factor 1 + d5 T* needs a
+// temperature field.)
+struct DuctileFailure {
+  bool active = false;
+  double d1 = 0.0, d2 = 0.0, d3 = 0.0, d4 = 0.0, rate0 = 1.0;
+};
+
 struct MetalParams {
   double density = 0.0;
   double young = 0.0;
@@ -45,6 +56,7 @@ struct MetalParams {
   bool johnson_cook = false;
   FunctionRef flow_curve;                                  // *MAT_METAL cid
   double a = 0.0, b = 0.0, n = 1.0, c = 0.0, rate0 = 1.0;  // *MAT_JC
+  DuctileFailure failure;                                  // did: *PROP_DAMAGE_JC
 };
 
 using MaterialParams = std::variant<ElasticParams, MooneyRivlinParams, RigidParams, MetalParams>;

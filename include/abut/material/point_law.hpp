@@ -1,7 +1,7 @@
 #pragma once
 // The material-point seam of hypoelastic laws: an element hands a point its old stress (already
 // rotated to the current frame), the strain increment of the step, the step and the point's
-// plastic strain; the law returns the new stress and advances the plastic strain. Hexahedra call
+// history (plastic strain, damage); the law returns the new stress and advances the history. Hexahedra call
 // `update` as it is (3-D); shells call plane_stress_update, which finds the thickness strain that
 // makes the normal stress vanish. A new hypoelastic law is one value type with `update`.
 #include <cmath>
@@ -12,23 +12,40 @@
 
 namespace abut {
 
+struct PointHistory {
+  double plastic_strain = 0.0;  // equivalent plastic strain
+  double damage = 0.0;          // ductile damage (metals with a did); >= 1: the point has failed
+  bool failed() const { return damage >= 1.0; }
+};
+
+// Johnson-Cook failure strain at a stress state and plastic strain rate (material.hpp).
+double failure_strain(const DuctileFailure& f, const Sym3& stress, double plastic_strain_rate);
+
 // *MAT_ELASTIC: Hooke's law on the increment.
 struct ElasticPoint {
   LameConstants lame;
   Sym3 update(const Sym3& rotated, const Sym3& increment, double /*dt*/,
-              double& /*plastic_strain*/) const {
+              PointHistory& /*history*/) const {
     return add(rotated, hooke(lame, increment));
   }
 };
 
-// *MAT_METAL, *MAT_JC: elastic trial and radial return (metal.hpp).
+// *MAT_METAL, *MAT_JC: elastic trial and radial return (metal.hpp), then the damage.
 struct MetalPoint {
   LameConstants lame;
   FlowStress flow;
-  Sym3 update(const Sym3& rotated, const Sym3& increment, double dt, double& plastic_strain) const {
-    const PlasticUpdate u =
-        radial_return(add(rotated, hooke(lame, increment)), lame.mu, plastic_strain, dt, flow);
-    plastic_strain += u.plastic_strain_increment;
+  DuctileFailure failure;
+  Sym3 update(const Sym3& rotated, const Sym3& increment, double dt, PointHistory& h) const {
+    if (h.failed()) return Sym3{};
+    const PlasticUpdate u = radial_return(add(rotated, hooke(lame, increment)), lame.mu,
+                                          h.plastic_strain, dt, flow);
+    const double dp = u.plastic_strain_increment;
+    h.plastic_strain += dp;
+    if (failure.active && dp > 0.0) {
+      const double eps_f = failure_strain(failure, u.stress, dt > 0.0 ? dp / dt : 0.0);
+      h.damage = eps_f > 0.0 ? h.damage + dp / eps_f : 1.0;
+      if (h.failed()) return Sym3{};
+    }
     return u.stress;
   }
 };
@@ -41,20 +58,20 @@ struct MetalPoint {
 // tangent modulus. `increment[2]` is ignored; on return it holds the d_zz found.
 template <class Law>
 Sym3 plane_stress_update(const Law& law, const Sym3& rotated, Sym3& increment, double dt,
-                         double& plastic_strain) {
+                         PointHistory& history) {
   const double slope0 = law.lame.lambda + 2.0 * law.lame.mu;
   double dzz = -(rotated[2] + law.lame.lambda * (increment[0] + increment[1])) / slope0;
-  double epsp = plastic_strain;
+  PointHistory trial = history;
   increment[2] = dzz;
-  Sym3 stress = law.update(rotated, increment, dt, epsp);
+  Sym3 stress = law.update(rotated, increment, dt, trial);
   const double scale = std::abs(stress[0]) + std::abs(stress[1]) + std::abs(stress[3]) +
                        std::abs(stress[4]) + std::abs(stress[5]) + 1e-300;
   double previous_dzz = dzz, previous_szz = stress[2], slope = slope0;
   for (int iteration = 0; iteration < 30 && std::abs(stress[2]) > 1e-12 * scale; ++iteration) {
     dzz -= stress[2] / slope;
-    epsp = plastic_strain;
+    trial = history;
     increment[2] = dzz;
-    stress = law.update(rotated, increment, dt, epsp);
+    stress = law.update(rotated, increment, dt, trial);
     if (dzz != previous_dzz) {
       const double secant = (stress[2] - previous_szz) / (dzz - previous_dzz);
       if (secant > 0.0) slope = secant;
@@ -62,7 +79,7 @@ Sym3 plane_stress_update(const Law& law, const Sym3& rotated, Sym3& increment, d
     previous_dzz = dzz;
     previous_szz = stress[2];
   }
-  plastic_strain = epsp;
+  history = trial;
   stress[2] = 0.0;
   return stress;
 }
