@@ -402,7 +402,7 @@ TEST(DeckBoundaryMotion, Errors) {
   EXPECT_THAT(error_of(with_box("*BC_MOTION\nP, 1, 0\n")).message(),
               HasSubstr("neither constrains"));
   EXPECT_THAT(error_of(with_box("*BC_MOTION\nP, 1, X, XYZ\n")).message(),
-              HasSubstr("part 1 is not rigid"));
+              HasSubstr("part 1 is a deformable solid"));
   EXPECT_THAT(error_of(with_box("*BC_MOTION\nN, 1, , , , , 1.0, 0.5\n")).message(),
               HasSubstr("t_end > t_beg"));
   EXPECT_THAT(error_of(with_box("*BC_MOTION\nP, 1\nV, X, 77\n")).message(), HasSubstr("77"));
