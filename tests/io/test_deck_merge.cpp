@@ -81,6 +81,13 @@ TEST(DeckMerge, TwoBoxesFaceToFaceBecomeOneMesh) {
   EXPECT_EQ(r.model.vx0.size(), 45u);
 }
 
+TEST(DeckMerge, RefinementAfterTheMergeSharesTheNewInterfaceNodes) {
+  // Merged first, refined after: the two boxes become one 8 x 4 x 4 lattice.
+  const DeckResult r = read(kBoxes + "P, 2, P, 1, 1.0e-6\n*CHANGE_P-ORDER\nALL, , 2" + kParts);
+  EXPECT_EQ(r.model.mesh.hex_count(), 128u);
+  EXPECT_EQ(r.model.mesh.nodes.size(), 9u * 5u * 5u);
+}
+
 TEST(DeckMerge, DefaultToleranceAndAllNodesOfOtherEntities) {
   // tol empty: 1e-6 of the model's diagonal. ALL as m: every node of s is also in m and stays.
   EXPECT_EQ(model_of(kBoxes + "P, 2, P, 1" + kParts).mesh.nodes.size(), 45u);
