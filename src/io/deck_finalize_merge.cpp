@@ -80,12 +80,14 @@ void DeckReader::require_unmerged(const EntityRef& entity) const {
   const auto& [survivor, command] = it->second;
   throw InputError(entity.where, "node " + std::to_string(entity.id) + " was merged into node " +
                                      std::to_string(survivor) + " by *MERGE_DUPLICATED_NODES at " +
-                                     at(command) + ": refer to node " + std::to_string(survivor));
+                                     at(merges[command].where) + ": refer to node " +
+                                     std::to_string(survivor));
 }
 
 void DeckReader::merge_duplicated_nodes() {
   Mesh& mesh = model.mesh;
-  for (const PendingMerge& m : merges) {
+  for (std::size_t k = 0; k < merges.size(); ++k) {
+    const PendingMerge& m = merges[k];
     require_unmerged(m.secondary);
     require_unmerged(m.main);
     const std::string command = "*MERGE_DUPLICATED_NODES at " + at(m.where);
@@ -115,7 +117,7 @@ void DeckReader::merge_duplicated_nodes() {
     require_distinct_corners(mesh, new_index, m, tol);
     for (std::size_t i = 0; i < replacement.size(); ++i) {
       if (replacement[i] >= 0) {
-        merged_nodes_[old_ids[i]] = {old_ids[static_cast<std::size_t>(replacement[i])], m.where};
+        merged_nodes_[old_ids[i]] = {old_ids[static_cast<std::size_t>(replacement[i])], k};
       }
     }
     // A node that an earlier command merged into one that goes now: name the one that stays.

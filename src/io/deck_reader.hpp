@@ -218,9 +218,9 @@ class DeckReader {
   std::unordered_map<std::int64_t, std::int32_t> node_index_;
   std::set<std::int64_t> hex_ids_, shell_ids_;
   std::map<std::pair<std::string, std::int64_t>, SourceLocation> claimed_ids_;
-  // Nodes removed by *MERGE_DUPLICATED_NODES: user id -> (user id of the node in its place, the
-  // command), so that a reference to one says what became of it.
-  std::map<std::int64_t, std::pair<std::int64_t, SourceLocation>> merged_nodes_;
+  // Nodes removed by *MERGE_DUPLICATED_NODES: user id -> (user id of the node in its place, index
+  // of the command in `merges`), so that a reference to one says what became of it.
+  std::map<std::int64_t, std::pair<std::int64_t, std::size_t>> merged_nodes_;
   void require_unmerged(const EntityRef& entity) const;
 };
 
