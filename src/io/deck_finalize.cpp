@@ -1,6 +1,6 @@
-// The end of reading: every reference is checked now that all ids are known, then the mesh is
-// refined and smoothed (*CHANGE_P-ORDER, *SMOOTH_MESH, *PART alpha_max) and the initial
-// velocities are applied to the final nodes.
+// The end of reading: every reference is checked now that all ids are known, duplicated nodes are
+// merged (*MERGE_DUPLICATED_NODES), then the mesh is refined and smoothed (*CHANGE_P-ORDER,
+// *SMOOTH_MESH, *PART alpha_max) and the initial velocities are applied to the final nodes.
 #include <algorithm>
 #include <map>
 #include <set>
@@ -169,6 +169,10 @@ DeckResult DeckReader::finish() {
   }
   // *CONTACT_* keywords, now that every *CONTACT, function and entity is known.
   merge_contact_keywords(model, contact_keywords);
+  // Every element holds node indices now; joining nodes must come before refinement, contact
+  // adjustment and initial velocities take them up.
+  resolve_shell_nodes();
+  merge_duplicated_nodes();
   resolve_shells();
 
   // Rotations are degrees of freedom of rigid parts and of shell nodes.
@@ -182,8 +186,8 @@ DeckResult DeckReader::finish() {
     if (!rotates) continue;
     if (m.entity.type == EntityType::Part || m.entity.type == EntityType::PartSet) {
       for (const std::int64_t pid : model.parts_of(m.entity)) {
-        const bool shells = std::find(mesh.shell_part.begin(), mesh.shell_part.end(), pid) !=
-                            mesh.shell_part.end();
+        const bool shells =
+            std::find(mesh.shell_part.begin(), mesh.shell_part.end(), pid) != mesh.shell_part.end();
         if (!is_rigid(model.material_of_part(pid)) && !shells) {
           throw InputError(m.where,
                            "rotational constraints and RX, RY, RZ motions apply to rigid parts "

@@ -57,7 +57,7 @@ void require_unrefined_shell_nodes(const Mesh& mesh, const std::vector<std::int6
 
 }  // namespace
 
-void DeckReader::resolve_shells() {
+void DeckReader::resolve_shell_nodes() {
   Mesh& mesh = model.mesh;
   for (const ShellNodes& e : shell_nodes) {
     for (std::size_t k = 0; k < 4; ++k) {
@@ -70,6 +70,10 @@ void DeckReader::resolve_shells() {
     }
   }
   for (const ShellNodes& e : shell_nodes) require_area(mesh, e, shell_where(e, ""));
+}
+
+void DeckReader::resolve_shells() {
+  Mesh& mesh = model.mesh;
 
   const std::map<std::int64_t, PartElements> elements = elements_by_part(mesh);
   const auto has_shells = [&](std::int64_t part) {

@@ -20,6 +20,8 @@ std::vector<std::string> split_lines(const std::string& text) {
   return lines;
 }
 
+}  // namespace
+
 std::string entity_word(EntityType t) {
   switch (t) {
     case EntityType::Node:
@@ -37,8 +39,6 @@ std::string entity_word(EntityType t) {
   }
   return "";
 }
-
-}  // namespace
 
 void DeckReader::read_file(const fs::path& path, const IncludeFrame& frame, int depth) {
   std::ifstream in(path, std::ios::binary);

@@ -102,6 +102,13 @@ struct PendingSmoothing {
   std::optional<IdReference> region;
 };
 
+// *MERGE_DUPLICATED_NODES, applied in deck order once every node, element and set is resolved.
+struct PendingMerge {
+  EntityRef secondary, main;        // entities s (nodes that go) and m (nodes that stay)
+  std::optional<double> tolerance;  // empty: 1e-6 times the diagonal of the model's bounding box
+  SourceLocation where;             // the data line
+};
+
 struct PendingVelocity {
   EntityRef entity;
   std::array<Row::NumberOrFunction, 3> velocity;
@@ -169,6 +176,12 @@ class DeckReader {
   // deck_finalize_shells.cpp: shell nodes, areas, parts, *PART_SHELL, and the commands that do
   // not take shell parts yet. Part ids must have been checked to exist.
   void resolve_shells();
+  // deck_finalize_shells.cpp: the node indices and areas of *ELEMENT_SHELL rows; before
+  // merge_duplicated_nodes, which replaces nodes in every element.
+  void resolve_shell_nodes();
+  // deck_finalize_merge.cpp: *MERGE_DUPLICATED_NODES, once element nodes, node sets and shell
+  // nodes are resolved and before anything else stores node indices; remaps the node sets.
+  void merge_duplicated_nodes();
   // Records an id of a kind (e.g. "component"); a second use is an error naming the first.
   void claim_id(const std::string& kind, std::int64_t id, const SourceLocation& where);
   // Index of a node id, or -1.
@@ -199,6 +212,7 @@ class DeckReader {
   std::vector<PendingOrder> orders;
   std::vector<PendingSmoothing> smoothing;
   std::vector<PendingVelocity> velocities;
+  std::vector<PendingMerge> merges;
   std::vector<EntityRef> entity_references;  // entities that must exist
   std::vector<PendingContactKeyword> contact_keywords;
   std::optional<SourceLocation> time_where, units_where, title_where;
@@ -213,6 +227,10 @@ class DeckReader {
   std::unordered_map<std::int64_t, std::int32_t> node_index_;
   std::set<std::int64_t> hex_ids_, shell_ids_;
   std::map<std::pair<std::string, std::int64_t>, SourceLocation> claimed_ids_;
+  // Nodes removed by *MERGE_DUPLICATED_NODES: user id -> (user id of the node in its place, index
+  // of the command in `merges`), so that a reference to one says what became of it.
+  std::map<std::int64_t, std::pair<std::int64_t, std::size_t>> merged_nodes_;
+  void require_unmerged(const EntityRef& entity) const;
 };
 
 // The reader of each supported keyword (keyword_*.cpp).
@@ -233,6 +251,7 @@ void read_component_sphere(DeckReader&, Block&);
 void read_component_cylinder(DeckReader&, Block&);
 void read_change_p_order(DeckReader&, Block&);
 void read_smooth_mesh(DeckReader&, Block&);
+void read_merge_duplicated_nodes(DeckReader&, Block&);
 void read_mat_elastic(DeckReader&, Block&);
 void read_mat_mooney_rivlin(DeckReader&, Block&);
 void read_mat_rigid(DeckReader&, Block&);
@@ -292,6 +311,8 @@ T word_choice(const Row& r, std::size_t i, T fallback,
   r.fail(i, "expected " + expected + ", got '" + r.text(i) + "'");
 }
 
+// The deck word of an entity type: N, NS, P, PS, ALL, G.
+std::string entity_word(EntityType t);
 // "1, 2, 5" (the first 20 ids) or "none", for messages that say what exists (deck_finalize.cpp).
 std::string joined(const std::set<std::int64_t>& ids);
 SourceLocation with_field(SourceLocation where, const std::string& field);

@@ -1,5 +1,6 @@
 // *NODE, *ELEMENT_SOLID, *ELEMENT_SHELL, *COMPONENT_BOX, *COMPONENT_SPHERE, *COMPONENT_CYLINDER,
-// *COMPONENT_SHELL_PLATE, *COMPONENT_SHELL_TUBE, *CHANGE_P-ORDER, *SMOOTH_MESH.
+// *COMPONENT_SHELL_PLATE, *COMPONENT_SHELL_TUBE, *CHANGE_P-ORDER, *SMOOTH_MESH,
+// *MERGE_DUPLICATED_NODES.
 #include <algorithm>
 
 #include "abut/mesh/generators.hpp"
@@ -249,6 +250,33 @@ void read_smooth_mesh(DeckReader& d, Block& b) {
     const auto next = b.peek_fields();
     if (!next.empty() && parse_number(next[0])) b.row({"csysid"}).global_coordinates_only(0);
   } while (!b.done());
+}
+
+void read_merge_duplicated_nodes(DeckReader& d, Block& b) {
+  if (b.done()) {
+    throw InputError(b.where(),
+                     "missing data line: expected entype_s, enid_s, entype_m, enid_m, tol, refine");
+  }
+  while (!b.done()) {
+    const Row r = b.row({"entype_s", "enid_s", "entype_m", "enid_m", "tol", "refine"});
+    const std::initializer_list<EntityType> nodal = {EntityType::Node, EntityType::NodeSet,
+                                                     EntityType::Part, EntityType::PartSet,
+                                                     EntityType::All};
+    PendingMerge m;
+    m.secondary = d.entity(r, 0, 1, nodal);
+    m.main = d.entity(r, 2, 3, nodal);
+    if (r.given(4)) {
+      const double tol = r.number(4);
+      r.require(tol > 0.0, 4, "expected a distance tol > 0");
+      // A length: scaled with the included file's content, which must keep its shape.
+      m.tolerance = tol * uniform_scale(d, r.where(4), "merge tolerance");
+    }
+    r.unsupported_unless(5, 0.0, "refine (refining the mesh where nodes are merged)");
+    m.where = r.where();
+    d.merges.push_back(m);
+    d.entity_references.push_back(m.secondary);
+    d.entity_references.push_back(m.main);
+  }
 }
 
 }  // namespace abut::deck

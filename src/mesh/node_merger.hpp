@@ -19,6 +19,8 @@ class NodeMerger {
   void insert(std::int32_t node, const Vec3& p);
   // The node within tolerance of p, or -1.
   std::int32_t find(const Vec3& p) const;
+  // The nearest node within tolerance of p (ties: the lowest index), or -1.
+  std::int32_t nearest(const Vec3& p) const;
   // The node within tolerance of p; a new node (user id next_id++) when there is none.
   std::int32_t find_or_add(Nodes& nodes, const Vec3& p, std::int64_t& next_id);
 
