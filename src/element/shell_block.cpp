@@ -67,6 +67,7 @@ struct ShellBlock::Impl {
   std::vector<double> reference_b;  // erosion strain: b1, b2 of the reference frame, 8 per element
   std::vector<double> stress;       // 6 per point
   std::vector<PointHistory> history;  // 1 per point (metals)
+  std::vector<double> thickness_ratio;  // 1 per point (metals): last d_zz / (d_xx + d_yy)
   bool fails_by_damage = false;       // erodes when every thickness point has failed
   std::vector<double> hourglass;    // 5 generalized hourglass forces per element
   std::vector<double> forces;       // 24 per element
@@ -190,8 +191,10 @@ void ShellBlock::Impl::element(std::size_t e, const ShellNodalState& s, double d
       Sym3 increment{{dt * (dxx + zk * kxx), dt * (dyy + zk * kyy), 0.0,
                       0.5 * dt * (gxy + zk * kxy), 0.5 * dt * ks * gyz, 0.5 * dt * ks * gxz}};
       PointHistory none;
-      now = plane_stress_update(law, old, increment, dt,
-                                history.empty() ? none : history[np * e + k]);
+      now = history.empty()
+                ? plane_stress_update(law, old, increment, dt, none)
+                : plane_stress_update(law, old, increment, dt, history[np * e + k],
+                                      &thickness_ratio[np * e + k]);
       work += wk * 0.5 * double_dot(add(old, now), increment);
       std::copy(now.c.begin(), now.c.end(), stored);
     }
@@ -381,6 +384,7 @@ ShellBlock::ShellBlock(std::int64_t part_id, const MaterialParams& material,
   m.stress.assign(6 * np * n, 0.0);
   if (const auto* metal = std::get_if<MetalParams>(&material)) {
     m.history.assign(np * n, {});
+    m.thickness_ratio.assign(np * n, -m.poisson / (1.0 - m.poisson));
     m.fails_by_damage = metal->failure.active;
   }
   m.hourglass.assign(5 * n, 0.0);

@@ -100,8 +100,8 @@ TEST(ThreadIndependence, OneAndTwoThreadsGiveBitwiseIdenticalResults) {
 
 TEST(ThreadIndependence, ShellsGiveBitwiseIdenticalResults) {
   const int saved = omp_get_max_threads();
-  const std::vector<double> one = positions_after(1, 300, kShellDeck);
-  const std::vector<double> two = positions_after(2, 300, kShellDeck);
+  const std::vector<double> one = positions_after(1, 150, kShellDeck);
+  const std::vector<double> two = positions_after(2, 150, kShellDeck);
   omp_set_num_threads(saved);
   ASSERT_EQ(one.size(), two.size());
   for (std::size_t i = 0; i < one.size(); ++i) ASSERT_EQ(one[i], two[i]) << "entry " << i;

@@ -56,11 +56,18 @@ struct MetalPoint {
 // materials without a plane-stress return). Elastic points converge in one step; a plastic
 // point in a few, because sigma_zz is monotonic in d_zz with a slope between the elastic and the
 // tangent modulus. `increment[2]` is ignored; on return it holds the d_zz found.
+//
+// `ratio` (optional, in and out) is the point's last d_zz / (d_xx + d_yy): a flowing point keeps
+// nearly the same ratio from step to step (about -1 in fully plastic, isochoric flow, against the
+// elastic -nu / (1 - nu)), so starting from it saves most iterations.
 template <class Law>
 Sym3 plane_stress_update(const Law& law, const Sym3& rotated, Sym3& increment, double dt,
-                         PointHistory& history) {
+                         PointHistory& history, double* ratio = nullptr) {
   const double slope0 = law.lame.lambda + 2.0 * law.lame.mu;
-  double dzz = -(rotated[2] + law.lame.lambda * (increment[0] + increment[1])) / slope0;
+  const double in_plane = increment[0] + increment[1];
+  double dzz = ratio != nullptr && rotated[2] == 0.0
+                   ? *ratio * in_plane
+                   : -(rotated[2] + law.lame.lambda * in_plane) / slope0;
   PointHistory trial = history;
   increment[2] = dzz;
   Sym3 stress = law.update(rotated, increment, dt, trial);
@@ -80,6 +87,7 @@ Sym3 plane_stress_update(const Law& law, const Sym3& rotated, Sym3& increment, d
     previous_szz = stress[2];
   }
   history = trial;
+  if (ratio != nullptr && in_plane != 0.0) *ratio = dzz / in_plane;
   stress[2] = 0.0;
   return stress;
 }
