@@ -203,7 +203,9 @@ void Simulation::Impl::kick() {
   if (!pressure.empty()) work += dt_avg * pressure.mid_step_power(ox, oy, oz, vhx, vhy, vhz);
   if (rotations()) {  // reaction moments of rotational constraints, the same way
     for (std::size_t i = 0; i < n_nodes; ++i) {
-      const double inertia = rotary_inertia[i];
+      // A rigid body's nodes turn with it: the shells' moments on them act on the body.
+      const double inertia = rigid_body_of_node[i] < 0 ? rotary_inertia[i] : 0.0;
+      if (inertia == 0.0) continue;
       work += (inertia * (whx[i] - owx[i]) - dt_avg * mx[i]) * 0.5 * (owx[i] + whx[i]) +
               (inertia * (why[i] - owy[i]) - dt_avg * my[i]) * 0.5 * (owy[i] + why[i]) +
               (inertia * (whz[i] - owz[i]) - dt_avg * mz[i]) * 0.5 * (owz[i] + whz[i]);
@@ -228,12 +230,14 @@ void Simulation::Impl::kick() {
     kinetic += n == 0 ? 0.5 * mass[i] * (ox[i] * ox[i] + oy[i] * oy[i] + oz[i] * oz[i])
                       : 0.5 * mass[i] * (ox[i] * vhx[i] + oy[i] * vhy[i] + oz[i] * vhz[i]);
   }
-  if (rotations()) {
-    for (std::size_t i = 0; i < n_nodes; ++i)
+  if (rotations()) {  // a rigid body's rotation is in its nodes' translations already
+    for (std::size_t i = 0; i < n_nodes; ++i) {
+      if (rigid_body_of_node[i] >= 0) continue;
       kinetic += n == 0 ? 0.5 * rotary_inertia[i] *
                               (owx[i] * owx[i] + owy[i] * owy[i] + owz[i] * owz[i])
                         : 0.5 * rotary_inertia[i] *
                               (owx[i] * whx[i] + owy[i] * why[i] + owz[i] * whz[i]);
+    }
   }
   energy.kinetic = kinetic;
 }

@@ -158,5 +158,42 @@ TEST(ShellClampedPlate, CentreDeflectionUnderPressureIsTimoshenkos) {
   EXPECT_LT(std::abs(sim.energy_balance_error()), 1e-2);
 }
 
+// A rigid shell part (*MAT_RIGID on shells) has the mass rho h A and falls freely under gravity:
+// z = z0 - g t^2 / 2 (the central-difference scheme integrates constant acceleration exactly).
+const char* kRigidPlate = R"(
+*UNIT_SYSTEM
+SI
+*TIME
+0.1
+*COMPONENT_SHELL_PLATE
+1, 1, 4, 3
+0.0, 0.0, 1.0, 0.4, 0.0, 1.0
+0.0, 0.3, 1.0
+*MAT_RIGID
+1, 7800.0
+*PART
+"rigid plate"
+1, 1, , 0.002
+*CURVE
+1
+0.0, -9.81
+1.0, -9.81
+*LOAD_GRAVITY
+Z, 1
+*END
+)";
+
+TEST(ShellRigidPlate, HasItsShellMassAndFallsFreely) {
+  const Model model = read_deck_string(kRigidPlate, "rigid_plate.k");
+  Simulation sim(model);
+  ASSERT_EQ(sim.part_states().size(), 1u);
+  EXPECT_NEAR(sim.part_states()[0].mass, 7800.0 * 0.002 * 0.4 * 0.3, 1e-12);
+  verification::run_to(sim, model.time.end_time);
+  const PartState s = sim.part_states()[0];
+  EXPECT_NEAR(s.centre_of_mass.z, 1.0 - 0.5 * 9.81 * 0.1 * 0.1, 1e-9);
+  EXPECT_NEAR(s.velocity.z, -9.81 * 0.1, 1e-9);
+  EXPECT_NEAR(s.centre_of_mass.x, 0.2, 1e-12);
+}
+
 }  // namespace
 }  // namespace abut
