@@ -31,7 +31,8 @@ Shell4Geometry shell4_geometry(const std::array<Vec3, 4>& p) {
     hy += h[a] * g.y[a];
   }
   for (int a = 0; a < 4; ++a) g.gamma[a] = h[a] - hx * g.b1[a] - hy * g.b2[a];
-  for (int a = 0; a < 4; ++a) g.longest_side = std::max(g.longest_side, norm(p[(a + 1) % 4] - p[a]));
+  for (int a = 0; a < 4; ++a)
+    g.longest_side = std::max(g.longest_side, norm(p[(a + 1) % 4] - p[a]));
   return g;
 }
 

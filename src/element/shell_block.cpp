@@ -60,17 +60,17 @@ struct ShellBlock::Impl {
   const FunctionTable* functions = nullptr;
   double density = 0.0, young = 0.0, poisson = 0.0;
   LameConstants lame;
-  double wave_speed = 0.0;  // plate wave speed sqrt(E / (rho (1 - nu^2)))
+  double wave_speed = 0.0;           // plate wave speed sqrt(E / (rho (1 - nu^2)))
   std::vector<double> zeta, weight;  // Gauss points and weights through the thickness
 
   std::vector<double> reference_area;
   std::vector<double> reference_b;  // erosion strain: b1, b2 of the reference frame, 8 per element
   std::vector<double> stress;       // 6 per point
-  std::vector<PointHistory> history;  // 1 per point (metals)
+  std::vector<PointHistory> history;    // 1 per point (metals)
   std::vector<double> thickness_ratio;  // 1 per point (metals): last d_zz / (d_xx + d_yy)
-  bool fails_by_damage = false;       // erodes when every thickness point has failed
-  std::vector<double> hourglass;    // 5 generalized hourglass forces per element
-  std::vector<double> forces;       // 24 per element
+  bool fails_by_damage = false;         // erodes when every thickness point has failed
+  std::vector<double> hourglass;        // 5 generalized hourglass forces per element
+  std::vector<double> forces;           // 24 per element
   std::vector<double> internal_work, hourglass_work, stable;
   std::vector<unsigned char> failure;
   double internal_energy = 0.0, hourglass_energy = 0.0;
@@ -111,14 +111,14 @@ static double membrane_log_strain(const Shell4Geometry& g, const double* b0) {
   const double c12 = f[0] * f[1] + f[2] * f[3];
   const double mean = 0.5 * (c11 + c22);
   const double radius = std::sqrt(0.25 * (c11 - c22) * (c11 - c22) + c12 * c12);
-  const double e1 = 0.5 * std::log(mean + radius), e2 = 0.5 * std::log(std::max(mean - radius, 1e-300));
+  const double e1 = 0.5 * std::log(mean + radius),
+               e2 = 0.5 * std::log(std::max(mean - radius, 1e-300));
   const double e3 = -(e1 + e2);
   return std::sqrt(2.0 / 3.0 * (e1 * e1 + e2 * e2 + e3 * e3));
 }
 
 template <class Law>
-void ShellBlock::Impl::element(std::size_t e, const ShellNodalState& s, double dt,
-                               const Law& law) {
+void ShellBlock::Impl::element(std::size_t e, const ShellNodalState& s, double dt, const Law& law) {
   double* f = &forces[24 * e];
   internal_work[e] = 0.0;
   hourglass_work[e] = 0.0;
@@ -191,11 +191,14 @@ void ShellBlock::Impl::element(std::size_t e, const ShellNodalState& s, double d
       Sym3 increment{{dt * (dxx + zk * kxx), dt * (dyy + zk * kyy), 0.0,
                       0.5 * dt * (gxy + zk * kxy), 0.5 * dt * ks * gyz, 0.5 * dt * ks * gxz}};
       PointHistory none;
-      now = history.empty()
-                ? plane_stress_update(law, old, increment, dt, none)
-                : plane_stress_update(law, old, increment, dt, history[np * e + k],
-                                      &thickness_ratio[np * e + k]);
-      work += wk * 0.5 * double_dot(add(old, now), increment);
+      now = history.empty() ? plane_stress_update(law, old, increment, dt, none)
+                            : plane_stress_update(law, old, increment, dt, history[np * e + k],
+                                                  &thickness_ratio[np * e + k]);
+      // The transverse shear stress is k G gamma (the law saw k gamma); its power is tau gamma.
+      Sym3 strain = increment;
+      strain[4] = 0.5 * dt * gyz;
+      strain[5] = 0.5 * dt * gxz;
+      work += wk * 0.5 * double_dot(add(old, now), strain);
       std::copy(now.c.begin(), now.c.end(), stored);
     }
     n[0] += wk * now[0];
@@ -204,8 +207,8 @@ void ShellBlock::Impl::element(std::size_t e, const ShellNodalState& s, double d
     m[0] += wk * zk * now[0];
     m[1] += wk * zk * now[1];
     m[2] += wk * zk * now[3];
-    qs[0] += wk * ks * now[5];
-    qs[1] += wk * ks * now[4];
+    qs[0] += wk * now[5];  // Q = int tau dz = k G h gamma (elastic)
+    qs[1] += wk * now[4];
   }
   internal_work[e] = area * work;
 
@@ -344,8 +347,9 @@ ShellBlock::ShellBlock(std::int64_t part_id, const MaterialParams& material,
   } else if (const auto* metal = std::get_if<MetalParams>(&material)) {
     m.density = metal->density, m.young = metal->young, m.poisson = metal->poisson;
     if (!metal->johnson_cook && functions == nullptr)
-      throw InputError(part_prefix(part_id) + "the flow curve of *MAT_METAL needs the deck's "
-                                              "functions");
+      throw InputError(part_prefix(part_id) +
+                       "the flow curve of *MAT_METAL needs the deck's "
+                       "functions");
   } else {
     throw InputError(part_prefix(part_id) +
                      "shells take *MAT_ELASTIC, *MAT_METAL or *MAT_JC (or *MAT_RIGID for a rigid "
@@ -432,8 +436,8 @@ double ShellBlock::initial_stable_step(const Nodes& reference) const {
   for (const Quad4& q : impl_->shells) {
     std::array<Vec3, 4> p;
     for (int a = 0; a < 4; ++a) p[a] = reference.position(static_cast<std::size_t>(q[a]));
-    step = std::min(step, shell4_critical_length(shell4_geometry(p), is_triangle(q)) /
-                              impl_->wave_speed);
+    step = std::min(step,
+                    shell4_critical_length(shell4_geometry(p), is_triangle(q)) / impl_->wave_speed);
   }
   return step;
 }

@@ -164,11 +164,11 @@ struct SolidBlock::Impl {
   // stored per element as R[6 j + k - 1] (component j), so that F = sum_k c_k (x) R_k.
   static constexpr std::size_t kReferenceModes = 18;
   std::vector<double> reference_gradient;
-  std::vector<double> stress;          // 6 per element (Sym3 order)
-  std::vector<double> viscous;         // 6 per active viscous term per element
-  std::vector<double> hourglass;       // generalized hourglass forces, 12 per element
-  std::vector<double> forces;          // 24 per element
-  std::vector<double> internal_work;   // per-element increments of the last step
+  std::vector<double> stress;         // 6 per element (Sym3 order)
+  std::vector<double> viscous;        // 6 per active viscous term per element
+  std::vector<double> hourglass;      // generalized hourglass forces, 12 per element
+  std::vector<double> forces;         // 24 per element
+  std::vector<double> internal_work;  // per-element increments of the last step
   std::vector<PointHistory> history;  // plastic strain and damage (metals)
   bool fails_by_damage = false;       // a metal with a damage property: erodes at D >= 1
   ErosionCriteria erosion;

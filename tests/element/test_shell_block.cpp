@@ -127,6 +127,30 @@ TEST(ShellPatch, BendingStateGivesExactMoments) {
   }
 }
 
+// Mindlin plate: a uniform transverse shear strain gamma_xz = dw/dx (rotations zero) gives the
+// shear force Q_x = k G h gamma with k = 5/6 (Reissner 1945; Mindlin 1951).
+TEST(ShellBlock, TransverseShearForceIsFiveSixthsGhGamma) {
+  Nodes nodes;
+  nodes.add(1, {0.0, 0.0, 0.0});
+  nodes.add(2, {0.2, 0.0, 0.0});
+  nodes.add(3, {0.2, 0.1, 0.0});
+  nodes.add(4, {0.0, 0.1, 0.0});
+  const double e = 2e11, nu = 0.3, h = 0.01, gamma = 1e-4;
+  ShellBlock block(1, ElasticParams{7800, e, nu}, {h, 5, 0.05}, {{0, 1, 2, 3}}, nodes);
+  Motion motion(4);
+  for (std::size_t i = 0; i < 4; ++i) motion.vz[i] = gamma * nodes.x[i];
+  block.update(motion.state(nodes), 1.0);
+  double n[3], m[3], q[2];
+  block.resultants(0, n, m, q);
+  const double expected = 5.0 / 6.0 * e / (2.0 * (1.0 + nu)) * h * gamma;
+  EXPECT_NEAR(q[0], expected, 1e-12 * expected);
+  EXPECT_NEAR(q[1], 0.0, 1e-12 * expected);
+  // The nodal forces: -Q A b1_a on each node in z, so the two ends carry -/+ Q b / 2 each.
+  const auto& f = block.element_forces();
+  EXPECT_NEAR(f[2], expected * 0.1 / 2.0, 1e-9 * expected);
+  EXPECT_NEAR(f[6 + 2], -expected * 0.1 / 2.0, 1e-9 * expected);
+}
+
 TEST(ShellBlock, RigidRotationOfAWarpedElementStrainsNothing) {
   Nodes nodes;
   nodes.add(1, {0.0, 0.0, 0.01});
@@ -143,7 +167,7 @@ TEST(ShellBlock, RigidRotationOfAWarpedElementStrainsNothing) {
   }
   block.update(motion.state(nodes), 1e-3);
   for (double f : block.element_forces()) EXPECT_NEAR(f, 0.0, 1e-3);  // vs forces ~1e9 * strain
-  for (double s : block.point_stress()) EXPECT_NEAR(s, 0.0, 1e-2);     // Pa, vs E ~ 2e11
+  for (double s : block.point_stress()) EXPECT_NEAR(s, 0.0, 1e-2);    // Pa, vs E ~ 2e11
 }
 
 TEST(ShellBlock, ForcesAreSelfEquilibratedOnAWarpedElement) {

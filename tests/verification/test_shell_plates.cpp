@@ -80,8 +80,8 @@ TEST(ShellCantilever, FirstBendingFrequencyIsEulerBernoulli) {
   const double expected =
       beta_l * beta_l / (2.0 * std::numbers::pi * L * L) * h * std::sqrt(210e9 / (12.0 * 7800.0));
   std::cout << "first frequency " << 1.0 / period << " Hz, Euler-Bernoulli " << expected
-            << " Hz, error " << 100.0 * (1.0 / period - expected) / expected
-            << "%; energy balance " << sim.energy_balance_error() << "\n";
+            << " Hz, error " << 100.0 * (1.0 / period - expected) / expected << "%; energy balance "
+            << sim.energy_balance_error() << "\n";
   EXPECT_NEAR(1.0 / period, expected, 0.02 * expected);
   EXPECT_LT(std::abs(sim.energy_balance_error()), 1e-3);
 }

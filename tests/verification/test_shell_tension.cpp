@@ -10,8 +10,9 @@
 // 300 MPa + 500 MPa epsp^0.5. Node 1 is held in X and Y, node 4 in X, all nodes in Z and in
 // rotation (a membrane state); nodes 2 and 3 move at 1 m/s in X (strain rate 100 /s, after a
 // 0.05 ms ramp) until t = 1 ms (eps ~ 0.095); the velocity then turns to -1 m/s over 0.05 ms and
-// the run stops at 1.045 ms, the stress down by about a third, before any reversed yield. The width contracts freely,
-// so the stress is uniaxial. Quasi-static: the element's wave transit time is 1.8 us.
+// the run stops at 1.045 ms, the stress down by about a third, before any reversed yield. The width
+// contracts freely, so the stress is uniaxial. Quasi-static: the element's wave transit time is 1.8
+// us.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -93,8 +94,9 @@ TEST(ShellMetalTension, StressFollowsTheFlowCurveAndUnloadsElastically) {
   EXPECT_GT(unloading_cycles, 10);
   EXPECT_LT(q[0], 0.7 * sigma_turn);  // unloaded by a third, still in tension
   std::cout << "flowing: |q - sigma_y(epsp)| / sigma_y <= " << worst_flow
-            << ", |eps - q/E - epsp| E / q <= " << worst_split << "; unloading: |q - elastic| / q <= "
-            << worst_unload << " (turn at eps " << eps_turn << ", epsp " << epsp_turn << ")\n";
+            << ", |eps - q/E - epsp| E / q <= " << worst_split
+            << "; unloading: |q - elastic| / q <= " << worst_unload << " (turn at eps " << eps_turn
+            << ", epsp " << epsp_turn << ")\n";
   EXPECT_GT(epsp_turn, 0.08);
   EXPECT_LT(worst_flow, 0.005);
   EXPECT_LT(worst_split, 0.005);
@@ -131,8 +133,8 @@ TEST(ShellMetalTension, JohnsonCookFailureErodesTheShellAtTheFailureStrain) {
     internal_before = s.energies().internal;
   });
   ASSERT_TRUE(eroded);
-  std::cout << "eroded after epsp = " << before << " (+" << increment << " per cycle), eps_f = "
-            << eps_f << "\n";
+  std::cout << "eroded after epsp = " << before << " (+" << increment
+            << " per cycle), eps_f = " << eps_f << "\n";
   EXPECT_LE(before, eps_f);
   EXPECT_GE(before + 1.5 * increment, eps_f);
 }

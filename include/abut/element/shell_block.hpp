@@ -7,9 +7,11 @@
 // theta the nodal angular velocity, so in the element frame v_x(z) = v_x + z theta_y and
 // v_y(z) = v_y - z theta_x. Strain rates: membrane d = sym grad v, curvature
 // kappa = (d theta_y/dx, -d theta_x/dy, d theta_y/dy - d theta_x/dx), transverse shear
-// gamma_xz = d v_z/dx + theta_y, gamma_yz = d v_z/dy - theta_x (shear factor 5/6). Nodal forces
-// and moments follow from the virtual power of the resultants N = int sigma dz, M = int z sigma
-// dz and Q = int tau dz, so that they are exactly the forces conjugate to the nodal velocities.
+// gamma_xz = d v_z/dx + theta_y, gamma_yz = d v_z/dy - theta_x; the transverse shear stress is
+// k G gamma with the shear factor k = 5/6 (the law is handed k gamma), so Q = k G h gamma. Nodal
+// forces and moments follow from the virtual power of the resultants N = int sigma dz, M = int z
+// sigma dz and Q = int tau dz, so that they are exactly the forces conjugate to the nodal
+// velocities.
 //
 // Warping: in a warped element node a lies z_a above the frame plane; the strain rates use the
 // velocity of the point where the node's fibre crosses that plane, v_a - z_a theta_a x e3, and
@@ -50,8 +52,8 @@ struct ShellNodalState {
 
 struct ShellSection {
   double thickness = 0.0;
-  int points = 5;              // Gauss points through the thickness, odd
-  double hourglass = 0.05;     // hourglass coefficient
+  int points = 5;           // Gauss points through the thickness, odd
+  double hourglass = 0.05;  // hourglass coefficient
   static constexpr double kShearFactor = 5.0 / 6.0;
 };
 

@@ -1,9 +1,10 @@
 #pragma once
 // The material-point seam of hypoelastic laws: an element hands a point its old stress (already
 // rotated to the current frame), the strain increment of the step, the step and the point's
-// history (plastic strain, damage); the law returns the new stress and advances the history. Hexahedra call
-// `update` as it is (3-D); shells call plane_stress_update, which finds the thickness strain that
-// makes the normal stress vanish. A new hypoelastic law is one value type with `update`.
+// history (plastic strain, damage); the law returns the new stress and advances the history.
+// Hexahedra call `update` as it is (3-D); shells call plane_stress_update, which finds the
+// thickness strain that makes the normal stress vanish. A new hypoelastic law is one value type
+// with `update`.
 #include <cmath>
 
 #include "abut/material/elastic.hpp"
@@ -37,8 +38,8 @@ struct MetalPoint {
   DuctileFailure failure;
   Sym3 update(const Sym3& rotated, const Sym3& increment, double dt, PointHistory& h) const {
     if (h.failed()) return Sym3{};
-    const PlasticUpdate u = radial_return(add(rotated, hooke(lame, increment)), lame.mu,
-                                          h.plastic_strain, dt, flow);
+    const PlasticUpdate u =
+        radial_return(add(rotated, hooke(lame, increment)), lame.mu, h.plastic_strain, dt, flow);
     const double dp = u.plastic_strain_increment;
     h.plastic_strain += dp;
     if (failure.active && dp > 0.0) {
