@@ -473,6 +473,16 @@ void ShellBlock::plastic_strain(std::vector<double>& out) const {
       out[e] = std::max(out[e], m.history[np * e + k].plastic_strain);
 }
 
+void ShellBlock::plastic_strain_rate(std::vector<double>& out) const {
+  const Impl& m = *impl_;
+  const std::size_t np = m.points();
+  out.assign(m.shells.size(), 0.0);
+  if (m.history.empty()) return;
+  for (std::size_t e = 0; e < m.shells.size(); ++e)
+    for (std::size_t k = 0; k < np; ++k)
+      out[e] = std::max(out[e], m.history[np * e + k].plastic_strain_rate);
+}
+
 void ShellBlock::resultants(std::size_t e, double n[3], double mm[3], double q[2]) const {
   const Impl& m = *impl_;
   const std::size_t np = m.points();

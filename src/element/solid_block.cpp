@@ -640,6 +640,12 @@ void SolidBlock::plastic_strain(std::vector<double>& out) const {
   for (std::size_t e = 0; e < impl_->history.size(); ++e) out[e] = impl_->history[e].plastic_strain;
 }
 
+void SolidBlock::plastic_strain_rate(std::vector<double>& out) const {
+  out.assign(size(), 0.0);
+  for (std::size_t e = 0; e < impl_->history.size(); ++e)
+    out[e] = impl_->history[e].plastic_strain_rate;
+}
+
 void SolidBlock::damage(std::vector<double>& out) const {
   out.assign(size(), 0.0);
   for (std::size_t e = 0; e < impl_->history.size(); ++e) out[e] = impl_->history[e].damage;

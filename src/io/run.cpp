@@ -81,9 +81,14 @@ class StateWriter {
       pressure_.resize(pressure_.size() + model_.mesh.shell_count(), 0.0);
       sim.shell_plastic_strain(shell_values_);
       plastic_strain_.insert(plastic_strain_.end(), shell_values_.begin(), shell_values_.end());
+      sim.plastic_strain_rate(plastic_strain_rate_);
+      sim.shell_plastic_strain_rate(shell_values_);
+      plastic_strain_rate_.insert(plastic_strain_rate_.end(), shell_values_.begin(),
+                                  shell_values_.end());
       cell_fields.push_back({"von_mises_stress", 1, von_mises_});
       cell_fields.push_back({"pressure", 1, pressure_});
       cell_fields.push_back({"plastic_strain", 1, plastic_strain_});
+      cell_fields.push_back({"plastic_strain_rate", 1, plastic_strain_rate_});
     }
     // Eroded elements disappear from the states.
     std::span<const Hex8> hexes = model_.mesh.hexes;
@@ -130,7 +135,7 @@ class StateWriter {
   PvdSeries series_;
   double last_time_ = 0.0;
   std::vector<double> displacement_, velocity_, part_id_, thickness_, von_mises_, pressure_,
-      plastic_strain_, shell_values_;
+      plastic_strain_, plastic_strain_rate_, shell_values_;
   std::vector<double> contact_force_, contact_pressure_, wear_;
   std::vector<Hex8> alive_hexes_;
   std::vector<Quad4> alive_shells_;

@@ -56,6 +56,12 @@ void Simulation::shell_field(void (ShellBlock::*field)(std::vector<double>&) con
 void Simulation::shell_von_mises_stress(std::vector<double>& out) const {
   shell_field(&ShellBlock::von_mises_stress, out);
 }
+void Simulation::plastic_strain_rate(std::vector<double>& out) const {
+  element_field(&SolidBlock::plastic_strain_rate, out);
+}
+void Simulation::shell_plastic_strain_rate(std::vector<double>& out) const {
+  shell_field(&ShellBlock::plastic_strain_rate, out);
+}
 void Simulation::shell_plastic_strain(std::vector<double>& out) const {
   shell_field(&ShellBlock::plastic_strain, out);
 }

@@ -71,8 +71,8 @@ TEST(ShellMetalTension, StressFollowsTheFlowCurveAndUnloadsElastically) {
   const auto flow = [](double epsp) { return 300e6 + 500e6 * std::sqrt(epsp); };
   double worst_flow = 0.0, worst_split = 0.0;
   double sigma_turn = 0.0, eps_turn = 0.0, epsp_turn = 0.0, worst_unload = 0.0;
-  std::vector<double> q, ep;
-  double previous_epsp = 0.0;
+  std::vector<double> q, ep, rate;
+  double previous_epsp = 0.0, worst_rate = 0.0;
   int unloading_cycles = 0;
   verification::run_to(sim, model.time.end_time, [&](const Simulation& s) {
     s.shell_von_mises_stress(q);
@@ -84,6 +84,14 @@ TEST(ShellMetalTension, StressFollowsTheFlowCurveAndUnloadsElastically) {
         worst_split = std::max(worst_split, std::abs(eps - q[0] / 210e9 - ep[0]) * 210e9 / q[0]);
       }
       sigma_turn = q[0], eps_turn = eps, epsp_turn = ep[0];
+      if (s.time() > 5e-4 && s.time() < 9.5e-4) {
+        // Plastic strain rate in steady flow at 1 m/s: eps' = v / L splits into the plastic
+        // rate and sigma' / E = H eps_p' / E, H = d sigma_y / d epsp = 250 MPa / sqrt(epsp).
+        s.shell_plastic_strain_rate(rate);
+        const double hardening = 250e6 / std::sqrt(ep[0]);
+        const double expected = (1.0 / s.x()[1]) / (1.0 + hardening / 210e9);
+        worst_rate = std::max(worst_rate, std::abs(rate[0] - expected) / expected);
+      }
     } else if (s.time() > 0.001025) {  // the velocity has turned: unloading
       const double elastic = sigma_turn - 210e9 * (eps_turn - eps);
       worst_unload = std::max(worst_unload, std::abs(q[0] - elastic) / sigma_turn);
@@ -92,6 +100,8 @@ TEST(ShellMetalTension, StressFollowsTheFlowCurveAndUnloadsElastically) {
     previous_epsp = ep[0];
   });
   EXPECT_GT(unloading_cycles, 10);
+  std::cout << "plastic strain rate in steady flow within " << worst_rate << " of (v/L)/(1 + H/E)\n";
+  EXPECT_LT(worst_rate, 0.01);
   EXPECT_LT(q[0], 0.7 * sigma_turn);  // unloaded by a third, still in tension
   std::cout << "flowing: |q - sigma_y(epsp)| / sigma_y <= " << worst_flow
             << ", |eps - q/E - epsp| E / q <= " << worst_split

@@ -84,6 +84,7 @@ class ShellBlock {
   // Per element: the largest von Mises stress and plastic strain over its thickness points.
   void von_mises_stress(std::vector<double>& out) const;
   void plastic_strain(std::vector<double>& out) const;
+  void plastic_strain_rate(std::vector<double>& out) const;
   // Stress of every thickness point in the element frame, Sym3 order (xx, yy, zz = 0, xy, yz, zx),
   // 6 * points per element, from the bottom (z = -h/2) up.
   const std::vector<double>& point_stress() const;

@@ -77,6 +77,7 @@ class SolidBlock {
   // Per-element results at the last update (for output).
   void von_mises_stress(std::vector<double>& out) const;  // resized to size()
   void plastic_strain(std::vector<double>& out) const;    // equivalent plastic strain; 0 if elastic
+  void plastic_strain_rate(std::vector<double>& out) const;  // of the last step; 0 if elastic
   void damage(std::vector<double>& out) const;  // ductile damage (*PROP_DAMAGE_JC); 0 without
   // Erosion: an element meeting a criterion at the end of a step is removed for good: no forces,
   // no stress, no step limit; its mass stays on its nodes. A metal with a damage property also

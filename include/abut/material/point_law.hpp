@@ -16,6 +16,7 @@ namespace abut {
 struct PointHistory {
   double plastic_strain = 0.0;  // equivalent plastic strain
   double damage = 0.0;          // ductile damage (metals with a did); >= 1: the point has failed
+  double plastic_strain_rate = 0.0;  // of the last step
   bool failed() const { return damage >= 1.0; }
 };
 
@@ -37,11 +38,15 @@ struct MetalPoint {
   FlowStress flow;
   DuctileFailure failure;
   Sym3 update(const Sym3& rotated, const Sym3& increment, double dt, PointHistory& h) const {
-    if (h.failed()) return Sym3{};
+    if (h.failed()) {
+      h.plastic_strain_rate = 0.0;
+      return Sym3{};
+    }
     const PlasticUpdate u =
         radial_return(add(rotated, hooke(lame, increment)), lame.mu, h.plastic_strain, dt, flow);
     const double dp = u.plastic_strain_increment;
     h.plastic_strain += dp;
+    h.plastic_strain_rate = dt > 0.0 ? dp / dt : 0.0;
     if (failure.active && dp > 0.0) {
       const double eps_f = failure_strain(failure, u.stress, dt > 0.0 ? dp / dt : 0.0);
       h.damage = eps_f > 0.0 ? h.damage + dp / eps_f : 1.0;

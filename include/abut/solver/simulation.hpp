@@ -80,11 +80,13 @@ class Simulation {
   void von_mises_stress(std::vector<double>& out) const;
   void pressure(std::vector<double>& out) const;
   void plastic_strain(std::vector<double>& out) const;  // equivalent plastic strain per hex
+  void plastic_strain_rate(std::vector<double>& out) const;  // of the last step, per hex
   std::vector<std::uint8_t> eroded_hexes() const;       // 1 per eroded hex (mesh order)
   // Per-shell results in Model mesh order (rigid shells: 0): the largest von Mises stress and
   // plastic strain over the element's through-thickness points.
   void shell_von_mises_stress(std::vector<double>& out) const;
   void shell_plastic_strain(std::vector<double>& out) const;
+  void shell_plastic_strain_rate(std::vector<double>& out) const;
   std::vector<std::uint8_t> eroded_shells() const;  // 1 per eroded shell (mesh order)
 
   Energies energies() const;
