@@ -43,18 +43,24 @@ ContactInterface::PointFrame ContactInterface::frame(const Side& side, std::size
     r.active = side.active[f] != 0;
     return r;
   }
-  // A node: the area-weighted normal of its active facets; inactive when it has none.
+  // A node: the area-weighted normal of its active facets; inactive when it has none. A shell's
+  // node counts one side of each shell and has no normal: it may touch with either side.
   r.x = {in.x[node], in.y[node], in.z[node]};
   Vec3 n;
   for (std::int32_t k = side.node_facet_start[node]; k < side.node_facet_start[node + 1]; ++k) {
     const std::int32_t f = side.node_facets[k];
     if (!side.active[f]) continue;
+    r.active = true;
+    const std::int32_t twin = side.surface.twin[f];
+    if (twin >= 0) {
+      r.two_sided = true;
+      if (twin < f) continue;  // the second side of a shell already counted
+    }
     const QuadCorners c = quad_corners(side.surface.facets[f], in.x, in.y, in.z);
     n += cross(c[2] - c[0], c[3] - c[1]);
-    r.active = true;
   }
   const double length = norm(n);
-  r.normal = length > 0.0 ? n / length : Vec3{};
+  r.normal = length > 0.0 && !r.two_sided ? n / length : Vec3{};
   r.area = side.node_area[node];
   r.vector_area =
       n * 0.125;  // each cross product of the diagonals is twice the facet's area vector
@@ -65,10 +71,22 @@ Partner ContactInterface::partner_of(const Pass& pass, std::size_t p, const Poin
                                      const ContactInput& in, std::int32_t previous) const {
   const Side& own = sides_[pass.own];
   const Side& target = sides_[pass.target];
-  const TargetFacets facets{
-      target.surface.facets, target.sharp, target.active, target.depth, in.x, in.y, in.z};
+  const TargetFacets facets{target.surface.facets,
+                            target.sharp,
+                            target.active,
+                            target.depth,
+                            target.surface.twin,
+                            target.facet_gap,
+                            target.facet_min_edge,
+                            in.x,
+                            in.y,
+                            in.z};
   PartnerRules rules;  // the regular search: within the facets' own detection depth
   rules.depth_above = settings_.adhesion ? settings_.adhesion->zone() : 0.0;
+  rules.point_gap = own.point_gap[p];
+  rules.point_min_edge = own.point_min_edge[p];
+  rules.mesh_fraction = settings_.gaps.mesh_fraction.value_or(
+      std::numeric_limits<double>::infinity());
   rules.from_behind = settings_.sense == ContactSense::Negative;
   rules.edge_tolerance = settings_.edge_tolerance;
   rules.smooth_reach = smooth_reach_;
@@ -142,7 +160,9 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   const bool node_point = own.point_node[p] >= 0;
   double area = f.area;
   auto facing_area = [&](const Vec3& partner_normal) {
-    if (node_point) area = std::max(-dot(f.vector_area, partner_normal), 0.0);
+    if (node_point)
+      area = f.two_sided ? std::abs(dot(f.vector_area, partner_normal))
+                         : std::max(-dot(f.vector_area, partner_normal), 0.0);
     return area > 0.0;
   };
   // The point's share of each node's mass: m_i * N_i * (its area / the node's area), so that

@@ -63,7 +63,7 @@ std::vector<FacetPoint> facet_rule(int accuracy_level, bool edge_refinement, std
 
 std::vector<std::uint8_t> sharp_edges(const ContactSurface& surface, std::span<const double> x,
                                       std::span<const double> y, std::span<const double> z,
-                                      double angle_degrees) {
+                                      double angle_degrees, std::vector<std::uint8_t>* free_edges) {
   const std::size_t n = surface.size();
   std::vector<Vec3> normal(n);
   for (std::size_t f = 0; f < n; ++f) {
@@ -77,6 +77,7 @@ std::vector<std::uint8_t> sharp_edges(const ContactSurface& surface, std::span<c
   // Edges keyed by their sorted node pair; sorting groups the facets that share an edge.
   struct EdgeUse {
     std::int32_t lo, hi, facet, local;
+    bool forward;  // runs from lo to hi
   };
   std::vector<EdgeUse> uses;
   uses.reserve(4 * n);
@@ -84,7 +85,7 @@ std::vector<std::uint8_t> sharp_edges(const ContactSurface& surface, std::span<c
     for (int e = 0; e < 4; ++e) {
       const auto a = surface.facets[f][e], b = surface.facets[f][(e + 1) % 4];
       if (a == b) continue;  // collapsed edge of a triangle
-      uses.push_back({std::min(a, b), std::max(a, b), static_cast<std::int32_t>(f), e});
+      uses.push_back({std::min(a, b), std::max(a, b), static_cast<std::int32_t>(f), e, a < b});
     }
   std::sort(uses.begin(), uses.end(), [](const EdgeUse& p, const EdgeUse& q) {
     if (p.lo != q.lo) return p.lo < q.lo;
@@ -92,16 +93,25 @@ std::vector<std::uint8_t> sharp_edges(const ContactSurface& surface, std::span<c
     return p.facet < q.facet;
   });
   const double cos_limit = std::cos(angle_degrees * std::numbers::pi / 180.0);
+  const bool shells = !surface.twin.empty();
   std::vector<std::uint8_t> sharp(n, 0);
+  if (free_edges) free_edges->assign(n, 0);
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i + 1;
     while (j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi) ++j;
     for (std::size_t k = i; k < j; ++k) {
-      bool is_sharp = (j - i == 1);  // free edge
-      for (std::size_t m = i; m < j; ++m)
-        if (m != k && dot(normal[uses[k].facet], normal[uses[m].facet]) < cos_limit)
-          is_sharp = true;
-      if (is_sharp) sharp[uses[k].facet] |= static_cast<std::uint8_t>(1u << uses[k].local);
+      // Neighbours across the edge: the facets that run it the other way (a consistently
+      // oriented surface), except the other side of the same shell, which meets every edge of it.
+      bool neighbour = false, is_sharp = false;
+      for (std::size_t m = i; m < j; ++m) {
+        if (m == k || uses[m].forward == uses[k].forward) continue;
+        if (shells && surface.twin[uses[k].facet] == uses[m].facet) continue;
+        neighbour = true;
+        if (dot(normal[uses[k].facet], normal[uses[m].facet]) < cos_limit) is_sharp = true;
+      }
+      const auto bit = static_cast<std::uint8_t>(1u << uses[k].local);
+      if (!neighbour || is_sharp) sharp[uses[k].facet] |= bit;
+      if (!neighbour && free_edges) (*free_edges)[uses[k].facet] |= bit;
     }
     i = j;
   }

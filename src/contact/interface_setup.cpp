@@ -34,6 +34,21 @@ double smooth_edge_reach(double alpha_edge_degrees) {
 
 bool is_radioss_rule(StiffnessRule r) { return r != StiffnessRule::FacetPenalty; }
 
+double shortest_edge(const QuadCorners& c) {
+  double shortest = kInfinity;
+  for (int a = 0; a < 4; ++a) {
+    const double l = norm(c[(a + 1) % 4] - c[a]);
+    if (l > 0.0) shortest = std::min(shortest, l);  // a triangle's collapsed edge does not count
+  }
+  return shortest;
+}
+
+// A surface built without add() may leave the shell fields empty: all its facets are solid faces.
+void complete(ContactSurface& s) {
+  if (s.twin.empty()) s.twin.assign(s.size(), -1);
+  if (s.young_modulus.empty()) s.young_modulus.assign(s.size(), 0.0);
+}
+
 }  // namespace
 
 ContactInterface::ContactInterface(ContactSettings settings, ContactSurface surface1,
@@ -41,6 +56,8 @@ ContactInterface::ContactInterface(ContactSettings settings, ContactSurface surf
                                    const ContactInput& initial,
                                    std::span<const std::int32_t> secondary_nodes)
     : settings_(std::move(settings)), mass_(node_mass.begin(), node_mass.end()) {
+  complete(surface1);
+  complete(surface2);
   validate(surface1, surface2, initial.x.size());
   if (!secondary_nodes.empty() && settings_.discretisation != Discretisation::NodeToSurface)
     throw ContactSetupError("discretisation",
@@ -114,10 +131,13 @@ void ContactInterface::build_sides(const ContactInput& in,
     Side& side = sides_[side_index];
     const ContactSurface& surface = side.surface;
     const std::size_t n = surface.size();
-    side.sharp = sharp_edges(surface, in.x, in.y, in.z, s.edge_angle);
+    std::vector<std::uint8_t> free_edges;
+    side.sharp = sharp_edges(surface, in.x, in.y, in.z, s.edge_angle, &free_edges);
     side.active.assign(n, 1);
     side.depth.resize(n);
     side.facet_km.assign(n, 0.0);
+    side.facet_gap.assign(n, 0.0);
+    side.facet_min_edge.resize(n);
     side.node_area.assign(mass_.size(), 0.0);
     for (std::size_t f = 0; f < n; ++f) {
       const QuadCorners c = quad_corners(surface.facets[f], in.x, in.y, in.z);
@@ -125,13 +145,21 @@ void ContactInterface::build_sides(const ContactInput& in,
         const Vec3 centre = quad_point(c, 0.0, 0.0);
         side.active[f] = s.initial_region(centre.x, centre.y, centre.z) ? 1 : 0;
       }
+      const bool shell = surface.twin[f] >= 0;
       side.depth[f] = s.detection_depth.value_or(0.5 * surface.thickness[f]);
       side.max_pfac = std::max(side.max_pfac, surface.penalty[f]);
       margin_ = std::min(margin_, side.depth[f]);
+      if (shell)
+        side.facet_gap[f] = std::min(shell_gap(s.gaps, surface.thickness[f]), s.gaps.max_main);
+      side.max_facet_gap = std::max(side.max_facet_gap, side.facet_gap[f]);
+      side.facet_min_edge[f] = shortest_edge(c);
       if (is_radioss_rule(s.stiffness.rule))
-        side.facet_km[f] = main_segment_stiffness(surface.bulk_modulus[f],
-                                                  norm(cross(c[2] - c[0], c[3] - c[1])) * 0.5,
-                                                  surface.element_volume[f], s.stiffness.scale);
+        side.facet_km[f] =
+            shell ? shell_segment_stiffness(surface.young_modulus[f], surface.thickness[f],
+                                            s.stiffness.scale)
+                  : main_segment_stiffness(surface.bulk_modulus[f],
+                                           norm(cross(c[2] - c[0], c[3] - c[1])) * 0.5,
+                                           surface.element_volume[f], s.stiffness.scale);
       side.max_km = std::max(side.max_km, side.facet_km[f]);
     }
     // Node -> facets (CSR), for node normals, areas and thicknesses.
@@ -149,7 +177,7 @@ void ContactInterface::build_sides(const ContactInput& in,
           side.node_facets[fill[surface.facets[f][a]]++] = static_cast<std::int32_t>(f);
     const double other_size = typical_size[sides_.size() == 1 ? 0 : 1 - side_index];
     build_points(side, in, other_size,
-                 side_index == 0 ? secondary_nodes : std::span<const std::int32_t>{});
+                 side_index == 0 ? secondary_nodes : std::span<const std::int32_t>{}, free_edges);
   }
   if (s.search_margin) margin_ = *s.search_margin;
 
@@ -162,7 +190,8 @@ void ContactInterface::build_sides(const ContactInput& in,
 }
 
 void ContactInterface::build_points(Side& side, const ContactInput& in, double other_size,
-                                    std::span<const std::int32_t> secondary_nodes) {
+                                    std::span<const std::int32_t> secondary_nodes,
+                                    const std::vector<std::uint8_t>& free_edges) {
   const ContactSettings& s = settings_;
   const ContactSurface& surface = side.surface;
   std::vector<double> facet_area(surface.size(), 0.0);
@@ -201,8 +230,10 @@ void ContactInterface::build_points(Side& side, const ContactInput& in, double o
           double jacobian = 0.0;
           quad_normal(c, xi, eta, jacobian);
           const auto shape = quad_shape(xi, eta);
-          for (int a = 0; a < 4; ++a)
-            side.node_area[surface.facets[f][a]] += shape[a] * weight * jacobian;
+          // A shell's node carries the area of one side.
+          if (surface.twin[f] < 0 || surface.twin[f] > static_cast<std::int32_t>(f))
+            for (int a = 0; a < 4; ++a)
+              side.node_area[surface.facets[f][a]] += shape[a] * weight * jacobian;
           facet_area[f] += weight * jacobian;
           if (s.discretisation == Discretisation::SurfaceToSurface)
             add_point(static_cast<std::int32_t>(f), -1, xi, eta, weight);
@@ -226,11 +257,22 @@ void ContactInterface::build_points(Side& side, const ContactInput& in, double o
       add_point(side.node_facets[side.node_facet_start[node]], node, -1.0, -1.0, 0.0);
     }
   }
-  // Per point: penalty, Radioss secondary stiffness, share of its facet, depth, thickness, part.
+  // Nodes on a free shell edge (Igap0).
+  std::vector<std::uint8_t> on_free_edge(mass_.size(), 0);
+  for (std::size_t f = 0; f < surface.size(); ++f)
+    for (int e = 0; e < 4; ++e)
+      if (free_edges[f] & (1u << e)) {
+        on_free_edge[surface.facets[f][e]] = 1;
+        on_free_edge[surface.facets[f][(e + 1) % 4]] = 1;
+      }
+  // Per point: penalty, Radioss secondary stiffness, share of its facet, depth, thickness, gap,
+  // part.
   const std::size_t n = side.point_facet.size();
   for (auto* v : {&side.point_pfac, &side.point_ks, &side.point_share, &side.point_depth,
-                  &side.point_thickness})
+                  &side.point_thickness, &side.point_gap})
     v->assign(n, 0.0);
+  side.point_min_edge.assign(n, kInfinity);
+  const bool self = sides_.size() == 1;
   side.point_part.assign(n, 0);
   side.max_point_depth = 0.0;
   const bool radioss = is_radioss_rule(s.stiffness.rule);
@@ -245,14 +287,23 @@ void ContactInterface::build_points(Side& side, const ContactInput& in, double o
     }
     for (std::int32_t k = first; k < last; ++k) {
       const std::int32_t f = facets ? facets[k] : k;
+      const bool shell = surface.twin[f] >= 0;
       side.point_pfac[p] = std::max(side.point_pfac[p], surface.penalty[f]);
       side.point_thickness[p] = std::max(side.point_thickness[p], surface.thickness[f]);
+      if (shell)
+        side.point_gap[p] = std::max(side.point_gap[p], shell_gap(s.gaps, surface.thickness[f]));
+      if (self) side.point_min_edge[p] = std::min(side.point_min_edge[p], side.facet_min_edge[f]);
       if (radioss)
-        side.point_ks[p] =
-            std::max(side.point_ks[p],
-                     secondary_node_stiffness(surface.bulk_modulus[f], surface.element_volume[f],
-                                              s.stiffness.scale));
+        side.point_ks[p] = std::max(
+            side.point_ks[p],
+            shell ? shell_segment_stiffness(surface.young_modulus[f], surface.thickness[f],
+                                            s.stiffness.scale)
+                  : secondary_node_stiffness(surface.bulk_modulus[f], surface.element_volume[f],
+                                             s.stiffness.scale));
     }
+    if (node >= 0 && s.gaps.zero_at_free_edges && on_free_edge[node]) side.point_gap[p] = 0.0;
+    side.point_gap[p] = std::min(side.point_gap[p], s.gaps.max_secondary);
+    side.max_point_gap = std::max(side.max_point_gap, side.point_gap[p]);
     side.point_part[p] = side.facet_part[side.point_facet[p]];
     if (node >= 0) {
       side.point_share[p] = 1.0;

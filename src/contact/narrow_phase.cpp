@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "abut/contact/gap.hpp"
+
 namespace abut {
 namespace {
 
@@ -31,9 +33,11 @@ Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> c
     QuadCorners c;
     for (int a = 0; a < 4; ++a) c[a] = {target.x[nodes[a]], target.y[nodes[a]], target.z[nodes[a]]};
     const double below = std::max(target.depth[f], rules.point_depth);
+    const double g = pair_gap(rules.point_gap, target.gap[f], rules.point_min_edge,
+                              target.min_edge[f], rules.mesh_fraction);
     // The distance to the facet's bounding box bounds the distance to the facet from below:
     // skip facets that cannot be within reach or closer than the best one so far.
-    const double reach = std::max({below, rules.depth_above, rules.edge_tolerance});
+    const double reach = std::max({below, rules.depth_above, rules.edge_tolerance}) + g;
     double box_distance2 = 0.0;
     for (int i = 0; i < 3; ++i) {
       const double lo = std::min({c[0][i], c[1][i], c[2][i], c[3][i]});
@@ -41,14 +45,18 @@ Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> c
       const double out = std::max({lo - x_p[i], x_p[i] - hi, 0.0});
       box_distance2 += out * out;
     }
-    if (box_distance2 > reach * reach || box_distance2 > best_distance * best_distance) continue;
+    const double closer = best_distance + g;  // nearer than this to beat the best one so far
+    if (box_distance2 > reach * reach || closer < 0.0 || box_distance2 > closer * closer) continue;
     const QuadProjection q = project_onto_quad(c, x_p);
+    if (target.twin[f] >= 0 && q.gap < 0.0) continue;  // the other side of the shell
+    const double gap = q.gap - g;
     if (has_normal) {
       const double facing = dot(n_p, q.normal);
       if (rules.from_behind ? facing <= 0.0 : facing >= 0.0) continue;
     }
     // Beyond a sharp (or free) edge only within delta_edge; beyond a smooth edge only within the
-    // dead zone of a convex edge, |gap| tan(alpha_edge) wide (docs/contact.md, narrow phase).
+    // dead zone of a convex edge, |gap| tan(alpha_edge) wide (docs/contact.md, narrow phase),
+    // the distance counted from the facet itself (a shell's mid-surface) as the dead zone is.
     if (q.crossed_edges != 0) {
       const bool sharp = (q.crossed_edges & target.sharp[f]) != 0;
       const double allowed =
@@ -59,11 +67,11 @@ Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> c
       if (q.overshoot > allowed && q.overshoot > kEdgeRoundOff * norm(c[2] - c[0])) continue;
     }
     // The far side: deeper than the pair's detection depth (or, from behind, further out).
-    const double inward = rules.from_behind ? q.gap : -q.gap;
+    const double inward = rules.from_behind ? gap : -gap;
     if (inward > below || -inward > std::max(rules.depth_above, below)) continue;
-    if (q.distance < best_distance) {
-      best_distance = q.distance;
-      best = {f, q.xi, q.eta, q.gap};
+    if (q.distance - g < best_distance) {
+      best_distance = q.distance - g;
+      best = {f, q.xi, q.eta, gap};
     }
   }
   return best;

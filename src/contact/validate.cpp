@@ -63,6 +63,12 @@ void ContactInterface::validate(const ContactSurface& s1, const ContactSurface& 
   for (const PairScale& ps : s.pair_scales)
     if (!(ps.scale > 0.0) || !std::isfinite(ps.scale))
       fail("pair_scales", "a penalty scale factor must be > 0");
+  const GapSettings& g = s.gaps;
+  if (!(g.scale >= 0.0) || !std::isfinite(g.scale)) fail("gaps", "the gap scale must be >= 0");
+  if (!(g.max_secondary >= 0.0) || !(g.max_main >= 0.0))
+    fail("gaps", "the maximum gaps must be >= 0");
+  if (g.mesh_fraction && !(*g.mesh_fraction > 0.0))
+    fail("gaps", "the fraction of the mesh size must be > 0");
   if (s1.size() == 0) fail("surface1", "surface 1 has no facets");
   if (s2.size() == 0) fail("surface2", "surface 2 has no facets");
   const bool radioss = k.rule != StiffnessRule::FacetPenalty;
@@ -70,8 +76,10 @@ void ContactInterface::validate(const ContactSurface& s1, const ContactSurface& 
   for (const ContactSurface* surface : {&s1, &s2}) {
     const std::string name = "surface" + std::to_string(which++);
     const std::size_t n = surface->size();
-    if (surface->part.size() != n || surface->penalty.size() != n || surface->thickness.size() != n)
-      fail(name.c_str(), "part, penalty and thickness need one entry per facet");
+    if (surface->part.size() != n || surface->penalty.size() != n ||
+        surface->thickness.size() != n || surface->twin.size() != n ||
+        surface->young_modulus.size() != n)
+      fail(name.c_str(), "part, penalty, thickness, twin and Young's modulus need one entry per facet");
     for (std::size_t f = 0; f < n; ++f) {
       if (!(surface->penalty[f] > 0.0) || !std::isfinite(surface->penalty[f]))
         fail(name.c_str(),
@@ -79,8 +87,21 @@ void ContactInterface::validate(const ContactSurface& s1, const ContactSurface& 
       if (!(surface->thickness[f] > 0.0))
         fail(name.c_str(),
              "a facet of part " + std::to_string(surface->part[f]) + " has no positive thickness");
-      if (radioss && (surface->bulk_modulus.size() != n || surface->element_volume.size() != n ||
-                      !(surface->bulk_modulus[f] > 0.0) || !(surface->element_volume[f] > 0.0)))
+      const std::int32_t twin = surface->twin[f];
+      const bool shell = twin >= 0;
+      if (shell && (static_cast<std::size_t>(twin) >= n || twin == static_cast<std::int32_t>(f) ||
+                    surface->twin[twin] != static_cast<std::int32_t>(f)))
+        fail(name.c_str(), "the two sides of a shell must name each other as twins");
+      if (shell && s.sense == ContactSense::Negative)
+        fail("sense",
+             "contact from behind (sense NEGATIVE) has no meaning on shells: both of their sides "
+             "are contact surfaces");
+      if (radioss && shell && !(surface->young_modulus[f] > 0.0))
+        fail("stiffness", "the Radioss stiffness rules need each shell's Young's modulus (part " +
+                              std::to_string(surface->part[f]) + ")");
+      if (radioss && !shell &&
+          (surface->bulk_modulus.size() != n || surface->element_volume.size() != n ||
+           !(surface->bulk_modulus[f] > 0.0) || !(surface->element_volume[f] > 0.0)))
         fail(
             "stiffness",
             "the Radioss stiffness rules need each facet's bulk modulus and element volume (part " +

@@ -7,7 +7,6 @@
 #include <set>
 
 #include "abut/mesh/shell_generators.hpp"
-#include "abut/solver/contact_surfaces.hpp"
 #include "deck_reader.hpp"
 
 namespace abut::deck {
@@ -118,10 +117,6 @@ void DeckReader::resolve_shells() {
   }
 
   if (mesh.shell_count() == 0) return;
-  for (const ContactSpec& c : model.contacts) {
-    if (c.surface1.type != EntityType::NodeSet) require_solid_surface(model, c.surface1);
-    require_solid_surface(model, c.surface2);
-  }
   const auto require_solid_parts = [&](const EntityRef& entity, const std::string& command) {
     std::vector<std::int64_t> parts = model.parts_of(entity);
     for (const std::int64_t p : parts) {

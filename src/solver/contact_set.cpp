@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "abut/contact/penalty.hpp"
+#include "abut/element/shell4.hpp"
 #include "abut/element/stable_step.hpp"
 #include "abut/mesh/skin.hpp"
 #include "abut/solver/contact_surfaces.hpp"
@@ -50,7 +51,9 @@ std::map<std::int64_t, PartPenalty> part_penalties(const Model& model, const Con
                        "system with *UNIT_SYSTEM or give pfac on line 2");
     p.penalty = is_rigid(material) ? rigid_penalty(v_max, *model.units)
                                    : automatic_penalty(initial_moduli(material).bulk,
-                                                       smallest_element_volume(model.mesh, part_id),
+                                                       smallest_element_volume(
+                                                           model.mesh, part_id,
+                                                           model.find_part(part_id)->thickness),
                                                        v_max, *model.units);
   }
   return out;
@@ -185,11 +188,20 @@ ContactSettings settings_of(const Model& model, const ContactSpec& spec) {
   return s;
 }
 
-// Critical step of a face's hex (stable_step.hpp), its material's P-wave speed and density.
+// Critical step of a face's hex (stable_step.hpp), its material's P-wave speed and density, or
+// of a shell (shell4.hpp) with the plate wave speed.
 double element_step(const Model& model, const SkinFace& f) {
   const MaterialParams& material = model.material_of_part(f.part);
   const ElasticModuli m = initial_moduli(material);
   const double lambda = m.bulk - 2.0 * m.shear / 3.0;
+  if (f.shell >= 0) {
+    std::array<Vec3, 4> p;
+    for (int a = 0; a < 4; ++a) p[a] = model.mesh.nodes.position(static_cast<std::size_t>(f.nodes[a]));
+    const double young = 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear);
+    const double nu = lambda / (2.0 * (lambda + m.shear));
+    const double length = shell4_critical_length(shell4_geometry(p), f.nodes[2] == f.nodes[3]);
+    return length / std::sqrt(young / (density_of(material) * (1.0 - nu * nu)));
+  }
   const Hex8& hex = model.mesh.hexes[static_cast<std::size_t>(f.hex)];
   const double length =
       hex8_critical_length(hex8_modal_gradient_at(hex, model.mesh.nodes), lambda, m.shear);
@@ -210,7 +222,8 @@ double face_area(const Nodes& nodes, const SkinFace& f) {
   return 0.5 * norm(cross(at(2) - at(0), at(3) - at(1)));
 }
 
-// The exterior faces holding at least one of `nodes`; InputError if a node is on none.
+// The contact faces (exterior faces of hexes, shells) holding at least one of `nodes`; InputError
+// if a node is on none.
 std::vector<SkinFace> faces_touching(const std::vector<SkinFace>& faces,
                                      const std::vector<std::int32_t>& nodes, std::size_t node_count,
                                      const EntityRef& entity) {
@@ -228,17 +241,20 @@ std::vector<SkinFace> faces_touching(const std::vector<SkinFace>& faces,
     if (!found[static_cast<std::size_t>(n)])
       throw InputError(entity.where,
                        "node set " + std::to_string(entity.id) +
-                           " holds a node that is not on the model's exterior surface; node-to-"
-                           "surface contact of free nodes is not supported yet");
+                           " holds a node that is neither on the model's exterior surface nor on a "
+                           "shell; node-to-surface contact of free nodes is not supported yet");
   return out;
 }
 
-// Bulk modulus for the Radioss stiffness rules. A rigid part has none: it gets the modulus that
-// gives seed 000's rigid penalty over its smallest element, K = pfac_rigid * L_min.
-double radioss_bulk_modulus(const Model& model, std::int64_t part, const PartPenalty& p) {
+// Moduli for the Radioss stiffness rules. A rigid part has none: it gets the bulk modulus that
+// gives seed 000's rigid penalty over its smallest element, B = pfac_rigid * L_min, and the shear
+// modulus 1.5 B of a material with nu = 0 (E = 3 B for shells).
+ElasticModuli radioss_moduli(const Model& model, std::int64_t part, const PartPenalty& p) {
   const MaterialParams& material = model.material_of_part(part);
-  if (!is_rigid(material)) return initial_moduli(material).bulk;
-  return p.penalty * std::cbrt(smallest_element_volume(model.mesh, part));
+  if (!is_rigid(material)) return initial_moduli(material);
+  const double bulk = p.penalty * std::cbrt(smallest_element_volume(
+                                      model.mesh, part, model.find_part(part)->thickness));
+  return {bulk, 1.5 * bulk};
 }
 
 // The deck field behind a contact-library setting, for error messages.
@@ -368,8 +384,8 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
     std::vector<SkinFace> faces1;
     if (spec.surface1.type == EntityType::NodeSet) {
       secondary_nodes = model.nodes_of(spec.surface1);
-      faces1 = faces_touching(exterior_faces(model.mesh, spec.merge), secondary_nodes, nodes.size(),
-                              spec.surface1);
+      faces1 = faces_touching(contact_faces(model, EntityRef{EntityType::All, 0, spec.surface1.where}, spec.merge),
+                              secondary_nodes, nodes.size(), spec.surface1);
     } else {
       faces1 = contact_faces(model, spec.surface1, spec.merge);
     }
@@ -386,10 +402,10 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
         return element_penalty(element_step(model, f), lightest_node(f, node_mass),
                                face_area(model.mesh.nodes, f));
       };
-    std::function<double(std::int64_t)> bulk_of;
+    std::function<ElasticModuli(std::int64_t)> moduli_of;
     if (spec.stiffness.rule != StiffnessRule::FacetPenalty)
-      bulk_of = [&model, &penalties](std::int64_t part) {
-        return radioss_bulk_modulus(model, part, penalties.at(part));
+      moduli_of = [&model, &penalties](std::int64_t part) {
+        return radioss_moduli(model, part, penalties.at(part));
       };
 
     ContactReport report;
@@ -399,8 +415,8 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
     describe(spec, report);
     try {
       interfaces_.emplace_back(settings_of(model, spec),
-                               contact_surface(model.mesh, faces1, penalty_of, bulk_of),
-                               contact_surface(model.mesh, faces2, penalty_of, bulk_of), node_mass,
+                               contact_surface(model.mesh, faces1, penalty_of, moduli_of),
+                               contact_surface(model.mesh, faces2, penalty_of, moduli_of), node_mass,
                                initial, secondary_nodes);
     } catch (const ContactSetupError& e) {
       throw InputError(location_of(spec, e.setting()), e.what());

@@ -13,49 +13,47 @@ namespace abut {
 
 ContactSurface contact_surface(const Mesh& mesh, std::span<const SkinFace> faces,
                                const std::function<double(const SkinFace&)>& penalty_of_face,
-                               const std::function<double(std::int64_t part)>& bulk_of_part) {
+                               const std::function<ElasticModuli(std::int64_t part)>& moduli_of_part) {
   ContactSurface s;
   s.facets.reserve(faces.size());
   for (const SkinFace& f : faces) {
-    const double bulk = bulk_of_part ? bulk_of_part(f.part) : 0.0;
+    const ElasticModuli m = moduli_of_part ? moduli_of_part(f.part) : ElasticModuli{};
+    if (f.shell >= 0) {
+      const double young = m.bulk > 0.0 ? 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear) : 0.0;
+      s.add_shell(f.nodes, f.part, penalty_of_face(f), f.thickness, young);
+      continue;
+    }
     const double volume =
-        bulk_of_part ? hex_volume(mesh.nodes, mesh.hexes[static_cast<std::size_t>(f.hex)]) : 0.0;
-    s.add(f.nodes, f.part, penalty_of_face(f), f.thickness, bulk, volume);
+        moduli_of_part ? hex_volume(mesh.nodes, mesh.hexes[static_cast<std::size_t>(f.hex)]) : 0.0;
+    s.add(f.nodes, f.part, penalty_of_face(f), f.thickness, m.bulk, volume);
   }
   return s;
 }
 
-void require_solid_surface(const Model& model, const EntityRef& entity) {
-  const bool of_parts = entity.type == EntityType::Part || entity.type == EntityType::PartSet ||
-                        entity.type == EntityType::All;
-  if (model.mesh.shell_count() == 0 || !of_parts) return;
-  const std::vector<std::int64_t> parts = model.parts_of(entity);
-  for (std::size_t s = 0; s < model.mesh.shell_count(); ++s) {
-    const std::int64_t part = model.mesh.shell_part[s];
-    if (std::find(parts.begin(), parts.end(), part) == parts.end()) continue;
-    throw InputError(
-        entity.where,
-        (entity.type == EntityType::All ? "ALL includes part " : "part ") + std::to_string(part) +
-            ", which has shells: shell parts as contact surfaces come with shell contact (not "
-            "supported yet by abut). Use the part's nodes as secondary nodes of a node-to-surface "
-            "contact instead: list them in a *SET_NODE, give that set as surface 1 (entype NS) of "
-            "the *CONTACT and add *CONTACT_DISCRETIZATION with method N2S for it");
-  }
-}
-
 std::vector<SkinFace> contact_faces(const Model& model, const EntityRef& entity, bool merge) {
-  require_solid_surface(model, entity);
   std::vector<SkinFace> faces;
+  std::vector<std::int64_t> parts;
   if (entity.type == EntityType::All) {
     faces = exterior_faces(model.mesh, merge);
+    for (const Part& p : model.parts) parts.push_back(p.id);
   } else if (entity.type == EntityType::Part || entity.type == EntityType::PartSet) {
-    const std::vector<std::int64_t> parts = model.parts_of(entity);
+    parts = model.parts_of(entity);
     faces = exterior_faces(model.mesh, parts, merge);
   } else {
     throw InputError(entity.where, "a contact surface is a part (P), a part set (PS) or ALL");
   }
+  const Mesh& mesh = model.mesh;
+  for (std::size_t s = 0; s < mesh.shell_count(); ++s) {
+    if (std::find(parts.begin(), parts.end(), mesh.shell_part[s]) == parts.end()) continue;
+    SkinFace f;
+    f.nodes = mesh.shells[s];
+    f.part = mesh.shell_part[s];
+    f.thickness = model.find_part(f.part)->thickness;
+    f.shell = static_cast<std::int32_t>(s);
+    faces.push_back(f);
+  }
   if (faces.empty())
-    throw InputError(entity.where, "this contact surface has no exterior element faces");
+    throw InputError(entity.where, "this contact surface has no exterior element faces or shells");
   return faces;
 }
 
@@ -64,18 +62,24 @@ double element_penalty(double element_step, double lightest_node, double face_ar
   return kElementPenaltyFraction * lightest_node * omega2 / (2.0 * face_area);
 }
 
-double smallest_element_volume(const Mesh& mesh, std::int64_t part) {
+double smallest_element_volume(const Mesh& mesh, std::int64_t part, double shell_thickness) {
   // Per user element: the hexes *CHANGE_P-ORDER made of one order-p element count together, so
   // L_min is the size of the element as defined (seed 000 computes it for its cubic elements).
   std::map<std::int64_t, double> volume_of_element;
   for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
     if (mesh.hex_part[h] == part)
       volume_of_element[mesh.element_of(h)] += hex_volume(mesh.nodes, mesh.hexes[h]);
-  if (volume_of_element.empty())
-    throw InputError("part " + std::to_string(part) +
-                     " has no solid elements, so its automatic contact penalty is undefined");
   double smallest = std::numeric_limits<double>::infinity();
   for (const auto& [element, volume] : volume_of_element) smallest = std::min(smallest, volume);
+  bool shells = false;
+  for (std::size_t s = 0; s < mesh.shell_count(); ++s)
+    if (mesh.shell_part[s] == part) {
+      shells = true;
+      smallest = std::min(smallest, quad_area(mesh.nodes, mesh.shells[s]) * shell_thickness);
+    }
+  if (volume_of_element.empty() && !shells)
+    throw InputError("part " + std::to_string(part) +
+                     " has no elements, so its automatic contact penalty is undefined");
   return smallest;
 }
 

@@ -112,5 +112,29 @@ TEST(SharpEdges, CubeEdgesAreSharpAndFlatInteriorEdgesAreNot) {
   EXPECT_EQ(sharp_edges(plate, w.x, w.y, w.z, 40.0)[0], 1 | 8);
 }
 
+TEST(SharpEdges, AShellsTwoSidesDoNotMakeItsEdgesSharp) {
+  testing::World w;
+  const ContactSurface facets = testing::add_plate(w, 2, 2, 0, 0, 2, 2, 0, true, 1.0);
+  ContactSurface shells;
+  for (const auto& f : facets.facets) shells.add_shell(f, 1, 1.0, 0.1);
+  ASSERT_EQ(shells.size(), 8u);
+  EXPECT_EQ(shells.twin[0], 1);
+  EXPECT_EQ(shells.twin[1], 0);
+  std::vector<std::uint8_t> free;
+  auto sharp = sharp_edges(shells, w.x, w.y, w.z, 20.0, &free);
+  // Shell 0 (lower left): top facet 0 as the plain plate; its bottom facet 1 runs the nodes
+  // backwards (n4, n3, n2, n1), so the free edges eta = -1 and xi = -1 are its edges 2 and 3.
+  EXPECT_EQ(sharp[0], 1 | 8);
+  EXPECT_EQ(sharp[1], 4 | 8);
+  EXPECT_EQ(free[0], 1 | 8);
+  EXPECT_EQ(free[1], 4 | 8);
+  for (std::size_t i = 0; i < w.x.size(); ++i)
+    if (w.x[i] > 1.5) w.z[i] = std::tan(30.0 * std::numbers::pi / 180.0);
+  sharp = sharp_edges(shells, w.x, w.y, w.z, 20.0, &free);
+  EXPECT_EQ(sharp[0], 1 | 2 | 8);  // the fold, on both sides
+  EXPECT_EQ(sharp[1], 2 | 4 | 8);
+  EXPECT_EQ(free[0], 1 | 8);  // a fold is no free edge
+}
+
 }  // namespace
 }  // namespace abut

@@ -8,9 +8,12 @@
 // Tolerance: round-off, 1e-12 relative.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <algorithm>
 #include <cmath>
 
+#include "abut/contact/gap.hpp"
 #include "abut/contact/stiffness_rule.hpp"
 
 namespace abut {
@@ -77,6 +80,19 @@ TEST(StiffnessRule, StminStmaxClampIstf2To5ButNotIstf1000) {
   s.minimum = 1e9;
   EXPECT_NEAR(k(StiffnessRule::Main), kMain, rel(kMain));
   EXPECT_EQ(k(StiffnessRule::Mean), 1e9);
+}
+
+TEST(GapRule, RadiossVariableGapOfShells) {
+  // Seed 004, comment 3: g_m = g_s = Gap_scale t / 2 on shells; Igap 3 caps the sum at
+  // %mesh_size (g_s_l + g_m_l).
+  GapSettings s;
+  s.scale = 0.8;
+  EXPECT_DOUBLE_EQ(shell_gap(s, 2.0), 0.8);
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_DOUBLE_EQ(pair_gap(0.8, 0.5, inf, 4.0, inf), 1.3);   // Igap 1
+  EXPECT_DOUBLE_EQ(pair_gap(0.8, 0.5, inf, 4.0, 0.4), 1.3);   // not in self contact: no cap
+  EXPECT_DOUBLE_EQ(pair_gap(0.8, 0.5, 1.0, 2.0, 0.4), 1.2);   // 0.4 (1 + 2)
+  EXPECT_DOUBLE_EQ(shell_segment_stiffness(210e9, 0.002, 2.0), 2.0 * 0.5 * 210e9 * 0.002);
 }
 
 }  // namespace

@@ -147,21 +147,14 @@ TEST(DeckShells, PartEntitiesIncludeShellNodes) {
   EXPECT_DOUBLE_EQ(m.vz0[5], 0.0);  // node 6 is in no shell
 }
 
-TEST(DeckShells, ShellPartsAreNoContactSurfacesYet) {
+TEST(DeckShells, ShellPartsAreContactSurfaces) {
   const std::string deck = kShells + "7, 1, 1, 2, 3, 4\n*COMPONENT_BOX\n1, 2, 1, 1, 1\n" +
                            "5, 5, 5, 6, 6, 6\n*PART\n2, 1\n*CONTACT\n1\n";
-  const InputError e = error_of(deck + "P, 1, P, 2\n");
-  EXPECT_EQ(e.where().line, 25u) << e.what();
-  EXPECT_EQ(e.where().field, "enid_1") << e.what();
-  EXPECT_THAT(e.message(), HasSubstr("shell parts as contact surfaces come with shell contact"));
-  EXPECT_THAT(e.message(), HasSubstr("entype NS"));
-  EXPECT_THAT(e.message(), HasSubstr("*CONTACT_DISCRETIZATION with method N2S"));
-  EXPECT_THAT(error_of(deck + "ALL, 0, ALL, 0\n").message(), HasSubstr("ALL includes part 1"));
-  EXPECT_THAT(error_of(deck + "P, 2, P, 1\n").message(), HasSubstr("part 1, which has shells"));
+  for (const char* surfaces : {"P, 1, P, 2\n", "ALL, 0, ALL, 0\n", "P, 2, P, 1\n"})
+    EXPECT_EQ(model_of(deck + surfaces).contacts.size(), 1u) << surfaces;
 }
 
 TEST(DeckShells, ShellNodesAsSecondaryNodesOfANodeToSurfaceContact) {
-  // The route the contact-surface error proposes reads: the node set is no surface.
   const Model m = model_of(kShells + "7, 1, 1, 2, 3, 4\n*COMPONENT_BOX\n1, 2, 1, 1, 1\n" +
                            "5, 5, 5, 6, 6, 6\n*PART\n2, 1\n*SET_NODE\n9\n1, 2, 3, 4\n" +
                            "*CONTACT\n1\nNS, 9, P, 2\n*CONTACT_DISCRETIZATION\n1, N2S\n" +

@@ -74,6 +74,42 @@ TEST(ContactSetup, AutomaticPenaltyFollowsTheSeedFormula) {
   for (const PartPenalty& p : reports[0].parts) EXPECT_NEAR(p.penalty, expected, 1e-9 * expected);
 }
 
+TEST(ContactSetup, AutomaticPenaltyOfAShellPartUsesItsElementVolume) {
+  // A 2 x 2 plate of 0.01 m shells, h = 2 mm, on the 0.01 m cubes of part 1: L_min is the cube
+  // root of the smallest element volume, A h for a shell (as for a hex, seed 000), so
+  // pfac = K / (1e-4 * 2e-3)^(1/3) * (1 + 0.5^2).
+  const std::string deck = R"(*UNIT_SYSTEM
+SI
+*TIME
+1.0e-4
+*COMPONENT_BOX
+1, 1, 2, 2, 1
+0.0, 0.0, 0.0, 0.02, 0.02, 0.01
+*COMPONENT_SHELL_PLATE
+2, 2, 2, 2
+0.0, 0.0, 0.012, 0.02, 0.0, 0.012
+0.0, 0.02, 0.012
+*MAT_ELASTIC
+1, 7800.0, 210.0e9, 0.3
+*PART
+1, 1
+2, 1, , 0.002
+*INITIAL_VELOCITY
+P, 2, 0.0, 0.0, -50.0
+*CONTACT
+1
+P, 1, P, 2
+*END
+)";
+  const Model model = read_deck_string(deck, "shell_contact.k");
+  Simulation sim(model);
+  const std::vector<ContactReport> reports = sim.contact_reports();
+  ASSERT_EQ(reports[0].parts.size(), 2u);
+  const double shell = 175.0e9 / std::cbrt(1e-4 * 2e-3) * 1.25;
+  EXPECT_NEAR(reports[0].parts[1].penalty, shell, 1e-9 * shell);
+  EXPECT_EQ(reports[0].points, 16u * 4u + 2u * 4u * 4u);  // the block's 16 faces, both shell sides
+}
+
 TEST(ContactSetup, AutomaticPenaltyIsConvertedToTheUnitSystem) {
   // The same model in [mm, ton, s]: 50 m/s = 5e4 mm/s, E = 2.1e5 MPa, rho = 7.8e-9 t/mm^3;
   // pfac = 1.75e5 MPa / 10 mm * 1.25 = 2.1875e4 MPa/mm.

@@ -29,9 +29,11 @@ std::vector<FacetPoint> facet_rule(int accuracy_level, bool edge_refinement,
 
 // Sharp edges of every facet (bit e = edge e): edges where a neighbouring facet of the same
 // surface has a normal turned by more than `angle_degrees` (alpha_edge), and free edges,
-// which have no neighbour at all. Uses the centre normals at the given coordinates.
+// which have no neighbour at all (a shell's border: its other side does not count). Uses the
+// centre normals at the given coordinates. `free_edges`, if given, receives the free ones alone.
 std::vector<std::uint8_t> sharp_edges(const ContactSurface& surface, std::span<const double> x,
                                       std::span<const double> y, std::span<const double> z,
-                                      double angle_degrees);
+                                      double angle_degrees,
+                                      std::vector<std::uint8_t>* free_edges = nullptr);
 
 }  // namespace abut

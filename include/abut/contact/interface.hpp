@@ -96,6 +96,8 @@ class ContactInterface {
     std::vector<std::uint8_t> sharp;       // sharp-edge bits per facet
     std::vector<std::uint8_t> active;      // gid_0 / gid_1
     std::vector<double> depth;             // detection depth per facet
+    std::vector<double> facet_gap;         // g_m per facet, capped by Gap_max_m (gap.hpp)
+    std::vector<double> facet_min_edge;    // its shortest edge (g_m_l)
     std::vector<double> node_area;         // tributary area of each node (global index)
     std::vector<double> facet_km;          // Radioss main-segment stiffness per facet
     std::vector<std::int32_t> facet_part;  // local part index per facet
@@ -105,6 +107,10 @@ class ContactInterface {
     std::vector<std::int32_t> point_facet, point_node;
     std::vector<double> point_xi, point_eta, point_weight;
     std::vector<double> point_pfac, point_ks, point_share, point_depth, point_thickness;
+    std::vector<double> point_gap;       // g_s, capped by Gap_max_s (gap.hpp)
+    std::vector<double> point_min_edge;  // g_s_l: shortest edge at the point in self contact
+    double max_point_gap = 0.0;
+    double max_facet_gap = 0.0;
     std::vector<std::int32_t> point_part;
     double max_point_depth = 0.0;
     double max_km = 0.0;    // stiffest main segment (stable-step bound)
@@ -145,12 +151,14 @@ class ContactInterface {
     double area = 0.0;  // S2S: the point's area; N2S: see vector_area
     Vec3 vector_area;   // N2S: a quarter of each adjacent facet's area vector, summed
     bool active = false;
+    bool two_sided = false;  // N2S: a node of a shell (no normal; either side may touch)
   };
 
   void validate(const ContactSurface& s1, const ContactSurface& s2, std::size_t coordinates) const;
   void build_sides(const ContactInput& initial, std::span<const std::int32_t> secondary_nodes);
   void build_points(Side& side, const ContactInput& in, double other_size,
-                    std::span<const std::int32_t> secondary_nodes);
+                    std::span<const std::int32_t> secondary_nodes,
+                    const std::vector<std::uint8_t>& free_edges);
   void build_parts();
   void build_passes();
   void rebuild_broad_phase(const ContactInput& in);

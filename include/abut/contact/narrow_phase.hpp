@@ -1,18 +1,22 @@
 #pragma once
 // Narrow phase: the partner facet of one contact point among its broad-phase candidates.
 //
-// Each candidate is projected on (quad.hpp). It is accepted when
+// Each candidate is projected on (quad.hpp). The gap g of the pair (gap.hpp: the shells' offsets)
+// is subtracted from the distance along the facet's normal. It is accepted when
 //  - it does not share a node with the point's own facet (no contact with itself or neighbours),
+//  - for one side of a shell: the point lies on that side of the mid-surface (behind it lies the
+//    other side's facet),
 //  - the two surfaces face each other (n_point . n_facet < 0; reversed for contact from behind;
 //    skipped when the point has no normal, a bare node),
-//  - the gap g = (x - q) . n lies within [-depth_below, depth_above] (depth_below: how deep a point
+//  - the gap (x - q) . n - g lies within [-depth_below, depth_above] (depth_below: how deep a point
 //    may be and still belong to this side; beyond it lies the far side),
 //  - a projection beyond a sharp (or free) edge overshoots it by at most edge_tolerance; beyond a
 //    smooth edge by at most |g| tan(alpha_edge) (the dead zone of a convex edge; see
 //    docs/contact.md).
-// The closest accepted facet is the partner.
+// The closest accepted facet (distance less the pair's gap) is the partner.
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <span>
 
 #include "abut/contact/quad.hpp"
@@ -25,6 +29,9 @@ struct TargetFacets {
   std::span<const std::uint8_t> sharp;   // sharp-edge bits per facet (quad.hpp edge numbering)
   std::span<const std::uint8_t> active;  // 0: the facet takes no part
   std::span<const double> depth;         // its own detection depth
+  std::span<const std::int32_t> twin;    // shell: the other side's facet, else -1
+  std::span<const double> gap;           // g_m, capped (gap.hpp)
+  std::span<const double> min_edge;      // g_m_l: its shortest edge
   std::span<const double> x, y, z;       // current nodal coordinates
 };
 
@@ -34,11 +41,15 @@ struct PartnerRules {
   bool from_behind = false;  // the point must face the back of the facet (contact sense negative)
   double edge_tolerance = 0.0;  // delta_edge
   double smooth_reach = 0.0;    // tan(alpha_edge)
+  double point_gap = 0.0;       // g_s, capped (gap.hpp)
+  double point_min_edge = std::numeric_limits<double>::infinity();  // g_s_l
+  double mesh_fraction = std::numeric_limits<double>::infinity();   // %mesh_size (Igap 3)
 };
 
 struct Partner {
   std::int32_t facet = -1;
-  double xi = 0.0, eta = 0.0, gap = 0.0;
+  double xi = 0.0, eta = 0.0;
+  double gap = 0.0;  // (x - q) . n less the pair's gap: negative = penetration
 };
 
 // `own_nodes`: the nodes of the point's facet (a node-to-surface point: its node four times);

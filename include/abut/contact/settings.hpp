@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "abut/contact/gap.hpp"
 #include "abut/contact/laws/adhesion.hpp"
 #include "abut/contact/laws/normal.hpp"
 #include "abut/contact/laws/tangential.hpp"
@@ -53,6 +54,7 @@ struct ContactSettings {
   ContactSense sense = ContactSense::Positive;
   std::optional<double> detection_depth;  // default: half the element thickness of either facet
   std::optional<double> clearance;   // OptiStruct CLEARANCE: initial opening of every point found
+  GapSettings gaps;                  // shell gaps (Radioss Igap, Gap_scale, Gap_max_s/m)
   std::optional<Adhesion> adhesion;  // Radioss IVIS2 = -1
   double damping = 0.1;              // xi: fraction of critical damping of each contact spring
 

@@ -8,10 +8,12 @@
 // The Radioss /INTER/TYPE25 rules (seed 004, comment 2; decoded in seeds/README.md) build a
 // spring [force / length] from the main segment (the partner facet) and the secondary node (the
 // point's own side):
-//     solid main segment   K_m = Stfac * B * S^2 / V    (S facet area, V element volume, B bulk
-//     modulus) solid secondary node K_s = Stfac * B * V^(1/3) Istf 1000: K_m   2: (K_m + K_s)/2 3:
-//     max   4: min   5: K_m K_s / (K_m + K_s) K = max(Stmin, min(Stmax, K_n))   (Stmin/Stmax only
-//     for Istf 2..5)
+//     solid main segment    K_m = Stfac * B * S^2 / V   (S facet area, V element volume, B bulk
+//                                                      modulus)
+//     solid secondary node  K_s = Stfac * B * V^(1/3)
+//     shell (either role)   K   = Stfac * 0.5 * E * t
+//     Istf 1000: K_m   2: (K_m + K_s)/2   3: max   4: min   5: K_m K_s / (K_m + K_s)
+//     K = max(Stmin, min(Stmax, K_n))   (Stmin/Stmax only for Istf 2..5)
 // A node-to-surface point takes K whole; an integration point takes K times its share of its
 // facet's area, so that a facet's points together carry the spring of one node.
 #include <algorithm>
@@ -32,6 +34,11 @@ struct StiffnessSettings {
 inline double main_segment_stiffness(double bulk_modulus, double area, double volume,
                                      double stfac) {
   return stfac * bulk_modulus * area * area / volume;
+}
+
+// Shell main segment or secondary node (either side of the shell): Stfac * 0.5 * E * t.
+inline double shell_segment_stiffness(double young_modulus, double thickness, double stfac) {
+  return stfac * 0.5 * young_modulus * thickness;
 }
 
 inline double secondary_node_stiffness(double bulk_modulus, double volume, double stfac) {

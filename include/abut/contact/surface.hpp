@@ -1,6 +1,12 @@
 #pragma once
 // A contact surface: quad facets with the data the contact needs per facet. Plain arrays: the
-// caller builds it from its own mesh (abut's solver does so from the exterior faces of hexes).
+// caller builds it from its own mesh (abut's solver does so from the exterior faces of hexes and
+// from shells).
+//
+// A shell is two facets, one per side (Radioss /INTER/TYPE25, seed 004, comment 1: "two contact
+// segments with opposite normal directions"): the second lists the nodes in reverse order and
+// `twin` links the pair. Both lie on the mid-surface; each side's contact surface is offset from it
+// along the side's normal by the gap (gap.hpp, half the thickness by default).
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -13,10 +19,12 @@ struct ContactSurface {
   std::vector<std::array<std::int32_t, 4>> facets;
   std::vector<std::int64_t> part;  // user part id of the owning element
   std::vector<double> penalty;     // penalty stiffness pfac [stress / length]
-  std::vector<double> thickness;   // owning element's size along the facet normal
+  std::vector<double> thickness;   // owning element's size along the facet normal (shell: h)
+  std::vector<std::int32_t> twin;  // shell: the facet of the other side; -1: a solid's face
   // For the Radioss stiffness rules only (stiffness_rule.hpp); may stay empty otherwise.
   std::vector<double> bulk_modulus;    // of the owning element's material
   std::vector<double> element_volume;  // of the owning element
+  std::vector<double> young_modulus;   // of a shell's material (K = Stfac 0.5 E t)
 
   std::size_t size() const { return facets.size(); }
   void add(const std::array<std::int32_t, 4>& nodes, std::int64_t part_id, double pfac, double t,
@@ -25,8 +33,25 @@ struct ContactSurface {
     part.push_back(part_id);
     penalty.push_back(pfac);
     thickness.push_back(t);
+    twin.push_back(-1);
     bulk_modulus.push_back(bulk);
     element_volume.push_back(volume);
+    young_modulus.push_back(0.0);
+  }
+  // Both sides of a shell of thickness h (nodes counter-clockwise about its normal), and for the
+  // Radioss rules its Young's modulus.
+  void add_shell(const std::array<std::int32_t, 4>& nodes, std::int64_t part_id, double pfac,
+                 double h, double young = 0.0) {
+    const auto first = static_cast<std::int32_t>(facets.size());
+    const std::array<std::int32_t, 4> reversed =
+        nodes[2] == nodes[3] ? std::array<std::int32_t, 4>{nodes[1], nodes[0], nodes[2], nodes[2]}
+                             : std::array<std::int32_t, 4>{nodes[3], nodes[2], nodes[1], nodes[0]};
+    for (const auto& n : {nodes, reversed}) {
+      add(n, part_id, pfac, h);
+      young_modulus.back() = young;
+    }
+    twin[first] = first + 1;
+    twin[first + 1] = first;
   }
 };
 

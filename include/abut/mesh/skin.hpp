@@ -13,11 +13,14 @@
 
 namespace abut {
 
+// A contact face is also made of a whole shell (`shell` >= 0, `hex` = -1): its nodes in the
+// shell's order, its thickness h; both of its sides touch (contact_surfaces.hpp).
 struct SkinFace {
   std::array<std::int32_t, 4> nodes{};  // node indices, counter-clockwise seen from outside
   std::int32_t hex = -1;                // index of the owning hex
   std::int64_t part = 0;                // user part id of the owning hex
   double thickness = 0.0;               // owning hex's size along the face normal: volume / area
+  std::int32_t shell = -1;              // index of the shell, when the face is one
 };
 
 // Exterior faces of the hexes whose part is in `parts`, in hex order then local face order

@@ -1,7 +1,8 @@
 #pragma once
-// From the model's hexes to the contact library's plain arrays: the contact surface of a list of
-// skin faces (penalty, bulk modulus and element volume of each facet's owner) and the smallest
-// element of a part (the L_min of seed 000's automatic penalty).
+// From the model's hexes and shells to the contact library's plain arrays: the contact surface of
+// a list of faces (exterior faces of hexes; shells, two-sided), with the penalty, moduli and
+// element volume of each facet's owner, and the smallest element of a part (the L_min of seed
+// 000's automatic penalty).
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -15,11 +16,12 @@
 
 namespace abut {
 
-// `penalty_of_face`: pfac of each facet; `bulk_of_part`: bulk modulus of each part (Radioss
-// stiffness rules; may be empty).
-ContactSurface contact_surface(const Mesh& mesh, std::span<const SkinFace> faces,
-                               const std::function<double(const SkinFace&)>& penalty_of_face,
-                               const std::function<double(std::int64_t part)>& bulk_of_part = {});
+// `penalty_of_face`: pfac of each facet; `moduli_of_part`: bulk and shear modulus of each part
+// (Radioss stiffness rules: B for solids, E for shells; may be empty).
+ContactSurface contact_surface(
+    const Mesh& mesh, std::span<const SkinFace> faces,
+    const std::function<double(const SkinFace&)>& penalty_of_face,
+    const std::function<ElasticModuli(std::int64_t part)>& moduli_of_part = {});
 
 // Element-based automatic penalty (*CONTACT_STIFFNESS ELEMENT, in the spirit of Abaqus/Explicit's
 // default general-contact penalty, seed 001): the facet's spring on its lightest node adds at most
@@ -31,12 +33,8 @@ ContactSurface contact_surface(const Mesh& mesh, std::span<const SkinFace> faces
 inline constexpr double kElementPenaltyFraction = 1.0 / (0.96 * 0.96) - 1.0;
 double element_penalty(double element_step, double lightest_node, double face_area);
 
-// Shells do not make contact faces yet (shell contact is a later issue): InputError at the entity
-// if it is or includes (ALL) a part with shells.
-void require_solid_surface(const Model& model, const EntityRef& entity);
-
-// The exterior faces of a contact entity (P, PS or ALL); InputError if it has none or if it holds
-// shells (require_solid_surface).
+// The contact faces of a contact entity (P, PS or ALL): the exterior faces of its hexes, then its
+// shells; InputError if it has none.
 std::vector<SkinFace> contact_faces(const Model& model, const EntityRef& entity, bool merge);
 
 // OptiStruct ADJUST of every contact that asks for it (ContactSpec::adjust_depth): moves surface-1
@@ -44,7 +42,8 @@ std::vector<SkinFace> contact_faces(const Model& model, const EntityRef& entity,
 std::vector<std::string> adjust_contact_nodes(Model& model);
 
 // Volume of the smallest element of a part (the hexes *CHANGE_P-ORDER made of one element count
-// together); InputError if the part has no hex.
-double smallest_element_volume(const Mesh& mesh, std::int64_t part);
+// together; a shell's volume is its area times `shell_thickness`); InputError if the part has no
+// element.
+double smallest_element_volume(const Mesh& mesh, std::int64_t part, double shell_thickness = 0.0);
 
 }  // namespace abut

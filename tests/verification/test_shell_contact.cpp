@@ -1,0 +1,138 @@
+// Shells as contact surfaces (issue 9): both sides of a shell touch, each at half the thickness
+// from the mid-surface (Radioss /INTER/TYPE25, seed 004, comment 1: "two contact segments
+// shifted by half thickness with opposite normal directions"; comment 3: g = g_s + g_m with
+// g = t/2 on shells, 0 on solids).
+//
+// A rigid block rests under gravity on a fixed rigid shell plate 10 mm thick (mid-surface z = 0),
+// from above, or from below with gravity reversed. At rest the linear penalty carries the weight
+// over the block's face, pfac A d = m g, so the block's face lies at h/2 - d from the mid-surface
+// with d = m g / (pfac A): an equilibrium that the offset surface must reproduce to round-off
+// (compared at 1e-6 of d, once the contact damping has let the start transient die out).
+// Without the offset the face would sit at -d. The same with the roles swapped: a rigid shell
+// plate rests on (or hangs below) a fixed block, its nodes the contact points (g_s = h/2).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <string>
+
+#include "run_to.hpp"
+
+namespace abut {
+namespace {
+
+constexpr double kThickness = 0.01;
+constexpr double kPenalty = 1e9;                        // pfac [Pa/m]
+constexpr double kBlockMass = 7800.0 * 0.1 * 0.1 * 0.02;  // rho V of the 0.1 x 0.1 x 0.02 block
+constexpr double kPlateMass = 7800.0 * 0.1 * 0.1 * kThickness;
+double sink(double mass) { return mass * 9.81 / (kPenalty * 0.1 * 0.1); }  // d = m g / (pfac A)
+const double kSink = sink(kBlockMass);
+
+struct Case {
+  bool from_below = false;   // the block below the plate
+  bool plate_moves = false;  // the plate (0.1 x 0.1) on a fixed block (0.2 x 0.2)
+  std::string method = "S2S";       // *CONTACT_DISCRETIZATION method
+  std::string surfaces = "P, 1, P, 2";  // block, plate
+  std::string symmetric = "";
+};
+
+// The block's face next to the plate starts on the plate's contact surface (z = +-h/2).
+std::string deck(const Case& c) {
+  const double s = c.from_below ? -1.0 : 1.0;  // the block above (+1) or below (-1) the plate
+  const double g = c.plate_moves ? 9.81 * s : -9.81 * s;  // presses the moving part on the other
+  const double near = s * 0.5 * kThickness, far = s * (0.5 * kThickness + 0.02);
+  const double block = c.plate_moves ? 0.1 : 0.05, plate = c.plate_moves ? 0.05 : 0.1;
+  const std::string b = std::to_string(block), p = std::to_string(plate);
+  const int nb = c.plate_moves ? 8 : 4, np = c.plate_moves ? 4 : 8;
+  return R"(
+*UNIT_SYSTEM
+SI
+*TIME
+0.04
+*COMPONENT_BOX
+1, 1, )" + std::to_string(nb) + ", " + std::to_string(nb) + ", 1\n-" + b + ", -" + b + ", " +
+         std::to_string(std::min(near, far)) + ", " + b + ", " + b + ", " +
+         std::to_string(std::max(near, far)) + "\n*COMPONENT_SHELL_PLATE\n2, 2, " +
+         std::to_string(np) + ", " + std::to_string(np) + "\n-" + p + ", -" + p + ", 0.0, " + p +
+         ", -" + p + ", 0.0\n-" + p + ", " + p + R"(, 0.0
+*MAT_RIGID
+1, 7800.0
+*PART
+"block"
+1, 1
+"plate"
+2, 1, , 0.01
+*BC_MOTION
+P, )" + std::string(c.plate_moves ? "1" : "2") + R"(, XYZ, XYZ
+*CURVE
+1
+0.0, )" + std::to_string(g) + "\n1.0, " +
+         std::to_string(g) + R"(
+*LOAD_GRAVITY
+Z, 1
+*CONTACT
+1
+)" + c.surfaces +
+         ", 0.0, " + std::to_string(kPenalty) + R"(
+0, 1.0
+*CONTACT_DISCRETIZATION
+1, )" + c.method +
+         ", " + c.symmetric + "\n*END\n";
+}
+
+// Distance of the block's face from the plate's mid-surface at rest.
+double face_height(const Case& c) {
+  const Model model = read_deck_string(deck(c), "block_on_shell_plate.k");
+  Simulation sim(model);
+  verification::run_to(sim, model.time.end_time);
+  const double block = sim.part_states().at(0).centre_of_mass.z;
+  const double plate = sim.part_states().at(1).centre_of_mass.z;
+  std::cout << "penetration reported " << sim.contact_reports()[0].stats.max_penetration << " m\n";
+  return c.from_below ? -(block + 0.01 - plate) : block - 0.01 - plate;
+}
+
+TEST(ShellContact, BlockRestsOnTheTopSurfaceOfAShellPlate) {
+  EXPECT_NEAR(face_height({}), 0.5 * kThickness - kSink, 1e-6 * kSink);
+}
+
+TEST(ShellContact, BlockRestsAgainstTheBottomSurfaceOfAShellPlate) {
+  Case c;
+  c.from_below = true;
+  EXPECT_NEAR(face_height(c), 0.5 * kThickness - kSink, 1e-6 * kSink);
+}
+
+TEST(ShellContact, BlockNodesOnBothSidesOfAShellPlate) {
+  for (const bool below : {false, true}) {
+    Case c;
+    c.from_below = below;
+    c.method = "N2S";
+    c.symmetric = "0";
+    EXPECT_NEAR(face_height(c), 0.5 * kThickness - kSink, 1e-6 * kSink) << "below " << below;
+  }
+}
+
+TEST(ShellContact, ShellNodesRestOnBothSidesOfABlock) {
+  for (const bool below : {false, true}) {
+    Case c;
+    c.from_below = below;
+    c.plate_moves = true;
+    c.method = "N2S";
+    c.symmetric = "0";
+    c.surfaces = "P, 2, P, 1";  // the plate's nodes against the block
+    EXPECT_NEAR(face_height(c), 0.5 * kThickness - sink(kPlateMass), 1e-6 * sink(kPlateMass))
+        << "below " << below;
+  }
+}
+
+TEST(ShellContact, ShellAgainstBlockBothWaysSurfaceToSurface) {
+  for (const bool below : {false, true}) {
+    Case c;
+    c.from_below = below;
+    c.plate_moves = true;
+    EXPECT_NEAR(face_height(c), 0.5 * kThickness - sink(kPlateMass), 1e-6 * sink(kPlateMass))
+        << "below " << below;
+  }
+}
+
+}  // namespace
+}  // namespace abut
