@@ -45,6 +45,8 @@ struct ContactStats {
   double damping_energy = 0.0;    // work of the contact damping so far
   double friction_energy = 0.0;   // energy dissipated by friction so far
   double max_penetration = 0.0;   // largest penetration beyond the initial offsets
+  // Range of the gaps (gap.hpp) of the point-facet pairs found in contact so far; 0, 0 if none.
+  double gap_min = 0.0, gap_max = 0.0;
   std::size_t active_points = 0;
   double stable_step = std::numeric_limits<double>::infinity();  // 2/omega of the stiffest spring
 };

@@ -43,6 +43,34 @@ struct PairScale {
   double scale = 1.0;
 };
 
+// Edge-to-edge contact (Radioss /INTER/TYPE25 Iedge and Edge_angle, seed 004, comment 6): edges of
+// surface 1 (secondary) that cross edges of surface 2 (main) are pushed apart, which a point-to-
+// facet contact misses. Friction is not included (seed 004).
+enum class EdgeSelection {
+  None,                   // Iedge 1000 (default)
+  ShellBorders,           // Iedge 1: free edges of shells on both sides
+  SharpSolidEdges,        // Iedge 11: secondary sharp solid edges and shell borders; main: all
+                          //   exterior solid edges and shell borders
+  SharpSolidAllShells,    // Iedge 13: as 11, the main side with every shell edge
+  AllEdges,               // Iedge 22: every exterior solid edge and every shell edge, both sides
+};
+struct EdgeSettings {
+  EdgeSelection selection = EdgeSelection::None;
+  // Edge_angle [degrees]: a solid edge is sharp when its two facets meet at an angle below it
+  // (180 = flat), i.e. when their normals turn by more than 180 - Edge_angle.
+  double angle = 135.0;
+};
+
+// What element erosion does to the contact (the host reports eroded elements, interface.hpp).
+struct ErosionSettings {
+  // A facet whose element has eroded leaves the contact (IMPETUS; Radioss Idel 1 and 2); false:
+  // it stays (Radioss Idel 1000).
+  bool remove_facets = true;
+  // A node whose facets have all eroded stays in contact as a free point mass (Abaqus/Explicit
+  // default, seed 001); false: it leaves (Abaqus nodal erosion; Radioss Idel 1 and 2).
+  bool keep_free_nodes = true;
+};
+
 struct ContactSettings {
   Discretisation discretisation = Discretisation::SurfaceToSurface;
   int accuracy_level = 2;      // S2S: 1 centre point, 2: 2x2 Gauss, >2: 3x3 Gauss per facet
@@ -55,6 +83,8 @@ struct ContactSettings {
   std::optional<double> detection_depth;  // default: half the element thickness of either facet
   std::optional<double> clearance;   // OptiStruct CLEARANCE: initial opening of every point found
   GapSettings gaps;                  // shell gaps (Radioss Igap, Gap_scale, Gap_max_s/m)
+  EdgeSettings edges;                // edge-to-edge contact
+  ErosionSettings erosion;
   std::optional<Adhesion> adhesion;  // Radioss IVIS2 = -1
   double damping = 0.1;              // xi: fraction of critical damping of each contact spring
 
