@@ -62,6 +62,10 @@ ContactInterface::PointFrame ContactInterface::frame(const Side& side, std::size
   const double length = norm(n);
   r.normal = length > 0.0 && !r.two_sided ? n / length : Vec3{};
   r.area = side.node_area[node];
+  if (!r.active && side.node_free[node]) {  // a free point mass, touching with its whole area
+    r.active = r.free = r.two_sided = true;
+    r.normal = {};
+  }
   r.vector_area =
       n * 0.125;  // each cross product of the diagonals is twice the facet's area vector
   return r;
@@ -87,6 +91,15 @@ Partner ContactInterface::partner_of(const Pass& pass, std::size_t p, const Poin
   rules.point_min_edge = own.point_min_edge[p];
   rules.mesh_fraction = settings_.gaps.mesh_fraction.value_or(
       std::numeric_limits<double>::infinity());
+  if (!x0_.empty() && self_contact()) {  // Igap 2: where the point was at the start
+    const auto nodes = own.point_nodes(p);
+    const auto n = quad_shape(own.point_xi[p], own.point_eta[p]);
+    for (int a = 0; a < 4; ++a)
+      rules.initial_point += Vec3{x0_[nodes[a]], y0_[nodes[a]], z0_[nodes[a]]} * n[a];
+    rules.x0 = x0_;
+    rules.y0 = y0_;
+    rules.z0 = z0_;
+  }
   rules.from_behind = settings_.sense == ContactSense::Negative;
   rules.edge_tolerance = settings_.edge_tolerance;
   rules.smooth_reach = smooth_reach_;
@@ -160,7 +173,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   const bool node_point = own.point_node[p] >= 0;
   double area = f.area;
   auto facing_area = [&](const Vec3& partner_normal) {
-    if (node_point)
+    if (node_point && !f.free)
       area = f.two_sided ? std::abs(dot(f.vector_area, partner_normal))
                          : std::max(-dot(f.vector_area, partner_normal), 0.0);
     return area > 0.0;
@@ -343,6 +356,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   pass.htz[p] = ft.z;
   pass.sliding[p] = sliding ? 1 : 0;
   record(h.facet, h.xi, h.eta, r, std::max(k_n, k_t), normal * fn + ft);
+  pass.pair_gap[p] = h.pair_gap;
   pass.normal_force[p] = fn;
   pass.tangential_force[p] = norm(ft);
   pass.pressure[p] = fn / area;

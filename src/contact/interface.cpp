@@ -92,6 +92,7 @@ void ContactInterface::rebuild_broad_phase(const ContactInput& in) {
     }
     pass.grid.query(pass.qx, pass.qy, pass.qz, pass.candidates);
   }
+  rebuild_pending_ = false;
   bx_.resize(surface_nodes_.size());
   by_.resize(surface_nodes_.size());
   bz_.resize(surface_nodes_.size());
@@ -107,10 +108,13 @@ void ContactInterface::update_moving_region(const ContactInput& in) {
   if (!settings_.moving_region) return;
   for (Side& side : sides_)
     for (std::size_t f = 0; f < side.surface.size(); ++f) {
-      if (!side.active[f]) continue;
+      if (side.off[f] & kOutsideRegion) continue;
       const Vec3 centre =
           quad_point(quad_corners(side.surface.facets[f], in.x, in.y, in.z), 0.0, 0.0);
-      if (!settings_.moving_region(centre.x, centre.y, centre.z)) side.active[f] = 0;
+      if (!settings_.moving_region(centre.x, centre.y, centre.z)) {
+        side.off[f] |= kOutsideRegion;
+        side.active[f] = 0;
+      }
     }
 }
 
@@ -181,7 +185,7 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
     return;
   }
   update_moving_region(in);
-  if (needs_rebuild(in)) rebuild_broad_phase(in);
+  if (rebuild_pending_ || needs_rebuild(in)) rebuild_broad_phase(in);
   for (Pass& pass : passes_) {
     const std::size_t n = pass.state.size();
 #pragma omp parallel for schedule(dynamic, \

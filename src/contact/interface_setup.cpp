@@ -47,6 +47,8 @@ double shortest_edge(const QuadCorners& c) {
 void complete(ContactSurface& s) {
   if (s.twin.empty()) s.twin.assign(s.size(), -1);
   if (s.young_modulus.empty()) s.young_modulus.assign(s.size(), 0.0);
+  if (s.element.empty()) s.element.assign(s.size(), -1);
+  if (s.exposed_by.empty()) s.exposed_by.assign(s.size(), -1);
 }
 
 }  // namespace
@@ -74,6 +76,11 @@ ContactInterface::ContactInterface(ContactSettings settings, ContactSurface surf
         "group is one-way");
   wear_.assign(mass_.size(), 0.0);
   pressure_.assign(mass_.size(), 0.0);
+  if (settings_.gaps.skip_close) {
+    x0_.assign(initial.x.begin(), initial.x.begin() + static_cast<std::ptrdiff_t>(mass_.size()));
+    y0_.assign(initial.y.begin(), initial.y.begin() + static_cast<std::ptrdiff_t>(mass_.size()));
+    z0_.assign(initial.z.begin(), initial.z.begin() + static_cast<std::ptrdiff_t>(mass_.size()));
+  }
   sides_.resize(self ? 1 : 2);
   sides_[0].surface = std::move(surface1);
   if (!self) sides_[1].surface = std::move(surface2);
@@ -133,7 +140,7 @@ void ContactInterface::build_sides(const ContactInput& in,
     const std::size_t n = surface.size();
     std::vector<std::uint8_t> free_edges;
     side.sharp = sharp_edges(surface, in.x, in.y, in.z, s.edge_angle, &free_edges);
-    side.active.assign(n, 1);
+    side.off.assign(n, 0);
     side.depth.resize(n);
     side.facet_km.assign(n, 0.0);
     side.facet_gap.assign(n, 0.0);
@@ -143,8 +150,9 @@ void ContactInterface::build_sides(const ContactInput& in,
       const QuadCorners c = quad_corners(surface.facets[f], in.x, in.y, in.z);
       if (s.initial_region) {
         const Vec3 centre = quad_point(c, 0.0, 0.0);
-        side.active[f] = s.initial_region(centre.x, centre.y, centre.z) ? 1 : 0;
+        if (!s.initial_region(centre.x, centre.y, centre.z)) side.off[f] |= kOutsideRegion;
       }
+      if (surface.exposed_by[f] >= 0) side.off[f] |= kDormant;  // until its neighbour erodes
       const bool shell = surface.twin[f] >= 0;
       side.depth[f] = s.detection_depth.value_or(0.5 * surface.thickness[f]);
       side.max_pfac = std::max(side.max_pfac, surface.penalty[f]);
@@ -162,6 +170,9 @@ void ContactInterface::build_sides(const ContactInput& in,
                                            surface.element_volume[f], s.stiffness.scale);
       side.max_km = std::max(side.max_km, side.facet_km[f]);
     }
+    side.active.resize(n);
+    for (std::size_t f = 0; f < n; ++f) side.active[f] = side.off[f] == 0 ? 1 : 0;
+    side.node_free.assign(mass_.size(), 0);
     // Node -> facets (CSR), for node normals, areas and thicknesses.
     side.node_facet_start.assign(mass_.size() + 1, 0);
     for (const auto& facet : surface.facets)
@@ -265,57 +276,64 @@ void ContactInterface::build_points(Side& side, const ContactInput& in, double o
         on_free_edge[surface.facets[f][e]] = 1;
         on_free_edge[surface.facets[f][(e + 1) % 4]] = 1;
       }
-  // Per point: penalty, Radioss secondary stiffness, share of its facet, depth, thickness, gap,
-  // part.
+  // A node takes its spring whole; an integration point its share of its facet's area.
   const std::size_t n = side.point_facet.size();
-  for (auto* v : {&side.point_pfac, &side.point_ks, &side.point_share, &side.point_depth,
-                  &side.point_thickness, &side.point_gap})
-    v->assign(n, 0.0);
-  side.point_min_edge.assign(n, kInfinity);
-  const bool self = sides_.size() == 1;
-  side.point_part.assign(n, 0);
-  side.max_point_depth = 0.0;
-  const bool radioss = is_radioss_rule(s.stiffness.rule);
   for (std::size_t p = 0; p < n; ++p) {
-    const std::int32_t node = side.point_node[p];
-    std::int32_t first = side.point_facet[p], last = first + 1;
-    const std::int32_t* facets = nullptr;
-    if (node >= 0) {  // over the facets around the node
-      facets = side.node_facets.data();
-      first = side.node_facet_start[node];
-      last = side.node_facet_start[node + 1];
-    }
-    for (std::int32_t k = first; k < last; ++k) {
-      const std::int32_t f = facets ? facets[k] : k;
-      const bool shell = surface.twin[f] >= 0;
-      side.point_pfac[p] = std::max(side.point_pfac[p], surface.penalty[f]);
-      side.point_thickness[p] = std::max(side.point_thickness[p], surface.thickness[f]);
-      if (shell)
-        side.point_gap[p] = std::max(side.point_gap[p], shell_gap(s.gaps, surface.thickness[f]));
-      if (self) side.point_min_edge[p] = std::min(side.point_min_edge[p], side.facet_min_edge[f]);
-      if (radioss)
-        side.point_ks[p] = std::max(
-            side.point_ks[p],
-            shell ? shell_segment_stiffness(surface.young_modulus[f], surface.thickness[f],
-                                            s.stiffness.scale)
-                  : secondary_node_stiffness(surface.bulk_modulus[f], surface.element_volume[f],
-                                             s.stiffness.scale));
-    }
-    if (node >= 0 && s.gaps.zero_at_free_edges && on_free_edge[node]) side.point_gap[p] = 0.0;
-    side.point_gap[p] = std::min(side.point_gap[p], s.gaps.max_secondary);
-    side.max_point_gap = std::max(side.max_point_gap, side.point_gap[p]);
-    side.point_part[p] = side.facet_part[side.point_facet[p]];
-    if (node >= 0) {
-      side.point_share[p] = 1.0;
-    } else {
+    double share = 1.0;
+    if (side.point_node[p] < 0) {
       double jacobian = 0.0;
       quad_normal(quad_corners(surface.facets[side.point_facet[p]], in.x, in.y, in.z),
                   side.point_xi[p], side.point_eta[p], jacobian);
-      side.point_share[p] = side.point_weight[p] * jacobian / facet_area[side.point_facet[p]];
+      share = side.point_weight[p] * jacobian / facet_area[side.point_facet[p]];
     }
-    side.point_depth[p] = s.detection_depth.value_or(0.5 * side.point_thickness[p]);
-    side.max_point_depth = std::max(side.max_point_depth, side.point_depth[p]);
+    init_point(side, p, on_free_edge, share);
   }
+}
+
+void ContactInterface::init_point(Side& side, std::size_t p,
+                                  const std::vector<std::uint8_t>& on_free_edge,
+                                  double share) {
+  const ContactSettings& s = settings_;
+  const ContactSurface& surface = side.surface;
+  const std::size_t n = side.point_facet.size();
+  for (auto* v : {&side.point_pfac, &side.point_ks, &side.point_share, &side.point_depth,
+                  &side.point_thickness, &side.point_gap})
+    v->resize(n, 0.0);
+  side.point_min_edge.resize(n, kInfinity);
+  side.point_part.resize(n, 0);
+  const bool self = sides_.size() == 1;
+  const bool radioss = is_radioss_rule(s.stiffness.rule);
+  const std::int32_t node = side.point_node[p];
+  std::int32_t first = side.point_facet[p], last = first + 1;
+  const std::int32_t* facets = nullptr;
+  if (node >= 0) {  // over the facets around the node
+    facets = side.node_facets.data();
+    first = side.node_facet_start[node];
+    last = side.node_facet_start[node + 1];
+  }
+  for (std::int32_t k = first; k < last; ++k) {
+    const std::int32_t f = facets ? facets[k] : k;
+    const bool shell = surface.twin[f] >= 0;
+    side.point_pfac[p] = std::max(side.point_pfac[p], surface.penalty[f]);
+    side.point_thickness[p] = std::max(side.point_thickness[p], surface.thickness[f]);
+    if (shell)
+      side.point_gap[p] = std::max(side.point_gap[p], shell_gap(s.gaps, surface.thickness[f]));
+    if (self) side.point_min_edge[p] = std::min(side.point_min_edge[p], side.facet_min_edge[f]);
+    if (radioss)
+      side.point_ks[p] = std::max(
+          side.point_ks[p],
+          shell ? shell_segment_stiffness(surface.young_modulus[f], surface.thickness[f],
+                                          s.stiffness.scale)
+                : secondary_node_stiffness(surface.bulk_modulus[f], surface.element_volume[f],
+                                           s.stiffness.scale));
+  }
+  if (node >= 0 && s.gaps.zero_at_free_edges && on_free_edge[node]) side.point_gap[p] = 0.0;
+  side.point_gap[p] = std::min(side.point_gap[p], s.gaps.max_secondary);
+  side.max_point_gap = std::max(side.max_point_gap, side.point_gap[p]);
+  side.point_part[p] = side.facet_part[side.point_facet[p]];
+  side.point_share[p] = share;
+  side.point_depth[p] = s.detection_depth.value_or(0.5 * side.point_thickness[p]);
+  side.max_point_depth = std::max(side.max_point_depth, side.point_depth[p]);
 }
 
 void ContactInterface::build_passes() {
@@ -335,38 +353,22 @@ void ContactInterface::build_passes() {
     passes_[1].target = 0;
     passes_[1].weight = 0.5;
   }
-  for (Pass& pass : passes_) {
-    const std::size_t n = sides_[pass.own].point_facet.size();
-    for (auto* v : {&pass.state, &pass.sliding, &pass.adhered, &pass.hit}) v->assign(n, 0);
-    pass.tie_facet.assign(n, -1);
-    pass.hit_facet.assign(n, -1);
-    for (auto* v : {&pass.offset,
-                    &pass.shift,
-                    &pass.htx,
-                    &pass.hty,
-                    &pass.htz,
-                    &pass.tie_xi,
-                    &pass.tie_eta,
-                    &pass.hit_xi,
-                    &pass.hit_eta,
-                    &pass.fx,
-                    &pass.fy,
-                    &pass.fz,
-                    &pass.area,
-                    &pass.pressure,
-                    &pass.slip_speed,
-                    &pass.normal_force,
-                    &pass.tangential_force,
-                    &pass.energy,
-                    &pass.damping_work,
-                    &pass.slip_work,
-                    &pass.penetration,
-                    &pass.omega2,
-                    &pass.qx,
-                    &pass.qy,
-                    &pass.qz})
-      v->assign(n, 0.0);
-  }
+  for (Pass& pass : passes_) size_pass(pass, sides_[pass.own].point_facet.size());
+}
+
+// Per-point history and result slots for n points; points added later (free nodes) start empty.
+void ContactInterface::size_pass(Pass& pass, std::size_t n) {
+  for (auto* v : {&pass.state, &pass.sliding, &pass.adhered, &pass.hit}) v->resize(n, 0);
+  pass.tie_facet.resize(n, -1);
+  pass.hit_facet.resize(n, -1);
+  for (auto* v : {&pass.offset,       &pass.shift,  &pass.htx,          &pass.hty,
+                  &pass.htz,          &pass.tie_xi, &pass.tie_eta,      &pass.hit_xi,
+                  &pass.hit_eta,      &pass.fx,     &pass.fy,           &pass.fz,
+                  &pass.area,         &pass.pressure, &pass.slip_speed, &pass.normal_force,
+                  &pass.tangential_force, &pass.energy, &pass.damping_work, &pass.slip_work,
+                  &pass.penetration,  &pass.omega2, &pass.pair_gap,     &pass.qx,
+                  &pass.qy,           &pass.qz})
+    v->resize(n, 0.0);
 }
 
 // Initial penetrations (seed 000 delta0_offset / delta0_max, Radioss Inacti), clearance

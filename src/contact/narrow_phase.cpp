@@ -18,6 +18,16 @@ bool share_a_node(const std::array<std::int32_t, 4>& a, const std::array<std::in
   return false;
 }
 
+// Igap 2: did a node of the facet lie within `distance` of the point at the start?
+bool initially_within(const PartnerRules& rules, const std::array<std::int32_t, 4>& nodes,
+                      double distance) {
+  for (const std::int32_t i : nodes) {
+    const Vec3 d = Vec3{rules.x0[i], rules.y0[i], rules.z0[i]} - rules.initial_point;
+    if (dot(d, d) < distance * distance) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> candidates,
@@ -35,6 +45,7 @@ Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> c
     const double below = std::max(target.depth[f], rules.point_depth);
     const double g = pair_gap(rules.point_gap, target.gap[f], rules.point_min_edge,
                               target.min_edge[f], rules.mesh_fraction);
+    if (!rules.x0.empty() && initially_within(rules, nodes, 2.0 * g)) continue;
     // The distance to the facet's bounding box bounds the distance to the facet from below:
     // skip facets that cannot be within reach or closer than the best one so far.
     const double reach = std::max({below, rules.depth_above, rules.edge_tolerance}) + g;
@@ -71,7 +82,7 @@ Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> c
     if (inward > below || -inward > std::max(rules.depth_above, below)) continue;
     if (q.distance - g < best_distance) {
       best_distance = q.distance - g;
-      best = {f, q.xi, q.eta, gap};
+      best = {f, q.xi, q.eta, gap, g};
     }
   }
   return best;

@@ -43,6 +43,9 @@ void ContactInterface::scatter(const ContactInput& in, ContactForces& out) {
       stats_.damping_energy += w * pass.damping_work[p];
       stats_.friction_energy += w * pass.slip_work[p];
       stats_.max_penetration = std::max(stats_.max_penetration, pass.penetration[p]);
+      if (gap_pairs_ == 0 || pass.pair_gap[p] < stats_.gap_min) stats_.gap_min = pass.pair_gap[p];
+      if (gap_pairs_ == 0 || pass.pair_gap[p] > stats_.gap_max) stats_.gap_max = pass.pair_gap[p];
+      ++gap_pairs_;
       ++stats_.active_points;
       omega2_max = std::max(omega2_max, pass.omega2[p]);
 

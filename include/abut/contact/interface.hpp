@@ -74,6 +74,12 @@ class ContactInterface {
   // Adds the contact forces of the state `in` to `out` and updates energies and statistics.
   void apply(const ContactInput& in, ContactForces& out);
 
+  // Element erosion: `eroded` holds 1 for every eroded element, indexed like the surfaces'
+  // `element` and `exposed_by`. Facets of eroded elements leave the contact (unless
+  // ErosionSettings::remove_facets is off), internal faces they expose join it, and nodes left
+  // without facets stay as free point masses (ErosionSettings::keep_free_nodes) or leave.
+  void erode(std::span<const std::uint8_t> eroded);
+
   const ContactStats& stats() const { return stats_; }
   // Stable step bound before any contact: 2 / sqrt(max over points of 2 k / m_min).
   double initial_stable_step() const { return initial_stable_step_; }
@@ -93,10 +99,14 @@ class ContactInterface {
  private:
   enum PointState : std::uint8_t { kFree, kReleased, kTied, kUntied };
 
+  // Why a facet is out of the contact (bits of Side::off).
+  enum FacetOff : std::uint8_t { kOutsideRegion = 1, kDormant = 2, kEroded = 4 };
+
   struct Side {  // one contact surface and its contact points
     ContactSurface surface;
     std::vector<std::uint8_t> sharp;       // sharp-edge bits per facet
-    std::vector<std::uint8_t> active;      // gid_0 / gid_1
+    std::vector<std::uint8_t> off;         // FacetOff bits per facet
+    std::vector<std::uint8_t> active;      // off == 0
     std::vector<double> depth;             // detection depth per facet
     std::vector<double> facet_gap;         // g_m per facet, capped by Gap_max_m (gap.hpp)
     std::vector<double> facet_min_edge;    // its shortest edge (g_m_l)
@@ -114,6 +124,7 @@ class ContactInterface {
     double max_point_gap = 0.0;
     double max_facet_gap = 0.0;
     std::vector<std::int32_t> point_part;
+    std::vector<std::uint8_t> node_free;  // per node: every facet of the node has eroded
     double max_point_depth = 0.0;
     double max_km = 0.0;    // stiffest main segment (stable-step bound)
     double max_pfac = 0.0;  // stiffest facet penalty (stable-step bound)
@@ -142,7 +153,7 @@ class ContactInterface {
     std::vector<double> hit_xi, hit_eta;
     std::vector<double> fx, fy, fz;  // force on the point (before `weight`)
     std::vector<double> area, pressure, slip_speed, normal_force, tangential_force;
-    std::vector<double> energy, damping_work, slip_work, penetration, omega2;
+    std::vector<double> energy, damping_work, slip_work, penetration, omega2, pair_gap;
   };
 
   // Where a contact point is now.
@@ -154,6 +165,7 @@ class ContactInterface {
     Vec3 vector_area;   // N2S: a quarter of each adjacent facet's area vector, summed
     bool active = false;
     bool two_sided = false;  // N2S: a node of a shell (no normal; either side may touch)
+    bool free = false;       // a node whose facets have all eroded: its whole area touches
   };
 
   void validate(const ContactSurface& s1, const ContactSurface& s2, std::size_t coordinates) const;
@@ -161,6 +173,11 @@ class ContactInterface {
   void build_points(Side& side, const ContactInput& in, double other_size,
                     std::span<const std::int32_t> secondary_nodes,
                     const std::vector<std::uint8_t>& free_edges);
+  // Penalty, stiffness, depth, thickness, gap and part of point p from its facet (or its node's
+  // facets); `share`: its part of the spring (integration points: of their facet's area).
+  void init_point(Side& side, std::size_t p, const std::vector<std::uint8_t>& on_free_edge,
+                  double share);
+  static void size_pass(Pass& pass, std::size_t n);
   void build_parts();
   void build_passes();
   void rebuild_broad_phase(const ContactInput& in);
@@ -190,6 +207,9 @@ class ContactInterface {
   double smooth_reach_ = 0.0;  // overshoot beyond a smooth edge per unit |gap|: tan(alpha_edge)
   double initial_stable_step_ = std::numeric_limits<double>::infinity();
   std::size_t builds_ = 0;
+  bool rebuild_pending_ = false;  // points or facets changed (erosion)
+  std::size_t gap_pairs_ = 0;     // pairs counted in stats_.gap_min / gap_max
+  std::vector<double> x0_, y0_, z0_;  // initial coordinates (Igap 2 only)
   ContactStats stats_;
 };
 

@@ -4,6 +4,7 @@
 // Each candidate is projected on (quad.hpp). The gap g of the pair (gap.hpp: the shells' offsets)
 // is subtracted from the distance along the facet's normal. It is accepted when
 //  - it does not share a node with the point's own facet (no contact with itself or neighbours),
+//    and with Igap 2 none of its nodes lay within twice the gap of the point at the start,
 //  - for one side of a shell: the point lies on that side of the mid-surface (behind it lies the
 //    other side's facet),
 //  - the two surfaces face each other (n_point . n_facet < 0; reversed for contact from behind;
@@ -44,12 +45,17 @@ struct PartnerRules {
   double point_gap = 0.0;       // g_s, capped (gap.hpp)
   double point_min_edge = std::numeric_limits<double>::infinity();  // g_s_l
   double mesh_fraction = std::numeric_limits<double>::infinity();   // %mesh_size (Igap 3)
+  // Igap 2 (self contact): the point's initial position and the initial nodal coordinates; a
+  // facet with a node that lay within twice the pair's gap of the point is skipped. Empty: off.
+  Vec3 initial_point;
+  std::span<const double> x0, y0, z0;
 };
 
 struct Partner {
   std::int32_t facet = -1;
   double xi = 0.0, eta = 0.0;
   double gap = 0.0;  // (x - q) . n less the pair's gap: negative = penetration
+  double pair_gap = 0.0;  // the pair's gap (gap.hpp)
 };
 
 // `own_nodes`: the nodes of the point's facet (a node-to-surface point: its node four times);

@@ -25,6 +25,11 @@ struct ContactSurface {
   std::vector<double> bulk_modulus;    // of the owning element's material
   std::vector<double> element_volume;  // of the owning element
   std::vector<double> young_modulus;   // of a shell's material (K = Stfac 0.5 E t)
+  // Erosion (ContactInterface::erode): the host's index of the element the facet belongs to (-1:
+  // it never erodes), and for an internal face, which joins the contact only once the element
+  // on its other side has eroded (IMPETUS no_internal = 0), that element (-1: an exterior face).
+  std::vector<std::int32_t> element;
+  std::vector<std::int32_t> exposed_by;
 
   std::size_t size() const { return facets.size(); }
   void add(const std::array<std::int32_t, 4>& nodes, std::int64_t part_id, double pfac, double t,
@@ -37,6 +42,8 @@ struct ContactSurface {
     bulk_modulus.push_back(bulk);
     element_volume.push_back(volume);
     young_modulus.push_back(0.0);
+    element.push_back(-1);
+    exposed_by.push_back(-1);
   }
   // Both sides of a shell of thickness h (nodes counter-clockwise about its normal), and for the
   // Radioss rules its Young's modulus.
