@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "abut/core/parallel.hpp"
 
@@ -87,7 +88,8 @@ bool BucketGrid::cell_of(double x, double y, double z, std::size_t& cell) const 
 }
 
 void BucketGrid::query(std::span<const double> x, std::span<const double> y,
-                       std::span<const double> z, CandidateList& out) const {
+                       std::span<const double> z, CandidateList& out,
+                       const std::function<bool(std::size_t, std::int32_t)>& keep) const {
   const std::size_t n = x.size();
   out.offsets.assign(n + 1, 0);
   if (boxes_.empty()) {
@@ -109,6 +111,7 @@ void BucketGrid::query(std::span<const double> x, std::span<const double> y,
       for (std::size_t k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
         const std::int32_t b = cell_boxes_[k];
         if (!boxes_[b].contains(x[p], y[p], z[p])) continue;
+        if (keep && !keep(p, b)) continue;
         if (pass == 0)
           ++count;
         else

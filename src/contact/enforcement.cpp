@@ -80,6 +80,7 @@ Partner ContactInterface::partner_of(const Pass& pass, std::size_t p, const Poin
                             target.active,
                             target.depth,
                             target.surface.twin,
+                            target.free_edges,
                             target.facet_gap,
                             target.facet_min_edge,
                             in.x,
@@ -300,16 +301,12 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     return;
   }
 
-  if (node_point) {
-    const QuadCorners c = quad_corners(target.surface.facets[h.facet], in.x, in.y, in.z);
-    double jacobian = 0.0;
-    const Vec3 n_partner = quad_normal(c, h.xi, h.eta, jacobian);
-    if (!facing_area(from_behind ? n_partner * -1.0 : n_partner)) {
-      clear_history();
-      return;
-    }
+  if (node_point && !facing_area(from_behind ? h.normal * -1.0 : h.normal)) {
+    clear_history();
+    return;
   }
-  const Spring r = partner_spring(h.facet, h.xi, h.eta);
+  Spring r = partner_spring(h.facet, h.xi, h.eta);
+  r.normal = h.normal;  // the facet's, or radial around a shell's rounded edge
   const Vec3 normal = from_behind ? r.normal * -1.0 : r.normal;  // the push on the point
   NormalResponse response;
   if (adhesive) {

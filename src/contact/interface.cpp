@@ -90,7 +90,17 @@ void ContactInterface::rebuild_broad_phase(const ContactInput& in) {
       pass.qy[p] = x.y;
       pass.qz[p] = x.z;
     }
-    pass.grid.query(pass.qx, pass.qy, pass.qz, pass.candidates);
+    // Facets that share a node with the point's own never touch it (narrow_phase.hpp): dropped
+    // here once per build instead of at every step, so that in self contact the points on a
+    // smooth surface have no candidate at all.
+    const auto keep = [&own, &target](std::size_t p, std::int32_t f) {
+      const auto mine = own.point_nodes(p);
+      for (const std::int32_t a : target.surface.facets[f])
+        for (const std::int32_t b : mine)
+          if (a == b) return false;
+      return true;
+    };
+    pass.grid.query(pass.qx, pass.qy, pass.qz, pass.candidates, keep);
   }
   rebuild_pending_ = false;
   bx_.resize(surface_nodes_.size());

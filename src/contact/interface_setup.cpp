@@ -189,6 +189,7 @@ void ContactInterface::build_sides(const ContactInput& in,
     const double other_size = typical_size[sides_.size() == 1 ? 0 : 1 - side_index];
     build_points(side, in, other_size,
                  side_index == 0 ? secondary_nodes : std::span<const std::int32_t>{}, free_edges);
+    side.free_edges = std::move(free_edges);
   }
   if (s.search_margin) margin_ = *s.search_margin;
 

@@ -60,29 +60,38 @@ Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> c
     if (box_distance2 > reach * reach || closer < 0.0 || box_distance2 > closer * closer) continue;
     const QuadProjection q = project_onto_quad(c, x_p);
     if (target.twin[f] >= 0 && q.gap < 0.0) continue;  // the other side of the shell
-    const double gap = q.gap - g;
+    const bool shell = target.twin[f] >= 0;
+    double gap = q.gap - g;
+    Vec3 push = q.normal;
     if (has_normal) {
       const double facing = dot(n_p, q.normal);
       if (rules.from_behind ? facing <= 0.0 : facing >= 0.0) continue;
     }
-    // Beyond a sharp (or free) edge only within delta_edge; beyond a smooth edge only within the
-    // dead zone of a convex edge, |gap| tan(alpha_edge) wide (docs/contact.md, narrow phase),
-    // the distance counted from the facet itself (a shell's mid-surface) as the dead zone is.
     if (q.crossed_edges != 0) {
       const bool sharp = (q.crossed_edges & target.sharp[f]) != 0;
-      const double allowed =
-          sharp ? rules.edge_tolerance
-                : std::max(rules.edge_tolerance, std::abs(q.gap) * rules.smooth_reach);
+      const bool rounded = shell && (q.crossed_edges & target.free_edges[f]) == 0;
       // A node on the border of a matched mesh projects onto the very edge: round-off
       // (kEdgeRoundOff of the facet's size) is no overshoot.
-      if (q.overshoot > allowed && q.overshoot > kEdgeRoundOff * norm(c[2] - c[0])) continue;
+      const bool on_edge = q.overshoot <= kEdgeRoundOff * norm(c[2] - c[0]);
+      if (rounded && !on_edge) {
+        gap = q.distance - g;  // around the rounded edge
+        push = (x_p - q.point) / q.distance;
+      } else {
+        // Beyond a sharp (or free) edge only within delta_edge; beyond a smooth edge only within
+        // the dead zone of a convex edge, |gap| tan(alpha_edge) wide (docs/contact.md, narrow
+        // phase), the distance counted from the facet itself as the dead zone is.
+        const double allowed =
+            sharp ? rules.edge_tolerance
+                  : std::max(rules.edge_tolerance, std::abs(q.gap) * rules.smooth_reach);
+        if (q.overshoot > allowed && !on_edge) continue;
+      }
     }
     // The far side: deeper than the pair's detection depth (or, from behind, further out).
     const double inward = rules.from_behind ? gap : -gap;
     if (inward > below || -inward > std::max(rules.depth_above, below)) continue;
     if (q.distance - g < best_distance) {
       best_distance = q.distance - g;
-      best = {f, q.xi, q.eta, gap, g};
+      best = {f, q.xi, q.eta, gap, g, push};
     }
   }
   return best;

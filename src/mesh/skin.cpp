@@ -29,6 +29,7 @@ struct FaceRecord {
   std::array<std::int32_t, 4> key;  // sorted node indices: equal for the two sides of a face
   std::int32_t hex;
   std::int32_t local;
+  std::int32_t exposed_by = -1;  // an interior face: the hex on its other side
 };
 
 std::array<std::int32_t, 4> face_nodes(const Hex8& hex, int local) {
@@ -38,7 +39,7 @@ std::array<std::int32_t, 4> face_nodes(const Hex8& hex, int local) {
 }
 
 std::vector<SkinFace> extract(const Mesh& mesh, bool all_parts, std::span<const std::int64_t> parts,
-                              bool merge) {
+                              bool merge, const std::function<bool(std::int32_t)>& erodible) {
   std::vector<std::int64_t> selected(parts.begin(), parts.end());
   std::sort(selected.begin(), selected.end());
   auto is_selected = [&](std::int32_t hex) {
@@ -72,6 +73,14 @@ std::vector<SkinFace> extract(const Mesh& mesh, bool all_parts, std::span<const 
                mesh.hex_part[records[i].hex] != mesh.hex_part[records[i + 1].hex]) {
       for (std::size_t k = i; k < j; ++k)
         if (is_selected(records[k].hex)) kept.push_back(records[k]);
+    } else if (users == 2 && erodible) {  // each side, exposed when the other one erodes
+      for (std::size_t k = i; k < j; ++k) {
+        const std::int32_t other = records[k == i ? i + 1 : i].hex;
+        if (is_selected(records[k].hex) && erodible(other)) {
+          kept.push_back(records[k]);
+          kept.back().exposed_by = other;
+        }
+      }
     }
     i = j;
   }
@@ -97,6 +106,7 @@ std::vector<SkinFace> extract(const Mesh& mesh, bool all_parts, std::span<const 
     f.hex = r.hex;
     f.part = mesh.hex_part[r.hex];
     f.thickness = volume / quad_area(mesh.nodes, f.nodes);
+    f.exposed_by = r.exposed_by;
     faces.push_back(f);
   }
   return faces;
@@ -105,12 +115,13 @@ std::vector<SkinFace> extract(const Mesh& mesh, bool all_parts, std::span<const 
 }  // namespace
 
 std::vector<SkinFace> exterior_faces(const Mesh& mesh, std::span<const std::int64_t> parts,
-                                     bool merge) {
-  return extract(mesh, false, parts, merge);
+                                     bool merge, const std::function<bool(std::int32_t)>& erodible) {
+  return extract(mesh, false, parts, merge, erodible);
 }
 
-std::vector<SkinFace> exterior_faces(const Mesh& mesh, bool merge) {
-  return extract(mesh, true, {}, merge);
+std::vector<SkinFace> exterior_faces(const Mesh& mesh, bool merge,
+                                     const std::function<bool(std::int32_t)>& erodible) {
+  return extract(mesh, true, {}, merge, erodible);
 }
 
 double hex_volume(const Nodes& nodes, const Hex8& hex) {

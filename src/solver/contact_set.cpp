@@ -387,9 +387,10 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
       faces1 = faces_touching(contact_faces(model, EntityRef{EntityType::All, 0, spec.surface1.where}, spec.merge),
                               secondary_nodes, nodes.size(), spec.surface1);
     } else {
-      faces1 = contact_faces(model, spec.surface1, spec.merge);
+      faces1 = contact_faces(model, spec.surface1, spec.merge, !spec.no_internal);
     }
-    const std::vector<SkinFace> faces2 = contact_faces(model, spec.surface2, spec.merge);
+    const std::vector<SkinFace> faces2 =
+        contact_faces(model, spec.surface2, spec.merge, !spec.no_internal);
     const std::map<std::int64_t, PartPenalty> penalties =
         part_penalties(model, spec, faces1, faces2, v_max);
     std::function<double(const SkinFace&)> penalty_of = [&penalties](const SkinFace& f) {
@@ -455,6 +456,10 @@ void ContactSet::apply(const ContactInput& in, std::span<double> fx, std::span<d
     fy[i] += cfy_[i];
     fz[i] += cfz_[i];
   }
+}
+
+void ContactSet::erode(std::span<const std::uint8_t> eroded) {
+  for (ContactInterface& c : interfaces_) c.erode(eroded);
 }
 
 double ContactSet::stable_step(std::int64_t* limiting_contact) const {

@@ -23,6 +23,8 @@ class ContactSet {
   void apply(const ContactInput& in, std::span<double> fx, std::span<double> fy, std::span<double> fz);
   // Smallest stable step of the contact springs and the interface that sets it (-1: none).
   double stable_step(std::int64_t* limiting_contact) const;
+  // Element erosion (ContactInterface::erode): `eroded` per element, hexes then shells.
+  void erode(std::span<const std::uint8_t> eroded);
   double elastic_and_damping_energy() const;  // "contact" column of energy.csv
   double friction_energy() const;
 

@@ -21,24 +21,47 @@ ContactSurface contact_surface(const Mesh& mesh, std::span<const SkinFace> faces
     if (f.shell >= 0) {
       const double young = m.bulk > 0.0 ? 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear) : 0.0;
       s.add_shell(f.nodes, f.part, penalty_of_face(f), f.thickness, young);
+      s.element.end()[-1] = s.element.end()[-2] = element_index(mesh, f);
       continue;
     }
     const double volume =
         moduli_of_part ? hex_volume(mesh.nodes, mesh.hexes[static_cast<std::size_t>(f.hex)]) : 0.0;
     s.add(f.nodes, f.part, penalty_of_face(f), f.thickness, m.bulk, volume);
+    s.element.back() = element_index(mesh, f);
+    s.exposed_by.back() = f.exposed_by;
   }
   return s;
 }
 
-std::vector<SkinFace> contact_faces(const Model& model, const EntityRef& entity, bool merge) {
+std::int32_t element_index(const Mesh& mesh, const SkinFace& f) {
+  return f.shell >= 0 ? static_cast<std::int32_t>(mesh.hex_count()) + f.shell : f.hex;
+}
+
+bool part_can_erode(const Model& model, std::int64_t part) {
+  const Part* p = model.find_part(part);
+  if (p && p->erosion.any()) return true;
+  const auto* metal = std::get_if<MetalParams>(&model.material_of_part(part));
+  return metal && metal->failure.active;
+}
+
+std::vector<SkinFace> contact_faces(const Model& model, const EntityRef& entity, bool merge,
+                                    bool exposed_faces) {
   std::vector<SkinFace> faces;
   std::vector<std::int64_t> parts;
+  // Interior faces next to hexes that can erode, when erosion may expose them.
+  std::vector<std::uint8_t> erodible(model.mesh.hex_count(), 0);
+  if (exposed_faces)
+    for (std::size_t h = 0; h < erodible.size(); ++h)
+      erodible[h] = part_can_erode(model, model.mesh.hex_part[h]) ? 1 : 0;
+  std::function<bool(std::int32_t)> exposable;
+  if (std::find(erodible.begin(), erodible.end(), 1) != erodible.end())
+    exposable = [&erodible](std::int32_t h) { return erodible[h] != 0; };
   if (entity.type == EntityType::All) {
-    faces = exterior_faces(model.mesh, merge);
+    faces = exterior_faces(model.mesh, merge, exposable);
     for (const Part& p : model.parts) parts.push_back(p.id);
   } else if (entity.type == EntityType::Part || entity.type == EntityType::PartSet) {
     parts = model.parts_of(entity);
-    faces = exterior_faces(model.mesh, parts, merge);
+    faces = exterior_faces(model.mesh, parts, merge, exposable);
   } else {
     throw InputError(entity.where, "a contact surface is a part (P), a part set (PS) or ALL");
   }

@@ -57,6 +57,7 @@ void Simulation::Impl::compute_forces(double dt) {
       }
     }
   }
+  report_erosion_to_contact();
   const Vec3 g = gravity_at(t);
   const std::int64_t nn = static_cast<std::int64_t>(n_nodes);
 #pragma omp parallel for schedule(static) if (nn >= kParallelMinimum)
@@ -111,6 +112,29 @@ void Simulation::Impl::compute_forces(double dt) {
       energy.eroded += s.eroded_energy;
     }
   }
+}
+
+// Elements eroded in this update leave the contact surfaces (and expose what lay beneath).
+void Simulation::Impl::report_erosion_to_contact() {
+  if (contacts->empty()) return;
+  std::size_t count = 0;
+  for (const auto* steps : {&block_steps, &shell_steps})
+    for (const BlockStep& s : *steps) count += s.eroded;
+  if (count == eroded_elements) return;
+  eroded_elements = count;
+  const std::size_t hexes = model.mesh.hex_count();
+  element_eroded.assign(hexes + model.mesh.shell_count(), 0);
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    const std::vector<std::uint8_t>& e = blocks[b].eroded();
+    for (std::size_t k = 0; k < e.size(); ++k)
+      if (e[k]) element_eroded[static_cast<std::size_t>(block_hex_index[b][k])] = 1;
+  }
+  for (std::size_t b = 0; b < shell_blocks.size(); ++b) {
+    const std::vector<std::uint8_t>& e = shell_blocks[b].eroded();
+    for (std::size_t k = 0; k < e.size(); ++k)
+      if (e[k]) element_eroded[hexes + static_cast<std::size_t>(block_shell_index[b][k])] = 1;
+  }
+  contacts->erode(element_eroded);
 }
 
 // v^{n+1/2} from v^{n-1/2} and f^n, then boundary motions; energies at t^n.

@@ -61,6 +61,8 @@ struct Simulation::Impl {
   bool rotations() const { return !rotary_inertia.empty(); }
 
   std::unique_ptr<ContactSet> contacts;
+  std::size_t eroded_elements = 0;          // as last reported to the contacts
+  std::vector<std::uint8_t> element_eroded;  // per element, hexes then shells
   std::int64_t limiting_contact = -1;
   double contact_seconds = 0.0;  // wall time spent in contact (for the summary)
 
@@ -89,6 +91,7 @@ struct Simulation::Impl {
 
   void setup();
   void compute_forces(double dt);
+  void report_erosion_to_contact();
   void kick();
   void drift();
   Vec3 gravity_at(double time) const;

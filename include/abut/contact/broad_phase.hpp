@@ -9,6 +9,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -31,9 +32,11 @@ struct CandidateList {
 class BucketGrid {
  public:
   void build(std::span<const Box> boxes);
-  // Fills `out` with the boxes containing each point (OpenMP over points).
+  // Fills `out` with the boxes containing each point (OpenMP over points); `keep(point, box)`,
+  // if given, drops pairs that can never touch (called concurrently for different points).
   void query(std::span<const double> x, std::span<const double> y, std::span<const double> z,
-             CandidateList& out) const;
+             CandidateList& out,
+             const std::function<bool(std::size_t, std::int32_t)>& keep = {}) const;
   std::size_t cell_count() const { return cell_start_.empty() ? 0 : cell_start_.size() - 1; }
 
  private:

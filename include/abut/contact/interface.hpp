@@ -105,6 +105,7 @@ class ContactInterface {
   struct Side {  // one contact surface and its contact points
     ContactSurface surface;
     std::vector<std::uint8_t> sharp;       // sharp-edge bits per facet
+    std::vector<std::uint8_t> free_edges;  // free-edge bits per facet (a shell's border)
     std::vector<std::uint8_t> off;         // FacetOff bits per facet
     std::vector<std::uint8_t> active;      // off == 0
     std::vector<double> depth;             // detection depth per facet

@@ -13,7 +13,10 @@
 //    may be and still belong to this side; beyond it lies the far side),
 //  - a projection beyond a sharp (or free) edge overshoots it by at most edge_tolerance; beyond a
 //    smooth edge by at most |g| tan(alpha_edge) (the dead zone of a convex edge; see
-//    docs/contact.md).
+//    docs/contact.md). A shell's contact surface is rounded around its inner edges (the round
+//    gap of seed 004, comment 5): beyond such an edge the gap is the distance to the edge less
+//    the pair's gap, along the radial direction, at any overshoot; only its free border cuts off
+//    at edge_tolerance. Folds that sharpen as a shell crushes then stay continuous.
 // The closest accepted facet (distance less the pair's gap) is the partner.
 #include <array>
 #include <cstdint>
@@ -31,6 +34,7 @@ struct TargetFacets {
   std::span<const std::uint8_t> active;  // 0: the facet takes no part
   std::span<const double> depth;         // its own detection depth
   std::span<const std::int32_t> twin;    // shell: the other side's facet, else -1
+  std::span<const std::uint8_t> free_edges;  // free-edge bits per facet (a shell's border)
   std::span<const double> gap;           // g_m, capped (gap.hpp)
   std::span<const double> min_edge;      // g_m_l: its shortest edge
   std::span<const double> x, y, z;       // current nodal coordinates
@@ -56,6 +60,7 @@ struct Partner {
   double xi = 0.0, eta = 0.0;
   double gap = 0.0;  // (x - q) . n less the pair's gap: negative = penetration
   double pair_gap = 0.0;  // the pair's gap (gap.hpp)
+  Vec3 normal;  // the push direction: the facet's normal, or around a shell's edge the radial one
 };
 
 // `own_nodes`: the nodes of the point's facet (a node-to-surface point: its node four times);

@@ -6,6 +6,7 @@
 // separate (seed 000, *CONTACT field `merge`).
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -21,14 +22,19 @@ struct SkinFace {
   std::int64_t part = 0;                // user part id of the owning hex
   double thickness = 0.0;               // owning hex's size along the face normal: volume / area
   std::int32_t shell = -1;              // index of the shell, when the face is one
+  std::int32_t exposed_by = -1;         // an interior face: the hex whose erosion exposes it
 };
 
 // Exterior faces of the hexes whose part is in `parts`, in hex order then local face order
-// (bottom, top, y-min side, x-max side, y-max side, x-min side of the reference hex).
+// (bottom, top, y-min side, x-max side, y-max side, x-min side of the reference hex). With
+// `erodible`, also each selected hex's side of the interior faces it shares with a hex for which
+// erodible(hex index) holds: the faces that erosion may expose (exposed_by).
 std::vector<SkinFace> exterior_faces(const Mesh& mesh, std::span<const std::int64_t> parts,
-                                     bool merge);
+                                     bool merge,
+                                     const std::function<bool(std::int32_t)>& erodible = {});
 // Every exterior face of the mesh (entity type ALL).
-std::vector<SkinFace> exterior_faces(const Mesh& mesh, bool merge);
+std::vector<SkinFace> exterior_faces(const Mesh& mesh, bool merge,
+                                     const std::function<bool(std::int32_t)>& erodible = {});
 
 // Volume of a trilinear hex: 2x2x2 Gauss quadrature of det J, exact because det J is at most
 // quadratic in each reference coordinate.

@@ -34,8 +34,17 @@ inline constexpr double kElementPenaltyFraction = 1.0 / (0.96 * 0.96) - 1.0;
 double element_penalty(double element_step, double lightest_node, double face_area);
 
 // The contact faces of a contact entity (P, PS or ALL): the exterior faces of its hexes, then its
-// shells; InputError if it has none.
-std::vector<SkinFace> contact_faces(const Model& model, const EntityRef& entity, bool merge);
+// shells; InputError if it has none. With `exposed_faces` (IMPETUS no_internal = 0) also the
+// interior faces that the erosion of a neighbouring hex would expose.
+std::vector<SkinFace> contact_faces(const Model& model, const EntityRef& entity, bool merge,
+                                    bool exposed_faces = false);
+
+// The element index the contact library's erosion uses (ContactSurface::element): a hex's own
+// index, shells after all hexes.
+std::int32_t element_index(const Mesh& mesh, const SkinFace& f);
+
+// Can elements of the part erode (*PART erosion criteria or a failure law of its material)?
+bool part_can_erode(const Model& model, std::int64_t part);
 
 // OptiStruct ADJUST of every contact that asks for it (ContactSpec::adjust_depth): moves surface-1
 // nodes within the depth onto surface 2 in the reference configuration. Returns one note each.
