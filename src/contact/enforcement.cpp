@@ -90,8 +90,8 @@ Partner ContactInterface::partner_of(const Pass& pass, std::size_t p, const Poin
   rules.depth_above = settings_.adhesion ? settings_.adhesion->zone() : 0.0;
   rules.point_gap = own.point_gap[p];
   rules.point_min_edge = own.point_min_edge[p];
-  rules.mesh_fraction = settings_.gaps.mesh_fraction.value_or(
-      std::numeric_limits<double>::infinity());
+  rules.mesh_fraction =
+      settings_.gaps.mesh_fraction.value_or(std::numeric_limits<double>::infinity());
   if (!x0_.empty() && self_contact()) {  // Igap 2: where the point was at the start
     const auto nodes = own.point_nodes(p);
     const auto n = quad_shape(own.point_xi[p], own.point_eta[p]);

@@ -67,8 +67,8 @@ void ContactInterface::rebuild_broad_phase(const ContactInput& in) {
     std::vector<Box> boxes(target.surface.size());
     for (std::size_t f = 0; f < boxes.size(); ++f) {
       const QuadCorners c = quad_corners(target.surface.facets[f], in.x, in.y, in.z);
-      const double grow = std::max({target.depth[f], above}) + target.facet_gap[f] +
-                          own.max_point_gap + margin_;
+      const double grow =
+          std::max({target.depth[f], above}) + target.facet_gap[f] + own.max_point_gap + margin_;
       for (int k = 0; k < 3; ++k) {
         const double lo = std::min({c[0][k], c[1][k], c[2][k], c[3][k]});
         const double hi = std::max({c[0][k], c[1][k], c[2][k], c[3][k]});

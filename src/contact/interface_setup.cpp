@@ -292,8 +292,7 @@ void ContactInterface::build_points(Side& side, const ContactInput& in, double o
 }
 
 void ContactInterface::init_point(Side& side, std::size_t p,
-                                  const std::vector<std::uint8_t>& on_free_edge,
-                                  double share) {
+                                  const std::vector<std::uint8_t>& on_free_edge, double share) {
   const ContactSettings& s = settings_;
   const ContactSurface& surface = side.surface;
   const std::size_t n = side.point_facet.size();
@@ -321,12 +320,12 @@ void ContactInterface::init_point(Side& side, std::size_t p,
       side.point_gap[p] = std::max(side.point_gap[p], shell_gap(s.gaps, surface.thickness[f]));
     if (self) side.point_min_edge[p] = std::min(side.point_min_edge[p], side.facet_min_edge[f]);
     if (radioss)
-      side.point_ks[p] = std::max(
-          side.point_ks[p],
-          shell ? shell_segment_stiffness(surface.young_modulus[f], surface.thickness[f],
-                                          s.stiffness.scale)
-                : secondary_node_stiffness(surface.bulk_modulus[f], surface.element_volume[f],
-                                           s.stiffness.scale));
+      side.point_ks[p] =
+          std::max(side.point_ks[p],
+                   shell ? shell_segment_stiffness(surface.young_modulus[f], surface.thickness[f],
+                                                   s.stiffness.scale)
+                         : secondary_node_stiffness(surface.bulk_modulus[f],
+                                                    surface.element_volume[f], s.stiffness.scale));
   }
   if (node >= 0 && s.gaps.zero_at_free_edges && on_free_edge[node]) side.point_gap[p] = 0.0;
   side.point_gap[p] = std::min(side.point_gap[p], s.gaps.max_secondary);
@@ -362,13 +361,32 @@ void ContactInterface::size_pass(Pass& pass, std::size_t n) {
   for (auto* v : {&pass.state, &pass.sliding, &pass.adhered, &pass.hit}) v->resize(n, 0);
   pass.tie_facet.resize(n, -1);
   pass.hit_facet.resize(n, -1);
-  for (auto* v : {&pass.offset,       &pass.shift,  &pass.htx,          &pass.hty,
-                  &pass.htz,          &pass.tie_xi, &pass.tie_eta,      &pass.hit_xi,
-                  &pass.hit_eta,      &pass.fx,     &pass.fy,           &pass.fz,
-                  &pass.area,         &pass.pressure, &pass.slip_speed, &pass.normal_force,
-                  &pass.tangential_force, &pass.energy, &pass.damping_work, &pass.slip_work,
-                  &pass.penetration,  &pass.omega2, &pass.pair_gap,     &pass.qx,
-                  &pass.qy,           &pass.qz})
+  for (auto* v : {&pass.offset,
+                  &pass.shift,
+                  &pass.htx,
+                  &pass.hty,
+                  &pass.htz,
+                  &pass.tie_xi,
+                  &pass.tie_eta,
+                  &pass.hit_xi,
+                  &pass.hit_eta,
+                  &pass.fx,
+                  &pass.fy,
+                  &pass.fz,
+                  &pass.area,
+                  &pass.pressure,
+                  &pass.slip_speed,
+                  &pass.normal_force,
+                  &pass.tangential_force,
+                  &pass.energy,
+                  &pass.damping_work,
+                  &pass.slip_work,
+                  &pass.penetration,
+                  &pass.omega2,
+                  &pass.pair_gap,
+                  &pass.qx,
+                  &pass.qy,
+                  &pass.qz})
     v->resize(n, 0.0);
 }
 

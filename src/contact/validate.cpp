@@ -79,7 +79,8 @@ void ContactInterface::validate(const ContactSurface& s1, const ContactSurface& 
     if (surface->part.size() != n || surface->penalty.size() != n ||
         surface->thickness.size() != n || surface->twin.size() != n ||
         surface->young_modulus.size() != n)
-      fail(name.c_str(), "part, penalty, thickness, twin and Young's modulus need one entry per facet");
+      fail(name.c_str(),
+           "part, penalty, thickness, twin and Young's modulus need one entry per facet");
     for (std::size_t f = 0; f < n; ++f) {
       if (!(surface->penalty[f] > 0.0) || !std::isfinite(surface->penalty[f]))
         fail(name.c_str(),

@@ -21,8 +21,14 @@ constexpr std::array<std::array<int, 4>, 6> kHexFaces{{
 
 // Reference coordinates of the hex nodes.
 constexpr std::array<std::array<double, 3>, 8> kHexCorners{{
-    {-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
-    {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1},
+    {-1, -1, -1},
+    {1, -1, -1},
+    {1, 1, -1},
+    {-1, 1, -1},
+    {-1, -1, 1},
+    {1, -1, 1},
+    {1, 1, 1},
+    {-1, 1, 1},
 }};
 
 struct FaceRecord {
@@ -115,7 +121,8 @@ std::vector<SkinFace> extract(const Mesh& mesh, bool all_parts, std::span<const 
 }  // namespace
 
 std::vector<SkinFace> exterior_faces(const Mesh& mesh, std::span<const std::int64_t> parts,
-                                     bool merge, const std::function<bool(std::int32_t)>& erodible) {
+                                     bool merge,
+                                     const std::function<bool(std::int32_t)>& erodible) {
   return extract(mesh, false, parts, merge, erodible);
 }
 

@@ -49,12 +49,13 @@ std::map<std::int64_t, PartPenalty> part_penalties(const Model& model, const Con
                        "neither pfac nor *UNIT_SYSTEM is given: the automatic penalty "
                        "stiffness is defined in SI units (seed 000), so state the unit "
                        "system with *UNIT_SYSTEM or give pfac on line 2");
-    p.penalty = is_rigid(material) ? rigid_penalty(v_max, *model.units)
-                                   : automatic_penalty(initial_moduli(material).bulk,
-                                                       smallest_element_volume(
-                                                           model.mesh, part_id,
-                                                           model.find_part(part_id)->thickness),
-                                                       v_max, *model.units);
+    p.penalty =
+        is_rigid(material)
+            ? rigid_penalty(v_max, *model.units)
+            : automatic_penalty(
+                  initial_moduli(material).bulk,
+                  smallest_element_volume(model.mesh, part_id, model.find_part(part_id)->thickness),
+                  v_max, *model.units);
   }
   return out;
 }
@@ -196,7 +197,8 @@ double element_step(const Model& model, const SkinFace& f) {
   const double lambda = m.bulk - 2.0 * m.shear / 3.0;
   if (f.shell >= 0) {
     std::array<Vec3, 4> p;
-    for (int a = 0; a < 4; ++a) p[a] = model.mesh.nodes.position(static_cast<std::size_t>(f.nodes[a]));
+    for (int a = 0; a < 4; ++a)
+      p[a] = model.mesh.nodes.position(static_cast<std::size_t>(f.nodes[a]));
     const double young = 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear);
     const double nu = lambda / (2.0 * (lambda + m.shear));
     const double length = shell4_critical_length(shell4_geometry(p), f.nodes[2] == f.nodes[3]);
@@ -384,8 +386,9 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
     std::vector<SkinFace> faces1;
     if (spec.surface1.type == EntityType::NodeSet) {
       secondary_nodes = model.nodes_of(spec.surface1);
-      faces1 = faces_touching(contact_faces(model, EntityRef{EntityType::All, 0, spec.surface1.where}, spec.merge),
-                              secondary_nodes, nodes.size(), spec.surface1);
+      faces1 = faces_touching(
+          contact_faces(model, EntityRef{EntityType::All, 0, spec.surface1.where}, spec.merge),
+          secondary_nodes, nodes.size(), spec.surface1);
     } else {
       faces1 = contact_faces(model, spec.surface1, spec.merge, !spec.no_internal);
     }
@@ -417,8 +420,8 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
     try {
       interfaces_.emplace_back(settings_of(model, spec),
                                contact_surface(model.mesh, faces1, penalty_of, moduli_of),
-                               contact_surface(model.mesh, faces2, penalty_of, moduli_of), node_mass,
-                               initial, secondary_nodes);
+                               contact_surface(model.mesh, faces2, penalty_of, moduli_of),
+                               node_mass, initial, secondary_nodes);
     } catch (const ContactSetupError& e) {
       throw InputError(location_of(spec, e.setting()), e.what());
     }

@@ -11,9 +11,10 @@
 
 namespace abut {
 
-ContactSurface contact_surface(const Mesh& mesh, std::span<const SkinFace> faces,
-                               const std::function<double(const SkinFace&)>& penalty_of_face,
-                               const std::function<ElasticModuli(std::int64_t part)>& moduli_of_part) {
+ContactSurface contact_surface(
+    const Mesh& mesh, std::span<const SkinFace> faces,
+    const std::function<double(const SkinFace&)>& penalty_of_face,
+    const std::function<ElasticModuli(std::int64_t part)>& moduli_of_part) {
   ContactSurface s;
   s.facets.reserve(faces.size());
   for (const SkinFace& f : faces) {

@@ -257,10 +257,9 @@ void Simulation::Impl::kick() {
   if (rotations()) {  // a rigid body's rotation is in its nodes' translations already
     for (std::size_t i = 0; i < n_nodes; ++i) {
       if (rigid_body_of_node[i] >= 0) continue;
-      kinetic += n == 0 ? 0.5 * rotary_inertia[i] *
-                              (owx[i] * owx[i] + owy[i] * owy[i] + owz[i] * owz[i])
-                        : 0.5 * rotary_inertia[i] *
-                              (owx[i] * whx[i] + owy[i] * why[i] + owz[i] * whz[i]);
+      kinetic +=
+          n == 0 ? 0.5 * rotary_inertia[i] * (owx[i] * owx[i] + owy[i] * owy[i] + owz[i] * owz[i])
+                 : 0.5 * rotary_inertia[i] * (owx[i] * whx[i] + owy[i] * why[i] + owz[i] * whz[i]);
     }
   }
   energy.kinetic = kinetic;
@@ -428,7 +427,6 @@ void Simulation::Impl::drift() {
     throw InstabilityError("non-finite coordinates or forces at cycle " + std::to_string(n) +
                            ", t = " + std::to_string(t));
 }
-
 
 void Simulation::advance() {
   impl_->drift();

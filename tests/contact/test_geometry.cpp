@@ -13,7 +13,8 @@
 namespace abut {
 namespace {
 
-const QuadCorners kWarped = {Vec3{0, 0, 0}, Vec3{2, 0, 0.3}, Vec3{2.2, 1.5, -0.2}, Vec3{-0.1, 1.2, 0.25}};
+const QuadCorners kWarped = {Vec3{0, 0, 0}, Vec3{2, 0, 0.3}, Vec3{2.2, 1.5, -0.2},
+                             Vec3{-0.1, 1.2, 0.25}};
 
 // Reference: the closest point by dense sampling of the facet (then local refinement).
 double brute_force_distance(const QuadCorners& c, const Vec3& p) {
@@ -27,7 +28,8 @@ double brute_force_distance(const QuadCorners& c, const Vec3& p) {
     }
   for (double h = 2.0 / n; h > 1e-12; h *= 0.5)
     for (int k = 0; k < 9; ++k) {
-      const double xi = std::clamp(bx + h * (k % 3 - 1), -1.0, 1.0), eta = std::clamp(by + h * (k / 3 - 1), -1.0, 1.0);
+      const double xi = std::clamp(bx + h * (k % 3 - 1), -1.0, 1.0),
+                   eta = std::clamp(by + h * (k / 3 - 1), -1.0, 1.0);
       const double d = norm(quad_point(c, xi, eta) - p);
       if (d < best) best = d, bx = xi, by = eta;
     }

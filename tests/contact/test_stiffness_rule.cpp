@@ -8,10 +8,9 @@
 // Tolerance: round-off, 1e-12 relative.
 #include <gtest/gtest.h>
 
-#include <limits>
-
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "abut/contact/gap.hpp"
 #include "abut/contact/stiffness_rule.hpp"
@@ -89,9 +88,9 @@ TEST(GapRule, RadiossVariableGapOfShells) {
   s.scale = 0.8;
   EXPECT_DOUBLE_EQ(shell_gap(s, 2.0), 0.8);
   const double inf = std::numeric_limits<double>::infinity();
-  EXPECT_DOUBLE_EQ(pair_gap(0.8, 0.5, inf, 4.0, inf), 1.3);   // Igap 1
-  EXPECT_DOUBLE_EQ(pair_gap(0.8, 0.5, inf, 4.0, 0.4), 1.3);   // not in self contact: no cap
-  EXPECT_DOUBLE_EQ(pair_gap(0.8, 0.5, 1.0, 2.0, 0.4), 1.2);   // 0.4 (1 + 2)
+  EXPECT_DOUBLE_EQ(pair_gap(0.8, 0.5, inf, 4.0, inf), 1.3);  // Igap 1
+  EXPECT_DOUBLE_EQ(pair_gap(0.8, 0.5, inf, 4.0, 0.4), 1.3);  // not in self contact: no cap
+  EXPECT_DOUBLE_EQ(pair_gap(0.8, 0.5, 1.0, 2.0, 0.4), 1.2);  // 0.4 (1 + 2)
   EXPECT_DOUBLE_EQ(shell_segment_stiffness(210e9, 0.002, 2.0), 2.0 * 0.5 * 210e9 * 0.002);
 }
 

@@ -22,16 +22,16 @@ namespace abut {
 namespace {
 
 constexpr double kThickness = 0.01;
-constexpr double kPenalty = 1e9;                        // pfac [Pa/m]
+constexpr double kPenalty = 1e9;                          // pfac [Pa/m]
 constexpr double kBlockMass = 7800.0 * 0.1 * 0.1 * 0.02;  // rho V of the 0.1 x 0.1 x 0.02 block
 constexpr double kPlateMass = 7800.0 * 0.1 * 0.1 * kThickness;
 double sink(double mass) { return mass * 9.81 / (kPenalty * 0.1 * 0.1); }  // d = m g / (pfac A)
 const double kSink = sink(kBlockMass);
 
 struct Case {
-  bool from_below = false;   // the block below the plate
-  bool plate_moves = false;  // the plate (0.1 x 0.1) on a fixed block (0.2 x 0.2)
-  std::string method = "S2S";       // *CONTACT_DISCRETIZATION method
+  bool from_below = false;              // the block below the plate
+  bool plate_moves = false;             // the plate (0.1 x 0.1) on a fixed block (0.2 x 0.2)
+  std::string method = "S2S";           // *CONTACT_DISCRETIZATION method
   std::string surfaces = "P, 1, P, 2";  // block, plate
   std::string symmetric = "";
 };
@@ -50,7 +50,8 @@ SI
 *TIME
 0.04
 *COMPONENT_BOX
-1, 1, )" + std::to_string(nb) + ", " + std::to_string(nb) + ", 1\n-" + b + ", -" + b + ", " +
+1, 1, )" +
+         std::to_string(nb) + ", " + std::to_string(nb) + ", 1\n-" + b + ", -" + b + ", " +
          std::to_string(std::min(near, far)) + ", " + b + ", " + b + ", " +
          std::to_string(std::max(near, far)) + "\n*COMPONENT_SHELL_PLATE\n2, 2, " +
          std::to_string(np) + ", " + std::to_string(np) + "\n-" + p + ", -" + p + ", 0.0, " + p +
@@ -63,11 +64,12 @@ SI
 "plate"
 2, 1, , 0.01
 *BC_MOTION
-P, )" + std::string(c.plate_moves ? "1" : "2") + R"(, XYZ, XYZ
+P, )" + std::string(c.plate_moves ? "1" : "2") +
+         R"(, XYZ, XYZ
 *CURVE
 1
-0.0, )" + std::to_string(g) + "\n1.0, " +
-         std::to_string(g) + R"(
+0.0, )" + std::to_string(g) +
+         "\n1.0, " + std::to_string(g) + R"(
 *LOAD_GRAVITY
 Z, 1
 *CONTACT

@@ -18,14 +18,14 @@
 namespace abut {
 
 struct GapSettings {
-  double scale = 1.0;                                                // Gap_scale
+  double scale = 1.0;                                              // Gap_scale
   double max_secondary = std::numeric_limits<double>::infinity();  // Gap_max_s
   double max_main = std::numeric_limits<double>::infinity();       // Gap_max_m
-  std::optional<double> mesh_fraction;  // %mesh_size: Igap 3 when set
+  std::optional<double> mesh_fraction;                             // %mesh_size: Igap 3 when set
   // Igap 2, self contact: a point does not meet facets that lay within twice the pair's gap of it
   // in the initial configuration (seed 004: curvilinear distance below 2 Gap).
   bool skip_close = false;
-  bool zero_at_free_edges = false;      // Igap0 = 1 (node-to-surface points only)
+  bool zero_at_free_edges = false;  // Igap0 = 1 (node-to-surface points only)
 };
 
 // The gap a shell of thickness t contributes on one side, before the caps.

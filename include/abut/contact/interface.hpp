@@ -208,8 +208,8 @@ class ContactInterface {
   double smooth_reach_ = 0.0;  // overshoot beyond a smooth edge per unit |gap|: tan(alpha_edge)
   double initial_stable_step_ = std::numeric_limits<double>::infinity();
   std::size_t builds_ = 0;
-  bool rebuild_pending_ = false;  // points or facets changed (erosion)
-  std::size_t gap_pairs_ = 0;     // pairs counted in stats_.gap_min / gap_max
+  bool rebuild_pending_ = false;      // points or facets changed (erosion)
+  std::size_t gap_pairs_ = 0;         // pairs counted in stats_.gap_min / gap_max
   std::vector<double> x0_, y0_, z0_;  // initial coordinates (Igap 2 only)
   ContactStats stats_;
 };

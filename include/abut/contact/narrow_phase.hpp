@@ -30,23 +30,23 @@ namespace abut {
 // The facets a point may meet, with what the acceptance rules need of each.
 struct TargetFacets {
   std::span<const std::array<std::int32_t, 4>> nodes;
-  std::span<const std::uint8_t> sharp;   // sharp-edge bits per facet (quad.hpp edge numbering)
-  std::span<const std::uint8_t> active;  // 0: the facet takes no part
-  std::span<const double> depth;         // its own detection depth
-  std::span<const std::int32_t> twin;    // shell: the other side's facet, else -1
+  std::span<const std::uint8_t> sharp;       // sharp-edge bits per facet (quad.hpp edge numbering)
+  std::span<const std::uint8_t> active;      // 0: the facet takes no part
+  std::span<const double> depth;             // its own detection depth
+  std::span<const std::int32_t> twin;        // shell: the other side's facet, else -1
   std::span<const std::uint8_t> free_edges;  // free-edge bits per facet (a shell's border)
-  std::span<const double> gap;           // g_m, capped (gap.hpp)
-  std::span<const double> min_edge;      // g_m_l: its shortest edge
-  std::span<const double> x, y, z;       // current nodal coordinates
+  std::span<const double> gap;               // g_m, capped (gap.hpp)
+  std::span<const double> min_edge;          // g_m_l: its shortest edge
+  std::span<const double> x, y, z;           // current nodal coordinates
 };
 
 struct PartnerRules {
   double point_depth = 0.0;  // the point's own detection depth: a pair uses the larger one
   double depth_above = 0.0;  // largest accepted gap outside the facet
   bool from_behind = false;  // the point must face the back of the facet (contact sense negative)
-  double edge_tolerance = 0.0;  // delta_edge
-  double smooth_reach = 0.0;    // tan(alpha_edge)
-  double point_gap = 0.0;       // g_s, capped (gap.hpp)
+  double edge_tolerance = 0.0;                                      // delta_edge
+  double smooth_reach = 0.0;                                        // tan(alpha_edge)
+  double point_gap = 0.0;                                           // g_s, capped (gap.hpp)
   double point_min_edge = std::numeric_limits<double>::infinity();  // g_s_l
   double mesh_fraction = std::numeric_limits<double>::infinity();   // %mesh_size (Igap 3)
   // Igap 2 (self contact): the point's initial position and the initial nodal coordinates; a
@@ -58,7 +58,7 @@ struct PartnerRules {
 struct Partner {
   std::int32_t facet = -1;
   double xi = 0.0, eta = 0.0;
-  double gap = 0.0;  // (x - q) . n less the pair's gap: negative = penetration
+  double gap = 0.0;       // (x - q) . n less the pair's gap: negative = penetration
   double pair_gap = 0.0;  // the pair's gap (gap.hpp)
   Vec3 normal;  // the push direction: the facet's normal, or around a shell's edge the radial one
 };

@@ -47,12 +47,12 @@ struct PairScale {
 // surface 1 (secondary) that cross edges of surface 2 (main) are pushed apart, which a point-to-
 // facet contact misses. Friction is not included (seed 004).
 enum class EdgeSelection {
-  None,                   // Iedge 1000 (default)
-  ShellBorders,           // Iedge 1: free edges of shells on both sides
-  SharpSolidEdges,        // Iedge 11: secondary sharp solid edges and shell borders; main: all
-                          //   exterior solid edges and shell borders
-  SharpSolidAllShells,    // Iedge 13: as 11, the main side with every shell edge
-  AllEdges,               // Iedge 22: every exterior solid edge and every shell edge, both sides
+  None,                 // Iedge 1000 (default)
+  ShellBorders,         // Iedge 1: free edges of shells on both sides
+  SharpSolidEdges,      // Iedge 11: secondary sharp solid edges and shell borders; main: all
+                        //   exterior solid edges and shell borders
+  SharpSolidAllShells,  // Iedge 13: as 11, the main side with every shell edge
+  AllEdges,             // Iedge 22: every exterior solid edge and every shell edge, both sides
 };
 struct EdgeSettings {
   EdgeSelection selection = EdgeSelection::None;
@@ -81,9 +81,9 @@ struct ContactSettings {
   NormalLaw normal_law = LinearPenalty{};
   ContactSense sense = ContactSense::Positive;
   std::optional<double> detection_depth;  // default: half the element thickness of either facet
-  std::optional<double> clearance;   // OptiStruct CLEARANCE: initial opening of every point found
-  GapSettings gaps;                  // shell gaps (Radioss Igap, Gap_scale, Gap_max_s/m)
-  EdgeSettings edges;                // edge-to-edge contact
+  std::optional<double> clearance;  // OptiStruct CLEARANCE: initial opening of every point found
+  GapSettings gaps;                 // shell gaps (Radioss Igap, Gap_scale, Gap_max_s/m)
+  EdgeSettings edges;               // edge-to-edge contact
   ErosionSettings erosion;
   std::optional<Adhesion> adhesion;  // Radioss IVIS2 = -1
   double damping = 0.1;              // xi: fraction of critical damping of each contact spring
