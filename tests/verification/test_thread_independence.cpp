@@ -76,6 +76,35 @@ V, Z, 3
 *END
 )";
 
+// Shell contact (issue 9): two elastic shell plates, one tilted, colliding face to face.
+const char* kShellContactDeck = R"(
+*UNIT_SYSTEM
+SI
+*TIME
+1.0e-3
+*COMPONENT_SHELL_PLATE
+1, 1, 10, 10
+0.0, 0.0, 0.0, 0.05, 0.0, 0.0
+0.0, 0.05, 0.0
+*COMPONENT_SHELL_PLATE
+2, 2, 10, 10
+0.01, 0.01, 0.0018, 0.06, 0.01, 0.0025
+0.01, 0.06, 0.0018
+*MAT_ELASTIC
+1, 7850.0, 210.0e9, 0.3
+*PART
+1, 1, , 0.0015
+2, 1, , 0.0015
+*INITIAL_VELOCITY
+P, 1, 0.0, 0.0, 10.0
+*INITIAL_VELOCITY
+P, 2, 0.0, 0.0, -10.0
+*CONTACT
+1
+P, 1, P, 2, 0.3
+*END
+)";
+
 std::vector<double> positions_after(int threads, int cycles, const char* deck = kDeck) {
   omp_set_num_threads(threads);
   const Model model = read_deck_string(deck, "threads.k");
@@ -102,6 +131,15 @@ TEST(ThreadIndependence, ShellsGiveBitwiseIdenticalResults) {
   const int saved = omp_get_max_threads();
   const std::vector<double> one = positions_after(1, 150, kShellDeck);
   const std::vector<double> two = positions_after(2, 150, kShellDeck);
+  omp_set_num_threads(saved);
+  ASSERT_EQ(one.size(), two.size());
+  for (std::size_t i = 0; i < one.size(); ++i) ASSERT_EQ(one[i], two[i]) << "entry " << i;
+}
+
+TEST(ThreadIndependence, ShellContactGivesBitwiseIdenticalResults) {
+  const int saved = omp_get_max_threads();
+  const std::vector<double> one = positions_after(1, 200, kShellContactDeck);
+  const std::vector<double> two = positions_after(2, 200, kShellContactDeck);
   omp_set_num_threads(saved);
   ASSERT_EQ(one.size(), two.size());
   for (std::size_t i = 0; i < one.size(); ++i) ASSERT_EQ(one[i], two[i]) << "entry " << i;
