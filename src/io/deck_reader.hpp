@@ -279,6 +279,9 @@ void read_contact_normal(DeckReader&, Block&);
 void read_contact_friction(DeckReader&, Block&);
 void read_contact_adhesion(DeckReader&, Block&);
 void read_contact_stiffness(DeckReader&, Block&);
+void read_contact_gap(DeckReader&, Block&);
+void read_contact_edge(DeckReader&, Block&);
+void read_contact_erosion(DeckReader&, Block&);
 void read_contact_scale_penalty(DeckReader&, Block&);
 void read_contact_initial(DeckReader&, Block&);
 

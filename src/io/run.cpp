@@ -245,6 +245,7 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
     json.member("id", c.id).member("title", c.title);
     json.member("discretisation", c.discretisation).member("normal_law", c.normal_law);
     json.member("tangential_law", c.tangential_law).member("stiffness_rule", c.stiffness_rule);
+    json.member("gap_rule", c.gap_rule).member("erosion", c.erosion_rule);
     json.member("contact_points", static_cast<std::int64_t>(c.points));
     json.member("released_points", static_cast<std::int64_t>(c.released_points));
     json.key("penalty_per_part").begin_array();
@@ -267,6 +268,8 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
     }
     json.end_array();
     json.member("max_penetration", c.stats.max_penetration);
+    // Range of the gaps (g_s + g_m, Radioss TYPE25) of the point-facet pairs that touched.
+    json.member("gap_min", c.stats.gap_min).member("gap_max", c.stats.gap_max);
     json.member("friction_energy", c.stats.friction_energy);
     json.end_object();
   }

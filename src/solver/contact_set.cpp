@@ -186,6 +186,8 @@ ContactSettings settings_of(const Model& model, const ContactSpec& spec) {
   s.edge_angle = spec.edge_angle;
   s.one_way = one_way_of(spec);
   s.stick_stress = spec.stick_stress;
+  s.gaps = spec.gaps;
+  s.erosion = spec.erosion;
   return s;
 }
 
@@ -288,6 +290,8 @@ SourceLocation location_of(const ContactSpec& spec, const std::string& setting) 
       {"freeze", &ContactSpec::friction_where, "law"},
       {"stiffness", &ContactSpec::stiffness_where, "rule"},
       {"discretisation", &ContactSpec::discretisation_where, "method"},
+      {"gaps", &ContactSpec::gap_where, "igap"},
+      {"erosion", &ContactSpec::erosion_where, "facets"},
   };
   for (const Field& f : fields)
     if (setting == f.setting) {
@@ -369,6 +373,16 @@ void describe(const ContactSpec& spec, ContactReport& r) {
   if (spec.stiffness.rule != StiffnessRule::FacetPenalty)
     r.stiffness_rule += fmt::format(", stfac = {:.4g}", spec.stiffness.scale);
   if (!spec.pair_scales.empty()) r.stiffness_rule += ", pair scale factors";
+  const GapSettings& g = spec.gaps;
+  r.gap_rule =
+      fmt::format("Igap {}, scale {:.4g}", g.mesh_fraction ? 3 : (g.skip_close ? 2 : 1), g.scale);
+  if (g.mesh_fraction) r.gap_rule += fmt::format(", {:.4g} of the mesh size", *g.mesh_fraction);
+  if (std::isfinite(g.max_secondary)) r.gap_rule += fmt::format(", max_s {:.4g}", g.max_secondary);
+  if (std::isfinite(g.max_main)) r.gap_rule += fmt::format(", max_m {:.4g}", g.max_main);
+  if (g.zero_at_free_edges) r.gap_rule += ", Igap0";
+  r.erosion_rule = std::string(spec.erosion.remove_facets ? "facets REMOVE" : "facets KEEP") +
+                   (spec.erosion.keep_free_nodes ? ", free nodes KEEP" : ", free nodes REMOVE") +
+                   (spec.no_internal ? ", no internal faces" : ", exposed faces join");
 }
 
 }  // namespace

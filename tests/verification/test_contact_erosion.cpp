@@ -5,6 +5,11 @@
 // target's original exterior takes part, so once the first layer has eroded under it the punch
 // flies through the rest at constant speed. Reference: the rigid-body momentum balance itself
 // (no force, constant velocity, to round-off) and the ordering of the layers.
+//
+// Nodal erosion (Abaqus/Explicit, seed 001: without it, nodes whose faces have all eroded stay in
+// the contact domain as free point masses): a hex that erodes at once (dt_erode above its step)
+// flies at a rigid wall. Its eight free nodes bounce off the wall (*CONTACT_EROSION free nodes
+// KEEP, the default) or pass through it (REMOVE): momentum reversed or kept exactly.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -108,6 +113,63 @@ TEST(ContactErosion, WithoutInternalFacesThePunchFliesThroughAfterTheFirstLayer)
   for (std::size_t k = 0; k < r.z.size(); ++k)
     if (r.z[k] <= 0.036) EXPECT_NEAR(-r.vz[k], after1, 1e-9 * after1) << "t = " << r.t[k];
   EXPECT_LT(r.z.back(), 0.02);
+}
+
+std::string free_nodes_deck(const std::string& free_nodes) {
+  return R"(
+*UNIT_SYSTEM
+SI
+*TIME
+0.0016
+*COMPONENT_BOX
+1, 1, 2, 2, 1
+-0.02, -0.02, -0.01, 0.02, 0.02, 0.0
+*COMPONENT_BOX
+2, 2, 1, 1, 1
+-0.005, -0.005, 0.002, 0.005, 0.005, 0.012
+*MAT_RIGID
+1, 7800.0
+*MAT_ELASTIC
+2, 7800.0, 210.0e9, 0.3
+*PART
+"wall"
+1, 1
+"eroding hex"
+2, 2, , , , 1.0
+*BC_MOTION
+P, 1, XYZ, XYZ
+*INITIAL_VELOCITY
+P, 2, 0.0, 0.0, -10.0
+*CONTACT
+1
+P, 2, P, 1, 0.0, 1.0e12
+*CONTACT_EROSION
+1, , )" + free_nodes +
+         "\n*END\n";
+}
+
+TEST(ContactErosion, FreeNodesBounceOffTheWallUnlessNodalErosionRemovesThem) {
+  for (const std::string free_nodes : {"KEEP", "REMOVE"}) {
+    const Model model = read_deck_string(free_nodes_deck(free_nodes), "free_nodes.k");
+    Simulation sim(model);
+    verification::run_to(sim, model.time.end_time);
+    const auto eroded = sim.eroded_hexes();
+    ASSERT_EQ(eroded.back(), 1) << "the hex erodes at once";
+    double vz = 0.0, z_min = 1.0;
+    for (std::size_t i = 18; i < 26; ++i) {  // the hex's nodes, after the wall's 18
+      vz += sim.vz()[i] / 8.0;
+      z_min = std::min(z_min, sim.z()[i]);
+    }
+    std::cout << free_nodes << ": mean node velocity " << vz << " m/s, lowest node " << z_min
+              << " m\n";
+    if (free_nodes == "KEEP") {
+      EXPECT_GT(vz, 5.0);       // every node bounced (xi = 0.1: restitution about 0.73)
+      EXPECT_GT(z_min, -1e-3);  // none far into the wall
+    } else {
+      EXPECT_NEAR(vz, -10.0, 1e-9);  // no force at all: the initial momentum, exactly
+      EXPECT_LT(z_min, -0.013);      // 2 mm to the wall, then 14 mm through it
+    }
+  }
 }
 
 }  // namespace

@@ -189,6 +189,9 @@ struct ContactSpec {
   std::optional<double> adjust_depth;
   // Where each contact keyword was given (for errors), empty when absent.
   SourceLocation normal_where, friction_where, stiffness_where, initial_where, discretisation_where;
+  GapSettings gaps;          // *CONTACT_GAP
+  ErosionSettings erosion;   // *CONTACT_EROSION
+  SourceLocation gap_where, erosion_where;
 };
 
 // A geometry of *GEOMETRY_* with its id.

@@ -1,0 +1,81 @@
+// The keywords about what a contact surface is made of: *CONTACT_GAP (shell gaps, Radioss
+// /INTER/TYPE25 Igap, Gap_scale, %mesh_size, Gap_max_s, Gap_max_m, Igap0), *CONTACT_EDGE (Iedge,
+// Edge_angle) and *CONTACT_EROSION (Radioss Idel, Abaqus nodal erosion). Seeds 001 and 004
+// (../shared/seeds/); the formulas in include/abut/contact/gap.hpp and settings.hpp.
+#include <limits>
+
+#include "deck_reader.hpp"
+
+namespace abut::deck {
+
+void read_contact_gap(DeckReader& d, Block& b) {
+  const Row r = b.row({"coid", "igap", "gap_scale", "pct_mesh", "gap_max_s", "gap_max_m", "igap0"});
+  const int igap = word_choice(r, 1, 1, {{"1", 1}, {"2", 2}, {"3", 3}},
+                               "1 (variable gap), 2 (variable, close pairs of self contact "
+                               "skipped) or 3 (variable, capped by the mesh size)");
+  GapSettings g;
+  g.scale = r.number_or(2, 1.0);
+  r.require(g.scale >= 0.0, 2, "expected a gap scale factor >= 0");
+  g.skip_close = igap == 2;
+  if (igap == 3) {
+    g.mesh_fraction = r.number_or(3, 0.4);
+    r.require(*g.mesh_fraction > 0.0, 3, "expected a fraction of the mesh size > 0");
+  } else if (r.given(3)) {
+    r.fail(3, "pct_mesh caps the gap with igap = 3 only: leave it empty or set igap to 3");
+  }
+  const double unbounded = std::numeric_limits<double>::infinity();
+  g.max_secondary = r.number_or(4, unbounded);
+  r.require(g.max_secondary > 0.0, 4, "expected a maximum secondary gap > 0");
+  g.max_main = r.number_or(5, unbounded);
+  r.require(g.max_main > 0.0, 5, "expected a maximum main gap > 0");
+  g.zero_at_free_edges =
+      word_choice(r, 6, false, {{"0", false}, {"1000", false}, {"1", true}},
+                  "0 or 1000 (gap kept at free shell edges) or 1 (zero gap for nodes on them)");
+  refine_contact(d, r, [r, g](ContactSpec& c) {
+    c.gaps = g;
+    c.gap_where = r.where();
+  });
+}
+
+void read_contact_edge(DeckReader& d, Block& b) {
+  const Row r = b.row({"coid", "iedge", "edge_angle"});
+  const bool none = word_choice(r, 1, true,
+                                {{"NONE", true},
+                                 {"1000", true},
+                                 {"BORDERS", false},
+                                 {"1", false},
+                                 {"SHARP", false},
+                                 {"11", false},
+                                 {"SHARP_ALL_SHELLS", false},
+                                 {"13", false},
+                                 {"ALL", false},
+                                 {"22", false}},
+                                "NONE (1000), BORDERS (1), SHARP (11), SHARP_ALL_SHELLS (13) or "
+                                "ALL (22)");
+  if (!none)
+    r.fail(1, "edge-to-edge contact (Radioss Iedge " + r.word(1) +
+                  ") is not supported yet by abut: crossing edges are not pushed apart, only "
+                  "points and facets; use NONE");
+  if (r.given(2))
+    r.fail(2, "edge_angle selects sharp solid edges for iedge SHARP and SHARP_ALL_SHELLS only");
+  refine_contact(d, r, [](ContactSpec&) {});
+}
+
+void read_contact_erosion(DeckReader& d, Block& b) {
+  const Row r = b.row({"coid", "facets", "free_nodes"});
+  ErosionSettings e;
+  e.remove_facets = word_choice(
+      r, 1, true, {{"REMOVE", true}, {"1", true}, {"2", true}, {"KEEP", false}, {"1000", false}},
+      "REMOVE (Radioss Idel 1, 2) or KEEP (Idel 1000)");
+  // Radioss Idel 1 and 2 also take free nodes off the secondary side.
+  const bool idel = r.given(1) && (r.text(1) == "1" || r.text(1) == "2");
+  e.keep_free_nodes = word_choice(r, 2, !idel, {{"KEEP", true}, {"REMOVE", false}},
+                                  "KEEP (free nodes stay as point masses) or REMOVE (Abaqus "
+                                  "nodal erosion)");
+  refine_contact(d, r, [r, e](ContactSpec& c) {
+    c.erosion = e;
+    c.erosion_where = r.where();
+  });
+}
+
+}  // namespace abut::deck
