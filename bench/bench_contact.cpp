@@ -1,6 +1,8 @@
 // ns per contact point-cycle: two flat 100 x 100 facet surfaces pressed together (symmetric,
 // friction), one apply() per iteration, nodes moving slightly each cycle. Surface-to-surface with
-// 2x2 points per facet (ns per point-cycle), node-to-surface (ns per node-cycle).
+// 2x2 points per facet (ns per point-cycle), node-to-surface (ns per node-cycle). The shell
+// variants: the same plates as two-sided shells 2 mm thick (each side's surface at h/2 from the
+// mid-surface), pressed by 1e-4 beyond the gap; half of the points face away (the far sides).
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
@@ -18,6 +20,7 @@ struct Plates {
     x.push_back(px), y.push_back(py), z.push_back(pz), mass.push_back(1e-3);
     return static_cast<std::int32_t>(x.size() - 1);
   }
+  bool shells = false;
   void plate(abut::ContactSurface& s, int n, double offset, double h, bool up) {
     const auto first = static_cast<std::int32_t>(x.size());
     for (int j = 0; j <= n; ++j)
@@ -25,28 +28,36 @@ struct Plates {
     auto id = [&](int i, int j) { return first + j * (n + 1) + i; };
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
-        if (up)
+        if (shells)
+          s.add_shell({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)}, up ? 1 : 2, 1e12,
+                      kShellThickness);
+        else if (up)
           s.add({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)}, 1, 1e12, 0.01);
         else
           s.add({id(i, j), id(i, j + 1), id(i + 1, j + 1), id(i + 1, j)}, 2, 1e12, 0.01);
   }
-  Plates(int n) {
+  static constexpr double kShellThickness = 0.002;
+  explicit Plates(int n, bool shell_plates = false) : shells(shell_plates) {
     plate(lower, n, 0.0, 0.0, true);
-    plate(upper, n, 0.003, 1e-4, false);  // shifted: every point overlaps a facet interior
+    // Shifted: every point overlaps a facet interior. Shells: the gap h lies between the
+    // mid-surfaces.
+    plate(upper, n, 0.003, 1e-4 + (shells ? kShellThickness : 0.0), false);
     for (auto* v : {&vx, &vy, &vz, &fx, &fy, &fz}) v->assign(x.size(), 0.0);
   }
   abut::ContactInput input(double t) const { return {x, y, z, vx, vy, vz, t, 1e-7}; }
 };
 
-void run(benchmark::State& state, abut::Discretisation discretisation, const char* counter) {
+void run(benchmark::State& state, abut::Discretisation discretisation, const char* counter,
+         bool shells = false) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
-  Plates p(100);
+  Plates p(100, shells);
   abut::ContactSettings s;
   s.discretisation = discretisation;
   s.tangential_law = abut::Coulomb{0.2, 0.2, {}, {}};
   abut::ContactInterface contact(s, p.upper, p.lower, p.mass, p.input(0.0));
   const std::size_t upper_first = (101 * 101);
-  for (std::size_t i = upper_first; i < p.x.size(); ++i) p.z[i] -= 2e-4, p.vx[i] = 1.0;  // 1e-4 penetration
+  for (std::size_t i = upper_first; i < p.x.size(); ++i)
+    p.z[i] -= 2e-4, p.vx[i] = 1.0;  // 1e-4 penetration
   abut::ContactForces out{p.fx, p.fy, p.fz};
   double t = 0.0;
   for (auto _ : state) {
@@ -59,8 +70,9 @@ void run(benchmark::State& state, abut::Discretisation discretisation, const cha
   const auto points = static_cast<double>(contact.point_count());
   state.counters["points"] = points;
   state.counters["active"] = static_cast<double>(contact.stats().active_points);
-  state.counters[counter] = benchmark::Counter(points * static_cast<double>(state.iterations()),
-                                               benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters[counter] =
+      benchmark::Counter(points * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   omp_set_num_threads(omp_get_num_procs());
 }
 
@@ -73,5 +85,15 @@ void BM_ContactNodeCycle(benchmark::State& state) {
   run(state, abut::Discretisation::NodeToSurface, "ns_per_node_cycle");
 }
 BENCHMARK(BM_ContactNodeCycle)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_ShellContactPointCycle(benchmark::State& state) {
+  run(state, abut::Discretisation::SurfaceToSurface, "ns_per_point_cycle", true);
+}
+BENCHMARK(BM_ShellContactPointCycle)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_ShellContactNodeCycle(benchmark::State& state) {
+  run(state, abut::Discretisation::NodeToSurface, "ns_per_node_cycle", true);
+}
+BENCHMARK(BM_ShellContactNodeCycle)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
