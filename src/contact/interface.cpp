@@ -103,6 +103,7 @@ void ContactInterface::rebuild_broad_phase(const ContactInput& in) {
     pass.grid.query(pass.qx, pass.qy, pass.qz, pass.candidates, keep);
   }
   rebuild_pending_ = false;
+  if (edges_) edges_->rebuild(in.x, in.y, in.z);
   bx_.resize(surface_nodes_.size());
   by_.resize(surface_nodes_.size());
   bz_.resize(surface_nodes_.size());
@@ -203,6 +204,18 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
     for (std::size_t p = 0; p < n; ++p) evaluate_point(pass, p, in);
   }
   scatter(in, out);
+  if (edges_) {
+    const EdgeContactResult e =
+        edges_->apply(in.x, in.y, in.z, in.vx, in.vy, in.vz, mass_, in.dt, out.fx, out.fy, out.fz);
+    stats_.force += Vec3{e.force_on_first[0], e.force_on_first[1], e.force_on_first[2]};
+    stats_.normal_force += e.normal_force;
+    stats_.elastic_energy += e.elastic_energy;
+    stats_.damping_energy += e.damping_work;
+    stats_.max_penetration = std::max(stats_.max_penetration, e.max_penetration);
+    stats_.active_points += e.active_pairs;
+    if (e.omega2 > 0.0)
+      stats_.stable_step = std::min(stats_.stable_step, 2.0 / std::sqrt(e.omega2));
+  }
 }
 
 }  // namespace abut

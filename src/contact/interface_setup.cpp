@@ -87,6 +87,7 @@ ContactInterface::ContactInterface(ContactSettings settings, ContactSurface surf
   build_parts();
   build_sides(initial, secondary_nodes);
   build_passes();
+  build_edges(initial);
   initial_state(initial);
 }
 

@@ -39,26 +39,30 @@ void read_contact_gap(DeckReader& d, Block& b) {
 
 void read_contact_edge(DeckReader& d, Block& b) {
   const Row r = b.row({"coid", "iedge", "edge_angle"});
-  const bool none = word_choice(r, 1, true,
-                                {{"NONE", true},
-                                 {"1000", true},
-                                 {"BORDERS", false},
-                                 {"1", false},
-                                 {"SHARP", false},
-                                 {"11", false},
-                                 {"SHARP_ALL_SHELLS", false},
-                                 {"13", false},
-                                 {"ALL", false},
-                                 {"22", false}},
-                                "NONE (1000), BORDERS (1), SHARP (11), SHARP_ALL_SHELLS (13) or "
-                                "ALL (22)");
-  if (!none)
-    r.fail(1, "edge-to-edge contact (Radioss Iedge " + r.word(1) +
-                  ") is not supported yet by abut: crossing edges are not pushed apart, only "
-                  "points and facets; use NONE");
-  if (r.given(2))
+  EdgeSettings e;
+  e.selection = word_choice(r, 1, EdgeSelection::None,
+                            {{"NONE", EdgeSelection::None},
+                             {"1000", EdgeSelection::None},
+                             {"BORDERS", EdgeSelection::ShellBorders},
+                             {"1", EdgeSelection::ShellBorders},
+                             {"SHARP", EdgeSelection::SharpSolidEdges},
+                             {"11", EdgeSelection::SharpSolidEdges},
+                             {"SHARP_ALL_SHELLS", EdgeSelection::SharpSolidAllShells},
+                             {"13", EdgeSelection::SharpSolidAllShells},
+                             {"ALL", EdgeSelection::AllEdges},
+                             {"22", EdgeSelection::AllEdges}},
+                            "NONE (1000), BORDERS (1), SHARP (11), SHARP_ALL_SHELLS (13) or "
+                            "ALL (22)");
+  const bool sharp = e.selection == EdgeSelection::SharpSolidEdges ||
+                     e.selection == EdgeSelection::SharpSolidAllShells;
+  if (r.given(2) && !sharp)
     r.fail(2, "edge_angle selects sharp solid edges for iedge SHARP and SHARP_ALL_SHELLS only");
-  refine_contact(d, r, [](ContactSpec&) {});
+  e.angle = r.number_or(2, 135.0);
+  r.require(e.angle > 0.0 && e.angle <= 180.0, 2, "expected an angle in (0, 180] degrees");
+  refine_contact(d, r, [r, e](ContactSpec& c) {
+    c.edges = e;
+    c.edge_where = r.where();
+  });
 }
 
 void read_contact_erosion(DeckReader& d, Block& b) {

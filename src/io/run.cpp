@@ -246,6 +246,7 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
     json.member("discretisation", c.discretisation).member("normal_law", c.normal_law);
     json.member("tangential_law", c.tangential_law).member("stiffness_rule", c.stiffness_rule);
     json.member("gap_rule", c.gap_rule).member("erosion", c.erosion_rule);
+    json.member("edge_contact", c.edge_rule);
     json.member("contact_points", static_cast<std::int64_t>(c.points));
     json.member("released_points", static_cast<std::int64_t>(c.released_points));
     json.key("penalty_per_part").begin_array();

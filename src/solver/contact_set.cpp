@@ -188,6 +188,7 @@ ContactSettings settings_of(const Model& model, const ContactSpec& spec) {
   s.stick_stress = spec.stick_stress;
   s.gaps = spec.gaps;
   s.erosion = spec.erosion;
+  s.edges = spec.edges;
   return s;
 }
 
@@ -292,6 +293,7 @@ SourceLocation location_of(const ContactSpec& spec, const std::string& setting) 
       {"discretisation", &ContactSpec::discretisation_where, "method"},
       {"gaps", &ContactSpec::gap_where, "igap"},
       {"erosion", &ContactSpec::erosion_where, "facets"},
+      {"edges", &ContactSpec::edge_where, "iedge"},
   };
   for (const Field& f : fields)
     if (setting == f.setting) {
@@ -380,6 +382,9 @@ void describe(const ContactSpec& spec, ContactReport& r) {
   if (std::isfinite(g.max_secondary)) r.gap_rule += fmt::format(", max_s {:.4g}", g.max_secondary);
   if (std::isfinite(g.max_main)) r.gap_rule += fmt::format(", max_m {:.4g}", g.max_main);
   if (g.zero_at_free_edges) r.gap_rule += ", Igap0";
+  static const char* const edge_words[] = {"NONE", "BORDERS (Iedge 1)", "SHARP (Iedge 11)",
+                                           "SHARP_ALL_SHELLS (Iedge 13)", "ALL (Iedge 22)"};
+  r.edge_rule = edge_words[static_cast<int>(spec.edges.selection)];
   r.erosion_rule = std::string(spec.erosion.remove_facets ? "facets REMOVE" : "facets KEEP") +
                    (spec.erosion.keep_free_nodes ? ", free nodes KEEP" : ", free nodes REMOVE") +
                    (spec.no_internal ? ", no internal faces" : ", exposed faces join");

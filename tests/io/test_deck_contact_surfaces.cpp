@@ -96,14 +96,23 @@ TEST(DeckContactGap, Errors) {
   EXPECT_THAT(error_at("*CONTACT_GAP\n3, 1, , , , , 2\n", l, "igap0"), HasSubstr("1000"));
 }
 
-TEST(DeckContactEdge, OnlyNoneUntilEdgeContactExists) {
-  EXPECT_EQ(contact_of("*CONTACT_EDGE\n3, NONE\n").id, 3);
-  EXPECT_EQ(contact_of("*CONTACT_EDGE\n3, 1000\n").id, 3);
+TEST(DeckContactEdge, RadiossEdgeOptions) {
+  EXPECT_EQ(contact_of("*CONTACT_EDGE\n3\n").edges.selection, EdgeSelection::None);
+  EXPECT_EQ(contact_of("*CONTACT_EDGE\n3, 1000\n").edges.selection, EdgeSelection::None);
+  EXPECT_EQ(contact_of("*CONTACT_EDGE\n3, 1\n").edges.selection, EdgeSelection::ShellBorders);
+  EXPECT_EQ(contact_of("*CONTACT_EDGE\n3, borders\n").edges.selection, EdgeSelection::ShellBorders);
+  ContactSpec c = contact_of("*CONTACT_EDGE\n3, 11, 120\n");
+  EXPECT_EQ(c.edges.selection, EdgeSelection::SharpSolidEdges);
+  EXPECT_DOUBLE_EQ(c.edges.angle, 120.0);
+  EXPECT_EQ(c.edge_where.line, kLine + 1);
+  c = contact_of("*CONTACT_EDGE\n3, SHARP_ALL_SHELLS\n");
+  EXPECT_EQ(c.edges.selection, EdgeSelection::SharpSolidAllShells);
+  EXPECT_DOUBLE_EQ(c.edges.angle, 135.0);  // the Radioss default
+  EXPECT_EQ(contact_of("*CONTACT_EDGE\n3, 22\n").edges.selection, EdgeSelection::AllEdges);
   const std::size_t l = kLine + 1;
-  EXPECT_THAT(error_at("*CONTACT_EDGE\n3, 22\n", l, "iedge"), HasSubstr("not supported yet"));
-  EXPECT_THAT(error_at("*CONTACT_EDGE\n3, BORDERS\n", l, "iedge"), HasSubstr("not supported yet"));
   EXPECT_THAT(error_at("*CONTACT_EDGE\n3, 7\n", l, "iedge"), HasSubstr("expected NONE"));
   EXPECT_THAT(error_at("*CONTACT_EDGE\n3, NONE, 135\n", l, "edge_angle"), HasSubstr("SHARP"));
+  EXPECT_THAT(error_at("*CONTACT_EDGE\n3, 11, 0\n", l, "edge_angle"), HasSubstr("(0, 180]"));
 }
 
 TEST(DeckContactErosion, FacetsAndFreeNodes) {

@@ -110,8 +110,11 @@ TEST(ContactErosion, WithoutInternalFacesThePunchFliesThroughAfterTheFirstLayer)
   // velocity to round-off until the end (its face then 10 mm inside the target).
   const double after1 = speed_at(r, 0.036);
   EXPECT_LT(after1, 90.0);  // the first layer did stop it somewhat
-  for (std::size_t k = 0; k < r.z.size(); ++k)
-    if (r.z[k] <= 0.036) EXPECT_NEAR(-r.vz[k], after1, 1e-9 * after1) << "t = " << r.t[k];
+  for (std::size_t k = 0; k < r.z.size(); ++k) {
+    if (r.z[k] <= 0.036) {
+      EXPECT_NEAR(-r.vz[k], after1, 1e-9 * after1) << "t = " << r.t[k];
+    }
+  }
   EXPECT_LT(r.z.back(), 0.02);
 }
 

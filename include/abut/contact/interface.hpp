@@ -14,10 +14,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "abut/contact/broad_phase.hpp"
+#include "abut/contact/edge_contact.hpp"
 #include "abut/contact/narrow_phase.hpp"
 #include "abut/contact/settings.hpp"
 #include "abut/contact/surface.hpp"
@@ -94,6 +96,7 @@ class ContactInterface {
   std::size_t released_points() const;  // initially deeper than delta0_max
   std::size_t tied_points() const;      // currently tied (sticking or freeze)
   std::size_t broad_phase_builds() const { return builds_; }
+  std::size_t contact_edges() const { return edges_ ? edges_->edge_count() : 0; }
   double search_margin() const { return margin_; }
 
  private:
@@ -181,6 +184,7 @@ class ContactInterface {
   static void size_pass(Pass& pass, std::size_t n);
   void build_parts();
   void build_passes();
+  void build_edges(const ContactInput& in);  // edge_selection.cpp
   void rebuild_broad_phase(const ContactInput& in);
   bool needs_rebuild(const ContactInput& in) const;
   PointFrame frame(const Side& side, std::size_t p, const ContactInput& in) const;
@@ -210,6 +214,7 @@ class ContactInterface {
   std::size_t builds_ = 0;
   bool rebuild_pending_ = false;      // points or facets changed (erosion)
   std::size_t gap_pairs_ = 0;         // pairs counted in stats_.gap_min / gap_max
+  std::optional<EdgeContact> edges_;  // edge-to-edge contact (EdgeSettings)
   std::vector<double> x0_, y0_, z0_;  // initial coordinates (Igap 2 only)
   ContactStats stats_;
 };

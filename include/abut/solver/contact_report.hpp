@@ -24,7 +24,7 @@ struct ContactReport {
   // "COULOMB mu_s = 0.3, mu_d = 0.2"; "PFAC" or "MEAN (Istf 2), stfac = 1".
   std::string discretisation, normal_law, tangential_law, stiffness_rule;
   // "Igap 3, scale 1, 0.4 of the mesh size"; "facets REMOVE, free nodes KEEP, exposed faces join".
-  std::string gap_rule, erosion_rule;
+  std::string gap_rule, erosion_rule, edge_rule;
   std::size_t points = 0;           // contact points (integration points or nodes, all passes)
   std::size_t released_points = 0;  // initially deeper than delta0_max
   ContactStats stats;

@@ -191,7 +191,8 @@ struct ContactSpec {
   SourceLocation normal_where, friction_where, stiffness_where, initial_where, discretisation_where;
   GapSettings gaps;          // *CONTACT_GAP
   ErosionSettings erosion;   // *CONTACT_EROSION
-  SourceLocation gap_where, erosion_where;
+  EdgeSettings edges;        // *CONTACT_EDGE
+  SourceLocation gap_where, erosion_where, edge_where;
 };
 
 // A geometry of *GEOMETRY_* with its id.
