@@ -79,8 +79,8 @@ struct MeshSource {
 // *PART_SHELL, applied once every *PART is known.
 struct PendingPartShell {
   std::int64_t part = 0;
-  int points = 5;
-  double hourglass = 0.05;
+  int points = ShellSection{}.points;
+  double hourglass = ShellSection{}.hourglass;
   SourceLocation where;  // the pid field
 };
 

@@ -143,11 +143,11 @@ void read_part_shell(DeckReader& d, Block& b) {
     s.part = d.part_id(r, 0);
     s.where = r.where(0);
     d.claim_id("*PART_SHELL of part", s.part, s.where);
-    const std::int64_t points = r.integer_or(1, 5);
+    const std::int64_t points = r.integer_or(1, ShellSection{}.points);
     r.require(points >= 1 && points <= 9 && points % 2 == 1, 1,
               "expected an odd number of integration points through the thickness, 1 to 9");
     s.points = static_cast<int>(points);
-    s.hourglass = r.number_or(2, 0.05);
+    s.hourglass = r.number_or(2, ShellSection{}.hourglass);
     r.require(s.hourglass >= 0.0, 2, "expected a hourglass coefficient >= 0");
     d.part_shells.push_back(s);
   }

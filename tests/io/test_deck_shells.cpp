@@ -58,7 +58,7 @@ TEST(DeckShells, QuadsAndTrianglesInTheirThreeForms) {
   EXPECT_EQ(m.mesh.shell_part[0], 1);
   EXPECT_DOUBLE_EQ(m.parts.at(0).thickness, 0.002);
   EXPECT_EQ(m.parts.at(0).shell_points, 5);
-  EXPECT_DOUBLE_EQ(m.parts.at(0).shell_hourglass, 0.05);
+  EXPECT_DOUBLE_EQ(m.parts.at(0).shell_hourglass, 0.01);
   EXPECT_EQ(m.mesh.hex_count(), 0u);
 }
 
@@ -127,7 +127,7 @@ TEST(DeckShells, PartShellSetsPointsAndHourglass) {
   EXPECT_DOUBLE_EQ(m.parts.at(0).shell_hourglass, 0.1);
   const Model d = model_of(kShells + "7, 1, 1, 2, 3, 4\n*PART_SHELL\n1\n");
   EXPECT_EQ(d.parts.at(0).shell_points, 5);
-  EXPECT_DOUBLE_EQ(d.parts.at(0).shell_hourglass, 0.05);
+  EXPECT_DOUBLE_EQ(d.parts.at(0).shell_hourglass, 0.01);
 }
 
 TEST(DeckShells, PartShellErrors) {

@@ -11,6 +11,7 @@
 #include "abut/core/error.hpp"
 #include "abut/core/functions.hpp"
 #include "abut/core/units.hpp"
+#include "abut/element/shell_block.hpp"
 #include "abut/element/solid_block.hpp"
 #include "abut/material/material.hpp"
 #include "abut/mesh/geometry.hpp"
@@ -46,8 +47,8 @@ struct Part {
   ErosionCriteria erosion;  // dt_erode, eps_geo_erode, eps_v_erode
   double thickness = 1.0;   // h: shell thickness (used by shell elements only)
   // *PART_SHELL: integration points through the thickness (odd) and hourglass coefficient.
-  int shell_points = 5;
-  double shell_hourglass = 0.05;
+  int shell_points = ShellSection{}.points;
+  double shell_hourglass = ShellSection{}.hourglass;
   SourceLocation where;
 };
 
