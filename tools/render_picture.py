@@ -2,12 +2,16 @@
 """Renders states of an abut ParaView series side by side into one PNG (the README picture).
 
     xvfb-run -a /usr/bin/python3 tools/render_picture.py RESULTS.pvd OUT.png [TIME ...]
+        [--stress-max PA] [--view DX,DY,DZ] [--half]
 
 Uses Debian's python3-vtk9; without a display run it under xvfb-run (package xvfb).
 Each panel shows the exterior of the model at the state nearest to the time asked for
-(default: the first and the last state), coloured by von Mises stress.
+(default: the first and the last state), coloured by von Mises stress from 0 to --stress-max
+(default 2e7 Pa). Without --view the camera is the rubber-sphere picture's; with it the camera
+looks along (DX, DY, DZ) and frames the first panel's model, the same framing for every panel.
+--half keeps the cells with centres at y <= 0 so that folds inside a tube show in section.
 """
-import sys
+import argparse
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
@@ -19,11 +23,22 @@ def states(pvd):
     return [(float(d.get("timestep")), Path(pvd).parent / d.get("file")) for d in root.iter("DataSet")]
 
 
-def panel(vtu, time, viewport, window, stress_range):
+def panel(vtu, time, viewport, window, stress_range, half):
     reader = vtk.vtkXMLUnstructuredGridReader()
     reader.SetFileName(str(vtu))
+    source = reader
+    if half:
+        plane = vtk.vtkPlane()
+        plane.SetOrigin(0.0, 0.0, 0.0)
+        plane.SetNormal(0.0, 1.0, 0.0)
+        cut = vtk.vtkExtractGeometry()
+        cut.SetInputConnection(reader.GetOutputPort())
+        cut.SetImplicitFunction(plane)
+        cut.ExtractInsideOn()
+        cut.ExtractBoundaryCellsOff()
+        source = cut
     surface = vtk.vtkDataSetSurfaceFilter()
-    surface.SetInputConnection(reader.GetOutputPort())
+    surface.SetInputConnection(source.GetOutputPort())
     mapper = vtk.vtkDataSetMapper()
     mapper.SetInputConnection(surface.GetOutputPort())
     mapper.SetScalarModeToUseCellFieldData()
@@ -73,27 +88,43 @@ def panel(vtu, time, viewport, window, stress_range):
 
 
 def main():
-    if len(sys.argv) < 3:
-        sys.exit(__doc__)
-    pvd, out = sys.argv[1], sys.argv[2]
-    series = states(pvd)
-    wanted = [float(t) for t in sys.argv[3:]] or [series[0][0], series[-1][0]]
+    parser = argparse.ArgumentParser(usage=__doc__)
+    parser.add_argument("pvd")
+    parser.add_argument("out")
+    parser.add_argument("times", nargs="*", type=float)
+    parser.add_argument("--stress-max", type=float, default=2.0e7)
+    parser.add_argument("--view", type=lambda v: [float(c) for c in v.split(",")])
+    parser.add_argument("--half", action="store_true")
+    args = parser.parse_args()
+    series = states(args.pvd)
+    wanted = args.times or [series[0][0], series[-1][0]]
     chosen = [min(series, key=lambda s: abs(s[0] - t)) for t in wanted]
     window = vtk.vtkRenderWindow()
     window.SetOffScreenRendering(1)
     width = 520
     window.SetSize(width * len(chosen), 520)
-    for i, (time, vtu) in enumerate(chosen):
-        panel(vtu, time, (i / len(chosen), 0.0, (i + 1) / len(chosen), 1.0), window, (0.0, 2.0e7))
+    renderers = [
+        panel(vtu, time, (i / len(chosen), 0.0, (i + 1) / len(chosen), 1.0), window,
+              (0.0, args.stress_max), args.half)
+        for i, (time, vtu) in enumerate(chosen)
+    ]
+    if args.view:
+        first = renderers[0].GetActiveCamera()
+        first.SetFocalPoint(0.0, 0.0, 0.0)
+        first.SetPosition(*args.view)
+        renderers[0].ResetCamera()
+        first.Zoom(0.85)  # room for the colour bar
+        for r in renderers[1:]:
+            r.SetActiveCamera(first)
     window.Render()
     image = vtk.vtkWindowToImageFilter()
     image.SetInput(window)
     image.Update()
     writer = vtk.vtkPNGWriter()
-    writer.SetFileName(out)
+    writer.SetFileName(args.out)
     writer.SetInputConnection(image.GetOutputPort())
     writer.Write()
-    print(f"wrote {out}: states at " + ", ".join(f"{t:.3g}" for t, _ in chosen))
+    print(f"wrote {args.out}: states at " + ", ".join(f"{t:.3g}" for t, _ in chosen))
 
 
 if __name__ == "__main__":
