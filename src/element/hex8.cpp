@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "abut/core/vec3.hpp"
+#include "abut/mesh/mesh.hpp"  // kHexFaces
 
 namespace abut {
 
@@ -38,10 +39,8 @@ void hex8_hourglass_shape(const Hex8Gradient& g, double gamma[4][8]) {
 }
 
 double hex8_characteristic_length(const Hex8Coords& x, double volume) {
-  static constexpr int kFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                       {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
   double largest = 0.0;  // squared norm of the diagonal cross product (one sqrt at the end)
-  for (const auto& f : kFaces) {
+  for (const auto& f : kHexFaces) {
     const Vec3 d1{x.x[f[2]] - x.x[f[0]], x.y[f[2]] - x.y[f[0]], x.z[f[2]] - x.z[f[0]]};
     const Vec3 d2{x.x[f[3]] - x.x[f[1]], x.y[f[3]] - x.y[f[1]], x.z[f[3]] - x.z[f[1]]};
     const Vec3 n = cross(d1, d2);

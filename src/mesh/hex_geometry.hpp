@@ -17,9 +17,6 @@ inline constexpr int kHexCorner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1,
 inline constexpr int kHexEdges[12][2] = {{0, 1}, {3, 2}, {4, 5}, {7, 6},   // along u
                                          {0, 3}, {1, 2}, {4, 7}, {5, 6},   // along v
                                          {0, 4}, {1, 5}, {3, 7}, {2, 6}};  // along w
-// The 6 faces, nodes counter-clockwise seen from outside.
-inline constexpr int kHexFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                        {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
 
 inline HexPoints hex_points(const Mesh& mesh, std::size_t hex) {
   HexPoints x;

@@ -27,7 +27,6 @@ using detail::edge_key;
 using detail::HexPoints;
 using detail::kHexCorner;
 using detail::kHexEdges;
-using detail::kHexFaces;
 using Face = std::array<std::int32_t, 4>;
 
 struct FaceHash {

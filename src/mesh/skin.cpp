@@ -9,16 +9,6 @@
 namespace abut {
 namespace {
 
-// Local faces of a VTK hexahedron, ordered so that the right-hand normal points outward.
-constexpr std::array<std::array<int, 4>, 6> kHexFaces{{
-    {0, 3, 2, 1},  // bottom (zeta = -1)
-    {4, 5, 6, 7},  // top (zeta = +1)
-    {0, 1, 5, 4},  // eta = -1
-    {1, 2, 6, 5},  // xi = +1
-    {2, 3, 7, 6},  // eta = +1
-    {3, 0, 4, 7},  // xi = -1
-}};
-
 // Reference coordinates of the hex nodes.
 constexpr std::array<std::array<double, 3>, 8> kHexCorners{{
     {-1, -1, -1},

@@ -32,6 +32,12 @@ struct Nodes {
 };
 
 using Hex8 = std::array<std::int32_t, 8>;  // node indices (not user ids)
+
+// The six faces of a hex, nodes counter-clockwise seen from outside (right-hand normal outward):
+// bottom (zeta = -1), top (zeta = +1), eta = -1, xi = +1, eta = +1, xi = -1. This is also the
+// order of the faces S1..S6 of an Abaqus/CalculiX C3D8 (same node order), so face k is S(k+1).
+inline constexpr int kHexFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                        {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
 // 4-node shell (node indices, counter-clockwise about the shell normal (x3 - x1) x (x4 - x2)).
 // A triangle repeats its third node: n4 == n3.
 using Quad4 = std::array<std::int32_t, 4>;
