@@ -36,6 +36,8 @@ std::string entity_word(EntityType t) {
       return "ALL";
     case EntityType::GeometryRegion:
       return "G";
+    case EntityType::FaceSet:  // element faces of an .inp *SURFACE: no word in the deck
+      return "SURFACE";
   }
   return "";
 }

@@ -63,8 +63,19 @@ std::vector<SkinFace> contact_faces(const Model& model, const EntityRef& entity,
   } else if (entity.type == EntityType::Part || entity.type == EntityType::PartSet) {
     parts = model.parts_of(entity);
     faces = exterior_faces(model.mesh, parts, merge, exposable);
+  } else if (entity.type == EntityType::FaceSet) {
+    for (const HexFace& hf : model.face_set(entity).faces) {
+      SkinFace f;
+      const Hex8& hex = model.mesh.hexes[hf.hex];
+      for (int a = 0; a < 4; ++a) f.nodes[a] = hex[kHexFaces[hf.face][a]];
+      f.hex = hf.hex;
+      f.part = model.mesh.hex_part[hf.hex];
+      f.thickness = hex_volume(model.mesh.nodes, hex) / quad_area(model.mesh.nodes, f.nodes);
+      faces.push_back(f);
+    }
   } else {
-    throw InputError(entity.where, "a contact surface is a part (P), a part set (PS) or ALL");
+    throw InputError(entity.where,
+                     "a contact surface is a part (P), a part set (PS), ALL or element faces");
   }
   const Mesh& mesh = model.mesh;
   for (std::size_t s = 0; s < mesh.shell_count(); ++s) {

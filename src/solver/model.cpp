@@ -144,9 +144,25 @@ std::vector<std::int32_t> Model::nodes_of(const EntityRef& entity) const {
       }
       return nodes;
     }
+    case EntityType::FaceSet: {
+      const FaceSet& set = face_set(entity);
+      for (const HexFace& f : set.faces)
+        for (const int a : kHexFaces[f.face]) nodes.push_back(mesh.hexes[f.hex][a]);
+      break;
+    }
   }
   sort_unique(nodes);
   return nodes;
+}
+
+const FaceSet& Model::face_set(const EntityRef& entity) const {
+  const FaceSet* set = find_by_id(face_sets, entity.id);
+  if (!set) {
+    throw InputError(entity.where,
+                     "surface " + std::to_string(entity.id) + " does not exist (defined: " +
+                         id_list(face_sets, [](const FaceSet& s) { return s.id; }) + ")");
+  }
+  return *set;
 }
 
 }  // namespace abut

@@ -16,6 +16,7 @@
 #include "abut/material/material.hpp"
 #include "abut/mesh/geometry.hpp"
 #include "abut/mesh/mesh.hpp"
+#include "abut/solver/model_static.hpp"
 
 namespace abut {
 
@@ -49,6 +50,9 @@ struct Part {
   // *PART_SHELL: integration points through the thickness (odd) and hourglass coefficient.
   int shell_points = ShellSection{}.points;
   double shell_hourglass = ShellSection{}.hourglass;
+  // Integration of the part's hexes: one point with hourglass control (explicit; Abaqus C3D8R) or
+  // 2x2x2 points (static solver; Abaqus/CalculiX C3D8).
+  enum class SolidIntegration { OnePoint, Full } solid_integration = SolidIntegration::OnePoint;
   SourceLocation where;
 };
 
@@ -69,8 +73,9 @@ enum class EntityType {
   Part,
   PartSet,
   All,
-  GeometryRegion
-};  // GeometryRegion: entype G
+  GeometryRegion,
+  FaceSet
+};  // GeometryRegion: entype G; FaceSet: element faces (Abaqus *SURFACE, model_static.hpp)
 struct EntityRef {
   EntityType type = EntityType::All;
   std::int64_t id = 0;
@@ -194,6 +199,14 @@ struct ContactSpec {
   ErosionSettings erosion;   // *CONTACT_EROSION
   EdgeSettings edges;        // *CONTACT_EDGE
   SourceLocation gap_where, erosion_where, edge_where;
+  // Abaqus/CalculiX *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL (CalculiX form): the
+  // pressure is p0 at zero distance and falls exponentially to 1% of p0 at the clearance c0.
+  struct Exponential {
+    double c0 = 0.0, p0 = 0.0;
+  };
+  std::optional<Exponential> exponential;
+  // *CONTACT PAIR, SMALL SLIDING (OptiStruct TRACK = small): partners found once, at the start.
+  bool small_sliding = false;
 };
 
 // A geometry of *GEOMETRY_* with its id.
@@ -227,6 +240,10 @@ struct Model {
   std::vector<Gravity> gravity;
   std::vector<PressureLoad> pressures;
   std::vector<ContactSpec> contacts;
+  // The static procedure (model_static.hpp): empty for an explicit run.
+  std::vector<StaticStep> static_steps;
+  std::vector<FaceSet> face_sets;
+  std::vector<LinearConstraint> equations;
 
   // Look-ups by user id; nullptr when absent.
   const Part* find_part(std::int64_t id) const;
@@ -239,6 +256,8 @@ struct Model {
   std::vector<std::int32_t> nodes_of(const EntityRef& entity) const;
   // Part ids of an entity of type Part, PartSet or All.
   std::vector<std::int64_t> parts_of(const EntityRef& entity) const;
+  // The face set of an entity of type FaceSet; InputError at its location if it does not exist.
+  const FaceSet& face_set(const EntityRef& entity) const;
 };
 
 }  // namespace abut
