@@ -88,6 +88,7 @@ class CholmodSolver final : public LinearSolver {
                       "stiffness (missing support, rigid-body motion) or a negative stiffness.",
                       kName, equation, factor_->minor, factor_->n));
     }
+    rcond_ = cholmod_rcond(factor_.get(), &common_.c);
     factored_ = true;
   }
 
@@ -117,6 +118,7 @@ class CholmodSolver final : public LinearSolver {
 
   const char* name() const override { return kName; }
   std::int64_t analysis_count() const override { return analyses_; }
+  double reciprocal_condition() const override { return factored_ ? rcond_ : 0.0; }
 
  private:
   // The triangle CHOLMOD reads, and the fill-reducing ordering and symbolic factor of the pattern.
@@ -181,6 +183,7 @@ class CholmodSolver final : public LinearSolver {
   std::vector<std::int64_t> triangle_source_;  // CSR index of each entry of triangle_
   bool analysed_ = false;
   bool factored_ = false;
+  double rcond_ = 0.0;
   std::int64_t analyses_ = 0;
 };
 

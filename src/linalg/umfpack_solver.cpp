@@ -55,6 +55,7 @@ class UmfpackSolver final : public LinearSolver {
                       kName, equation));
     }
     if (status != UMFPACK_OK) fail("numeric factorisation", status);
+    rcond_ = info_[UMFPACK_RCOND];
     numeric_ = std::move(owned);
   }
 
@@ -73,6 +74,7 @@ class UmfpackSolver final : public LinearSolver {
 
   const char* name() const override { return kName; }
   std::int64_t analysis_count() const override { return analyses_; }
+  double reciprocal_condition() const override { return numeric_ ? rcond_ : 0.0; }
 
  private:
   // Column pre-ordering (COLAMD or AMD, chosen by UMFPACK's strategy) and symbolic analysis.
@@ -124,6 +126,7 @@ class UmfpackSolver final : public LinearSolver {
   std::vector<double> rhs_;
   std::unique_ptr<void, FreeSymbolic> symbolic_;
   std::unique_ptr<void, FreeNumeric> numeric_;
+  double rcond_ = 0.0;
   std::int64_t analyses_ = 0;
 };
 

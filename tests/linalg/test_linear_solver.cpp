@@ -183,6 +183,31 @@ TEST(Cholmod, FreeFloatingSpringChainIsSingular) {
   EXPECT_EQ(solver->analysis_count(), 1);
 }
 
+// With non-integer stiffnesses the last pivot of a floating chain is round-off, not 0: the
+// factorisation may pass, but the pivot ratio shows it (~1e-16 against > 1e-6 once supported).
+TEST(LinearSolver, RoundOffSingularityShowsInThePivotRatio) {
+  for (const MatrixKind kind : {MatrixKind::SymmetricPositiveDefinite, MatrixKind::General}) {
+    for (unsigned seed = 1; seed <= 5; ++seed) {
+      const int n = 50;
+      const auto k = random_vector(n, seed);
+      std::vector<Spring> springs;
+      for (int i = 0; i + 1 < n; ++i) springs.push_back({i, i + 1, 2e11 * (1.5 + 0.5 * k[i])});
+      const Matrix floating = spring_matrix(n, springs);
+      auto solver = make_linear_solver(kind);
+      try {
+        solver->factorize(floating.pattern, floating.values);
+        EXPECT_LT(solver->reciprocal_condition(), 1e-13) << solver->name() << " seed " << seed;
+      } catch (const SingularMatrixError&) {
+        // caught exactly: fine
+      }
+      springs.push_back({0, -1, 2e11});
+      const Matrix held = spring_matrix(n, springs);
+      solver->factorize(held.pattern, held.values);
+      EXPECT_GT(solver->reciprocal_condition(), 1e-6) << solver->name();
+    }
+  }
+}
+
 // The SingularMatrixError of a Cholesky factorisation must name the equation of A, not the column
 // of the reordered matrix where the pivot failed.
 void expect_not_positive_definite_at(const Matrix& a, std::int64_t equation) {

@@ -58,6 +58,12 @@ class LinearSolver {
   // "CHOLMOD (supernodal Cholesky)", "UMFPACK (multifrontal LU)": for logs and summaries.
   virtual const char* name() const = 0;
 
+  // Smallest over largest pivot of the last factorisation (CHOLMOD: cholmod_rcond, the square of
+  // min/max diag(L) of L L^T; UMFPACK: Info[UMFPACK_RCOND], min/max |diag(U)|): a cheap estimate
+  // of the reciprocal condition number. A matrix singular to round-off (a floating part) factorises
+  // with pivots ~1e-16 of the others; a callers tests this against a threshold it can justify.
+  virtual double reciprocal_condition() const = 0;
+
   // How many symbolic analyses factorize() has run (for statistics and to test the reuse).
   virtual std::int64_t analysis_count() const = 0;
 };
