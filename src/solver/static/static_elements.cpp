@@ -1,0 +1,89 @@
+#include "solver/static/static_elements.hpp"
+
+#include <string>
+#include <variant>
+
+#include "abut/core/error.hpp"
+
+namespace abut::detail {
+
+StaticElements::StaticElements(const Model& model) : model_(model) {
+  const Mesh& mesh = model.mesh;
+  if (mesh.shell_count() > 0)
+    throw InputError("the static solver does not support shells yet (" +
+                     std::to_string(mesh.shell_count()) + " in the model)");
+  for (const Part& part : model.parts) {
+    bool used = false;
+    for (std::size_t h = 0; h < mesh.hex_count() && !used; ++h) used = mesh.hex_part[h] == part.id;
+    if (!used) continue;
+    if (part.solid_integration != Part::SolidIntegration::Full)
+      throw InputError(part.where, "part " + std::to_string(part.id) + " (" + part.title +
+                                       "): the static solver needs fully integrated hexahedra "
+                                       "(C3D8); one-point hexahedra (C3D8R) are not supported in "
+                                       "static steps yet");
+    if (!std::holds_alternative<ElasticParams>(model.material_of_part(part.id)))
+      throw InputError(part.where, "part " + std::to_string(part.id) + " (" + part.title +
+                                       "): the static solver supports linear elastic materials "
+                                       "(*ELASTIC) only yet");
+  }
+  hexes_ = mesh.hexes;
+  ids_ = mesh.hex_id;
+  material_.reserve(hexes_.size());
+  for (std::size_t h = 0; h < hexes_.size(); ++h) {
+    const auto& e = std::get<ElasticParams>(model.material_of_part(mesh.hex_part[h]));
+    material_.push_back({e.young, e.poisson});
+  }
+  const std::size_t n = hexes_.size();
+  force_.resize(24 * n);
+  stiffness_.resize(576 * n);
+  stress_.resize(48 * n);
+  strain_.resize(48 * n);
+  energy_.resize(n);
+}
+
+void StaticElements::evaluate(std::span<const double> u, bool nonlinear_geometry) {
+  const Nodes& nodes = model_.mesh.nodes;
+  const auto n = static_cast<std::int64_t>(hexes_.size());
+  std::int64_t inverted = -1;
+#pragma omp parallel
+  {
+    Hex8FullInput in;
+    Hex8FullResult out;
+    in.nonlinear_geometry = nonlinear_geometry;
+#pragma omp for schedule(static)
+    for (std::int64_t e = 0; e < n; ++e) {
+      for (int a = 0; a < 8; ++a) {
+        const std::size_t node = static_cast<std::size_t>(hexes_[e][a]);
+        in.X[a][0] = nodes.x[node];
+        in.X[a][1] = nodes.y[node];
+        in.X[a][2] = nodes.z[node];
+        for (int k = 0; k < 3; ++k) in.u[a][k] = u[3 * node + k];
+      }
+      hex8_full(in, material_[e], out);
+      if (!(out.min_jacobian > 0.0)) {
+#pragma omp critical(abut_static_inverted)
+        if (inverted < 0 || e < inverted) inverted = e;
+      }
+      std::copy(out.force, out.force + 24, &force_[24 * e]);
+      std::copy(out.stiffness, out.stiffness + 576, &stiffness_[576 * e]);
+      for (int p = 0; p < 8; ++p)
+        for (int k = 0; k < 6; ++k) {
+          stress_[48 * e + 6 * p + k] = out.stress[p][k];
+          strain_[48 * e + 6 * p + k] = out.strain[p][k];
+        }
+      energy_[e] = out.strain_energy;
+    }
+  }
+  if (inverted >= 0)
+    throw InstabilityError("element " + std::to_string(ids_[inverted]) +
+                           " turned inside out (det J <= 0 at a Gauss point): the load increment "
+                           "is too large or the model lacks support");
+}
+
+void StaticElements::add_forces(std::span<double> f) const {
+  for (std::size_t e = 0; e < hexes_.size(); ++e)
+    for (int a = 0; a < 8; ++a)
+      for (int k = 0; k < 3; ++k) f[3 * hexes_[e][a] + k] += force_[24 * e + 3 * a + k];
+}
+
+}  // namespace abut::detail
