@@ -462,3 +462,29 @@ TEST(Adhesion, ViscousTangentialForceOpposesTheSlip) {
 
 }  // namespace
 }  // namespace abut
+
+namespace abut {
+namespace {
+
+// CalculiX's exponential pressure-overclosure (User's Manual, eqs. 108-109): p = p0 at zero
+// distance, 1% of p0 at the clearance c0, nothing beyond; slope beta p; energy measured from -c0.
+TEST(NormalLaws, ExponentialOverclosureIsCalculixForm) {
+  const ExponentialOverclosure law{0.5, 2.0};
+  EXPECT_DOUBLE_EQ(law.evaluate(0.0, 123.0).pressure, 2.0);
+  EXPECT_NEAR(law.evaluate(-0.5, 0.0).pressure, 0.02, 1e-15);
+  EXPECT_EQ(law.evaluate(-0.51, 0.0).pressure, 0.0);
+  const double beta = std::log(100.0) / 0.5, d = 0.1, h = 1e-6;
+  const NormalResponse r = law.evaluate(d, 0.0);
+  EXPECT_NEAR(r.pressure, 2.0 * std::exp(beta * d), 1e-12);
+  EXPECT_NEAR(r.stiffness,
+              (law.evaluate(d + h, 0).pressure - law.evaluate(d - h, 0).pressure) / (2 * h),
+              1e-6 * r.stiffness);
+  EXPECT_NEAR((law.evaluate(d + h, 0).energy - law.evaluate(d - h, 0).energy) / (2 * h), r.pressure,
+              1e-6 * r.pressure);
+  EXPECT_NEAR(law.evaluate(-0.5, 0).energy, 0.0, 1e-15);
+  EXPECT_DOUBLE_EQ(reach_at_clearance(NormalLaw{law}), 0.5);
+  EXPECT_DOUBLE_EQ(reach_at_clearance(NormalLaw{LinearPenalty{}}), 0.0);
+}
+
+}  // namespace
+}  // namespace abut

@@ -23,4 +23,11 @@ NormalResponse CurvePenalty::evaluate(double d, double) const {
   return {sign * pressure(a), slope, energy};
 }
 
+NormalResponse ExponentialOverclosure::evaluate(double d, double) const {
+  if (!(c0 > 0.0) || d < -c0) return {};
+  const double beta = std::log(100.0) / c0;
+  const double p = p0 * std::exp(beta * d);
+  return {p, beta * p, (p - 0.01 * p0) / beta};
+}
+
 }  // namespace abut

@@ -35,7 +35,23 @@ struct CurvePenalty {
   NormalResponse evaluate(double d, double pfac) const;
 };
 
-using NormalLaw = std::variant<LinearPenalty, CurvePenalty>;
+// Soft contact with a pressure at clearance (CalculiX *SURFACE BEHAVIOR,
+// PRESSURE-OVERCLOSURE=EXPONENTIAL; CalculiX User's Manual, "Node-to-Face Penalty Contact",
+// eqs. 108-109): p = p0 exp(beta d), beta = ln(100) / c0, so p = p0 at zero distance and 1% of
+// p0 at the clearance c0; no pressure beyond c0 (d < -c0). Acts at clearance: d may be negative.
+// The energy is measured from d = -c0. pfac is not used.
+struct ExponentialOverclosure {
+  double c0 = 0.0, p0 = 0.0;
+  NormalResponse evaluate(double d, double /*pfac*/) const;
+};
+
+using NormalLaw = std::variant<LinearPenalty, CurvePenalty, ExponentialOverclosure>;
+
+// How far outside the surface (clearance) a law still pushes: 0 except for the exponential law.
+inline double reach_at_clearance(const NormalLaw& law) {
+  const auto* e = std::get_if<ExponentialOverclosure>(&law);
+  return e ? e->c0 : 0.0;
+}
 
 inline NormalResponse evaluate(const NormalLaw& law, double d, double pfac) {
   return std::visit([&](const auto& l) { return l.evaluate(d, pfac); }, law);

@@ -1,0 +1,130 @@
+#pragma once
+// Penalty contact for the implicit (Newton-Raphson) solver: the surfaces, the partner search
+// (narrow_phase.hpp) and the normal laws (laws/normal.hpp) of the explicit interface, linearised.
+//
+// Each contact point (a Gauss point of a secondary facet, surface-to-surface, or a secondary node,
+// node-to-surface) that finds a partner facet is a small contact element over the nodes of its
+// own facet (or its node) and of the partner facet, with weights w_a = +N_a(point) on its own
+// nodes and -phi_a(xi, eta) on the partner's. With n the partner's normal and A the point's area
+// (Gauss weight x current Jacobian, or the node's tributary area):
+//   gap g = n . sum_a w_a x_a (negative = penetration d = -g), pressure p = law(d),
+//   tangential traction t: an elastic stick spring k_t on the relative motion since the last
+//   converged state, returned to |t| <= mu p (Coulomb),
+//   force on node a: f_a = w_a A (p n + t).
+// Tangent (-df/du), with the partner point and normal frozen within an iteration as CalculiX
+// does for its face-to-face contact (CalculiX User's Manual 2.x, "Face-to-Face Penalty Contact",
+// eq. 193; the geometric terms of node-to-face contact, eqs. 118-122, are left out):
+//   normal   A w_a w_b (dp/dd) n (x) n
+//   stick    A w_a w_b k_t (I - n (x) n)
+//   slip     A w_a w_b [mu (dp/dd) t^ (x) n + (mu p k_t / |t_trial|)(I - t^ (x) t^)(I - n (x) n)]
+// (the return-mapping tangent of Coulomb friction, e.g. Wriggers, Computational Contact Mechanics,
+// 2nd ed., 2006, section 10.3.2; unsymmetric when slipping). Tied contact: a bilinear spring in
+// every direction on the relative motion since the pair was found, p = k_n d in tension too.
+// Evaluations do not change the history; commit() does, once an increment has converged.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "abut/contact/broad_phase.hpp"
+#include "abut/contact/interface.hpp"
+#include "abut/contact/laws/normal.hpp"
+#include "abut/contact/surface.hpp"
+
+namespace abut {
+
+struct StaticContactSettings {
+  bool node_to_surface = false;
+  int accuracy_level = 2;  // Gauss points per direction of a secondary facet: 1, 2 or 3 levels
+  NormalLaw normal = LinearPenalty{};
+  double penalty = 0.0;        // pfac [stress / length], passed to the normal law
+  double friction = 0.0;       // mu; 0: frictionless
+  double stick_slope = 0.0;    // k_t [stress / length]; 0: the normal penalty
+  bool tied = false;           // bonded in every direction from the first evaluation on
+  bool small_sliding = false;  // partners found at the first evaluation only
+  // A point pairs with a facet when it lies at most `search_distance` outside it or at most
+  // `depth` inside it (beyond: the far side of the body).
+  double search_distance = 0.0;
+  double depth = 0.0;
+  double edge_angle = 20.0;  // degrees: edges sharper than this end the surface (narrow_phase.hpp)
+};
+
+// A contact element of the last evaluation: its nodes (no repeats) with their weights w_a, the
+// point's area A, its traction tau = p n + t and the 3 x 3 tangent C, so that
+//   force on node a   f_a = w_a A tau,      -d f_a / d u_b = A w_a w_b C.
+struct StaticContactElement {
+  std::array<std::int32_t, 8> nodes{};
+  std::array<double, 8> weights{};
+  int count = 0;
+  double area = 0.0;
+  Vec3 traction;
+  std::array<double, 9> tangent{};  // row-major
+};
+
+struct StaticContactPoint {
+  std::int32_t node = -1;   // node-to-surface: the secondary node
+  std::int32_t facet = -1;  // surface-to-surface: its own facet
+  Vec3 position;
+  bool active = false;
+  bool slipping = false;
+  double area = 0.0;
+  Vec3 normal;            // partner's normal (the push direction)
+  double gap = 0.0;       // negative = penetration
+  double pressure = 0.0;  // normal traction, positive in compression
+  Vec3 traction;          // tangential traction on the point
+  Vec3 slip;              // tangential relative motion since the last converged state
+  double energy = 0.0;    // elastic energy of its springs (normal and stick) [energy]
+};
+
+class StaticContact {
+ public:
+  // `secondary_nodes` (node-to-surface only): the nodes that act as points; empty: every node of
+  // the secondary facets. The coordinates of `initial` are the reference configuration: tied and
+  // small-sliding pairs are formed there, once.
+  StaticContact(StaticContactSettings settings, ContactSurface secondary, ContactSurface main,
+                std::span<const std::int32_t> secondary_nodes, const ContactInput& initial);
+
+  // Evaluates every point at the coordinates of `in`.
+  void evaluate(const ContactInput& in);
+  // The evaluated state becomes the history (friction, tied pairs, small-sliding partners).
+  void commit();
+
+  std::span<const StaticContactElement> elements() const { return elements_; }
+  std::span<const StaticContactPoint> points() const { return points_; }
+  bool symmetric() const { return symmetric_; }            // false when a point slips with friction
+  Vec3 total_force() const;                                // on the secondary surface
+  double energy() const;                                   // sum over the points
+  double friction_work() const { return friction_work_; }  // dissipated so far (committed)
+
+ private:
+  struct History {
+    bool in_contact = false;
+    std::int32_t facet = -1;  // partner facet (tied and small sliding: fixed)
+    double xi = 0.0, eta = 0.0;
+    Vec3 traction;  // committed tangential traction
+    Vec3 offset;    // tied: relative position x_point - x_partner when the pair formed
+    double slip_work = 0.0;
+  };
+  void find_partners(const ContactInput& in);
+
+  StaticContactSettings settings_;
+  ContactSurface secondary_, main_;
+  std::vector<std::uint8_t> main_sharp_, main_active_, main_free_;
+  std::vector<double> main_depth_, main_gap_, main_min_edge_;
+  std::vector<std::int32_t> main_twin_;
+  // Points: own facet and Gauss point (S2S) or node (N2S).
+  std::vector<std::int32_t> point_facet_, point_node_;
+  std::vector<double> point_xi_, point_eta_, point_weight_;
+  std::vector<std::int32_t> node_facet_start_, node_facets_;  // N2S: facets around each node
+  std::vector<double> x0_, y0_, z0_;                          // reference coordinates
+  std::vector<double> xc_, yc_, zc_;                          // at the last commit
+  std::vector<double> xe_, ye_, ze_;                          // of the last evaluation
+  std::vector<History> committed_, trial_;
+  std::vector<StaticContactPoint> points_;
+  std::vector<StaticContactElement> elements_;
+  bool symmetric_ = true;
+  bool first_ = true;
+  double friction_work_ = 0.0;
+};
+
+}  // namespace abut

@@ -1,0 +1,351 @@
+#include "abut/contact/static_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "abut/contact/integration.hpp"
+#include "abut/contact/narrow_phase.hpp"
+#include "abut/contact/quad.hpp"
+
+namespace abut {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Vec3 tangential(const Vec3& v, const Vec3& n) { return v - n * dot(v, n); }
+
+double mean_edge(const ContactSurface& s, std::span<const double> x, std::span<const double> y,
+                 std::span<const double> z) {
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (const auto& f : s.facets) {
+    const QuadCorners c = quad_corners(f, x, y, z);
+    for (int e = 0; e < 4; ++e) {
+      const double l = norm(c[(e + 1) % 4] - c[e]);
+      if (l > 0.0) sum += l, ++count;
+    }
+  }
+  return count > 0 ? sum / static_cast<double>(count) : 0.0;
+}
+
+// The element's nodes with their weights, repeated nodes merged (a triangle repeats its third).
+struct Weights {
+  std::array<std::int32_t, 8> node{};
+  std::array<double, 8> w{};
+  int count = 0;
+  void add(std::int32_t n, double weight) {
+    for (int k = 0; k < count; ++k)
+      if (node[k] == n) {
+        w[k] += weight;
+        return;
+      }
+    node[count] = n;
+    w[count++] = weight;
+  }
+};
+
+}  // namespace
+
+StaticContact::StaticContact(StaticContactSettings settings, ContactSurface secondary,
+                             ContactSurface main, std::span<const std::int32_t> secondary_nodes,
+                             const ContactInput& initial)
+    : settings_(settings), secondary_(std::move(secondary)), main_(std::move(main)) {
+  x0_.assign(initial.x.begin(), initial.x.end());
+  y0_.assign(initial.y.begin(), initial.y.end());
+  z0_.assign(initial.z.begin(), initial.z.end());
+  xc_ = x0_, yc_ = y0_, zc_ = z0_;
+  const std::size_t nf = main_.size();
+  main_sharp_ = sharp_edges(main_, x0_, y0_, z0_, settings_.edge_angle, &main_free_);
+  main_active_.assign(nf, 1);
+  main_depth_.assign(nf, settings_.depth);
+  main_gap_.assign(nf, 0.0);
+  main_min_edge_.assign(nf, std::numeric_limits<double>::infinity());
+  main_twin_.assign(nf, -1);
+  if (settings_.node_to_surface) {
+    std::vector<std::int32_t> nodes(secondary_nodes.begin(), secondary_nodes.end());
+    if (nodes.empty())
+      for (const auto& f : secondary_.facets) nodes.insert(nodes.end(), f.begin(), f.end());
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    point_node_ = nodes;
+    point_facet_.assign(nodes.size(), -1);
+    // Facets around each node (for its tributary area).
+    node_facet_start_.assign(x0_.size() + 1, 0);
+    for (const auto& f : secondary_.facets)
+      for (int a = 0; a < 4; ++a)
+        if (a < 3 || f[3] != f[2]) ++node_facet_start_[f[a] + 1];
+    for (std::size_t i = 0; i + 1 < node_facet_start_.size(); ++i)
+      node_facet_start_[i + 1] += node_facet_start_[i];
+    node_facets_.resize(static_cast<std::size_t>(node_facet_start_.back()));
+    std::vector<std::int32_t> fill(node_facet_start_.begin(), node_facet_start_.end() - 1);
+    for (std::size_t f = 0; f < secondary_.size(); ++f)
+      for (int a = 0; a < 4; ++a)
+        if (a < 3 || secondary_.facets[f][3] != secondary_.facets[f][2])
+          node_facets_[fill[secondary_.facets[f][a]]++] = static_cast<std::int32_t>(f);
+  } else {
+    const std::vector<FacetPoint> rule = facet_rule(settings_.accuracy_level, false, 0);
+    for (std::size_t f = 0; f < secondary_.size(); ++f)
+      for (const FacetPoint& p : rule) {
+        point_facet_.push_back(static_cast<std::int32_t>(f));
+        point_node_.push_back(-1);
+        point_xi_.push_back(p.xi);
+        point_eta_.push_back(p.eta);
+        point_weight_.push_back(p.weight);
+      }
+  }
+  committed_.assign(point_facet_.size(), History{});
+  trial_ = committed_;
+  points_.assign(point_facet_.size(), StaticContactPoint{});
+  if (settings_.tied || settings_.small_sliding) {  // pairs (and tie offsets) of the reference
+    evaluate(initial);
+    commit();
+  }
+}
+
+void StaticContact::evaluate(const ContactInput& in) {
+  const std::size_t np = point_facet_.size();
+  const double search = std::max(settings_.search_distance, reach_at_clearance(settings_.normal));
+  const double reach = std::max(search, settings_.depth);
+  const double edge_tolerance = 0.01 * mean_edge(main_, in.x, in.y, in.z);
+  // Positions, areas and normals of the points.
+  std::vector<double> qx(np), qy(np), qz(np);
+  std::vector<Vec3> own_normal(np);
+  for (std::size_t p = 0; p < np; ++p) {
+    StaticContactPoint& out = points_[p];
+    out = StaticContactPoint{};
+    if (point_node_[p] >= 0) {
+      const std::int32_t n = point_node_[p];
+      out.node = n;
+      out.position = {in.x[n], in.y[n], in.z[n]};
+      for (std::int32_t k = node_facet_start_[n]; k < node_facet_start_[n + 1]; ++k) {
+        // int N_a dA over each facet around the node, 2 x 2 Gauss points.
+        const auto& f = secondary_.facets[node_facets_[k]];
+        const QuadCorners c = quad_corners(f, in.x, in.y, in.z);
+        const double g = 1.0 / std::sqrt(3.0);
+        for (const double xi : {-g, g})
+          for (const double eta : {-g, g}) {
+            double jacobian = 0.0;
+            quad_normal(c, xi, eta, jacobian);
+            const auto shape = quad_shape(xi, eta);
+            for (int a = 0; a < 4; ++a)
+              if (f[a] == n && (a < 3 || f[3] != f[2])) out.area += shape[a] * jacobian;
+            if (f[3] == f[2] && f[2] == n) out.area += shape[3] * jacobian;
+          }
+      }
+    } else {
+      out.facet = point_facet_[p];
+      const QuadCorners c = quad_corners(secondary_.facets[out.facet], in.x, in.y, in.z);
+      double jacobian = 0.0;
+      own_normal[p] = quad_normal(c, point_xi_[p], point_eta_[p], jacobian);
+      out.position = quad_point(c, point_xi_[p], point_eta_[p]);
+      out.area = point_weight_[p] * jacobian;
+    }
+    qx[p] = out.position.x, qy[p] = out.position.y, qz[p] = out.position.z;
+  }
+  // Candidate facets.
+  std::vector<Box> boxes(main_.size());
+  for (std::size_t f = 0; f < main_.size(); ++f) {
+    Box& b = boxes[f];
+    b.lo = {1e300, 1e300, 1e300};
+    b.hi = {-1e300, -1e300, -1e300};
+    for (const std::int32_t n : main_.facets[f]) {
+      const double c[3] = {in.x[n], in.y[n], in.z[n]};
+      for (int k = 0; k < 3; ++k) {
+        b.lo[k] = std::min(b.lo[k], c[k] - reach - edge_tolerance);
+        b.hi[k] = std::max(b.hi[k], c[k] + reach + edge_tolerance);
+      }
+    }
+  }
+  BucketGrid grid;
+  CandidateList candidates;
+  if (!boxes.empty()) {
+    grid.build(boxes);
+    grid.query(qx, qy, qz, candidates);
+  }
+  const TargetFacets target{main_.facets, main_sharp_, main_active_, main_depth_,
+                            main_twin_,   main_free_,  main_gap_,    main_min_edge_,
+                            in.x,         in.y,        in.z};
+  PartnerRules rules;
+  rules.point_depth = settings_.depth;
+  rules.depth_above = search;
+  rules.edge_tolerance = edge_tolerance;
+  rules.smooth_reach = std::tan(settings_.edge_angle * kPi / 180.0);
+  const double kn_default = settings_.penalty;
+  const double kt = settings_.stick_slope > 0.0 ? settings_.stick_slope : kn_default;
+  std::vector<StaticContactElement> slot(np);  // small: weights and a 3 x 3 tangent
+  std::vector<std::uint8_t> active(np, 0), slipping(np, 0);
+  const auto count = static_cast<std::int64_t>(np);
+#pragma omp parallel for schedule(dynamic, 64)
+  for (std::int64_t ip = 0; ip < count; ++ip) {
+    const auto p = static_cast<std::size_t>(ip);
+    StaticContactPoint& out = points_[p];
+    History& h = trial_[p];
+    const History& c = committed_[p];
+    h = History{};
+    h.slip_work = 0.0;
+    const Vec3 x = out.position;
+    // The partner: fixed for tied pairs and small sliding once found, else searched.
+    std::int32_t facet = -1;
+    double xi = 0.0, eta = 0.0;
+    Vec3 normal, q;
+    const bool fixed = (settings_.tied || settings_.small_sliding) && c.facet >= 0;
+    const std::array<std::int32_t, 4> own =
+        out.node >= 0 ? std::array<std::int32_t, 4>{out.node, out.node, out.node, out.node}
+                      : secondary_.facets[out.facet];
+    if (fixed) {
+      facet = c.facet;
+      const QuadCorners corners = quad_corners(main_.facets[facet], in.x, in.y, in.z);
+      if (settings_.tied) {
+        xi = c.xi, eta = c.eta;
+      } else {
+        const QuadProjection proj = project_onto_quad(corners, x);
+        xi = proj.xi, eta = proj.eta;
+      }
+      double jacobian = 0.0;
+      normal = quad_normal(corners, xi, eta, jacobian);
+      q = quad_point(corners, xi, eta);
+    } else if (!first_ && (settings_.tied || settings_.small_sliding)) {
+      facet = -1;  // paired at the reference only: no partner then, none later
+    } else {
+      const std::span<const std::int32_t> cand =
+          candidates.point_count() > 0
+              ? std::span<const std::int32_t>(candidates.facets.data() + candidates.offsets[p],
+                                              candidates.offsets[p + 1] - candidates.offsets[p])
+              : std::span<const std::int32_t>();
+      const Partner partner = find_partner(target, cand, own, x, own_normal[p], rules);
+      if (partner.facet >= 0) {
+        facet = partner.facet, xi = partner.xi, eta = partner.eta, normal = partner.normal;
+        q = quad_point(quad_corners(main_.facets[facet], in.x, in.y, in.z), xi, eta);
+      }
+    }
+    if (facet < 0) continue;
+    const double gap = dot(x - q, normal);
+    const double d = -gap;
+    out.gap = gap;
+    h.facet = facet, h.xi = xi, h.eta = eta;
+    // Weights of the element: +N on the point's own nodes, -phi on the partner's.
+    Weights wt;
+    if (out.node >= 0) {
+      wt.add(out.node, 1.0);
+    } else {
+      const auto n = quad_shape(point_xi_[p], point_eta_[p]);
+      for (int a = 0; a < 4; ++a) wt.add(own[a], n[a]);
+    }
+    const auto phi = quad_shape(xi, eta);
+    for (int a = 0; a < 4; ++a) wt.add(main_.facets[facet][a], -phi[a]);
+    // Relative motion since the last converged state.
+    Vec3 motion{};
+    for (int k = 0; k < wt.count; ++k) {
+      const std::int32_t n = wt.node[k];
+      motion = motion + Vec3{in.x[n] - xc_[n], in.y[n] - yc_[n], in.z[n] - zc_[n]} * wt.w[k];
+    }
+    double pressure = 0.0, kn = 0.0, energy = 0.0;
+    Vec3 traction{};
+    double C[3][3] = {};
+    const double P[3][3] = {{1 - normal.x * normal.x, -normal.x * normal.y, -normal.x * normal.z},
+                            {-normal.y * normal.x, 1 - normal.y * normal.y, -normal.y * normal.z},
+                            {-normal.z * normal.x, -normal.z * normal.y, 1 - normal.z * normal.z}};
+    if (settings_.tied) {
+      h.offset = c.facet < 0 ? x - q : c.offset;  // formed at the reference configuration
+      pressure = kn_default * d;
+      kn = kn_default;
+      traction = tangential(h.offset - (x - q), normal) * kt;
+      energy = 0.5 * kn * d * d + 0.5 * dot(traction, traction) / kt;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) C[i][j] = kn * normal[i] * normal[j] + kt * P[i][j];
+    } else {
+      const double reach_open = reach_at_clearance(settings_.normal);
+      // Open beyond the law's reach. A point exactly touching (d = 0) is closed: it has no
+      // pressure yet but its spring, so that bodies that only touch are not left floating.
+      if (reach_open > 0.0 ? d < -reach_open : d < 0.0) continue;
+      const NormalResponse r = abut::evaluate(settings_.normal, d, settings_.penalty);
+      pressure = r.pressure, kn = r.stiffness, energy = r.energy;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) C[i][j] = kn * normal[i] * normal[j];
+      if (settings_.friction > 0.0) {
+        const Vec3 slip = tangential(motion, normal);
+        const Vec3 t0 = c.in_contact ? tangential(c.traction, normal) : Vec3{};
+        const Vec3 trial = t0 - slip * kt;
+        const double limit = settings_.friction * pressure;
+        const double size = norm(trial);
+        out.slip = slip;
+        if (size <= limit) {
+          traction = trial;
+          for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) C[i][j] += kt * P[i][j];
+        } else {
+          const Vec3 th = trial / size;
+          traction = th * limit;
+          slipping[p] = 1;
+          const double s = limit * kt / size;
+          for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+              double tt = 0.0;  // ((I - th th) P)_ij
+              for (int k = 0; k < 3; ++k) tt += ((i == k) - th[i] * th[k]) * P[k][j];
+              C[i][j] += settings_.friction * kn * th[i] * normal[j] + s * tt;
+            }
+          h.slip_work = out.area * limit * (size - limit) / kt;  // |t| x plastic slip
+        }
+        energy += 0.5 * dot(traction, traction) / kt;
+      }
+    }
+    h.in_contact = true;
+    h.traction = traction;
+    out.active = true;
+    out.slipping = slipping[p] != 0;
+    out.pressure = pressure;
+    out.traction = traction;
+    out.energy = out.area * energy;
+    active[p] = 1;
+    out.normal = normal;
+    StaticContactElement& e = slot[p];
+    e.count = wt.count;
+    e.nodes = wt.node;
+    e.weights = wt.w;
+    e.area = out.area;
+    e.traction = normal * pressure + traction;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) e.tangent[3 * i + j] = C[i][j];
+  }
+  elements_.clear();
+  symmetric_ = true;
+  for (std::size_t p = 0; p < np; ++p) {
+    if (!active[p]) {
+      trial_[p].facet = settings_.tied || settings_.small_sliding ? trial_[p].facet : -1;
+      continue;
+    }
+    elements_.push_back(slot[p]);
+    if (slipping[p]) symmetric_ = false;
+  }
+  // Tied and small-sliding partners found at the first evaluation stay (also when open).
+  if (settings_.tied || settings_.small_sliding)
+    for (std::size_t p = 0; p < np; ++p)
+      if (committed_[p].facet >= 0 && trial_[p].facet < 0) trial_[p] = committed_[p];
+  xe_.assign(in.x.begin(), in.x.end());
+  ye_.assign(in.y.begin(), in.y.end());
+  ze_.assign(in.z.begin(), in.z.end());
+}
+
+void StaticContact::commit() {
+  for (const History& h : trial_) friction_work_ += h.slip_work;
+  committed_ = trial_;
+  xc_ = xe_, yc_ = ye_, zc_ = ze_;
+  first_ = false;
+}
+
+Vec3 StaticContact::total_force() const {
+  Vec3 f{};
+  for (const StaticContactPoint& p : points_)
+    if (p.active) f = f + (p.normal * p.pressure + p.traction) * p.area;
+  return f;
+}
+
+double StaticContact::energy() const {
+  double e = 0.0;
+  for (const StaticContactPoint& p : points_) e += p.energy;
+  return e;
+}
+
+}  // namespace abut
