@@ -9,6 +9,7 @@
 #include <span>
 #include <string>
 
+#include "abut/contact/static_contact.hpp"
 #include "abut/core/error.hpp"
 #include "abut/solver/model.hpp"
 
@@ -80,6 +81,8 @@ class StaticSolver {
   std::span<const double> strain() const;
   std::span<const double> element_energy() const;
   const StaticStatistics& statistics() const;
+  // The contacts of Model::contacts, in order, at the last converged state.
+  std::span<const StaticContact> contacts() const;
 
  private:
   struct Impl;

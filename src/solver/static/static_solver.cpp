@@ -9,8 +9,10 @@
 #include <sstream>
 #include <string>
 
+#include "abut/contact/static_contact.hpp"
 #include "abut/linalg/linear_solver.hpp"
 #include "abut/linalg/sparse_matrix.hpp"
+#include "abut/solver/contact_surfaces.hpp"
 #include "solver/static/dof_map.hpp"
 #include "solver/static/static_elements.hpp"
 #include "solver/static/step_loads.hpp"
@@ -30,45 +32,67 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-// The elements' equations after the constraint expansion: for each element its list of
-// equations, and for each of its 24 local dofs the (local equation, weight) terms of T.
+// The equations of the elements (hexes, then contact elements) after the constraint expansion:
+// for each element its list of equations, and for each of its local dofs the (local equation,
+// weight) terms of T.
 struct ElementEquations {
   std::vector<std::int64_t> start{0};  // per element, into eqs
   std::vector<std::int32_t> eqs;
-  std::vector<std::int64_t> term_start;  // per element local dof (24 per element) + 1
+  std::vector<std::int64_t> dof_start{0};   // per element, into term_start (3 per node)
+  std::vector<std::int64_t> term_start{0};  // per local dof, into terms
   struct Term {
     std::int32_t local = 0;
     double weight = 0.0;
   };
   std::vector<Term> terms;
-};
 
-ElementEquations element_equations(const detail::StaticElements& elements,
-                                   const detail::DofMap& dofs) {
-  ElementEquations out;
-  out.term_start.push_back(0);
-  std::vector<std::int32_t> local;
-  for (std::size_t e = 0; e < elements.count(); ++e) {
-    local.clear();
+  void add(std::span<const std::int32_t> nodes, const detail::DofMap& dofs) {
+    const std::size_t first = eqs.size();
     auto local_of = [&](std::int32_t eq) {
-      const auto it = std::find(local.begin(), local.end(), eq);
-      if (it != local.end()) return static_cast<std::int32_t>(it - local.begin());
-      local.push_back(eq);
-      return static_cast<std::int32_t>(local.size() - 1);
+      for (std::size_t k = first; k < eqs.size(); ++k)
+        if (eqs[k] == eq) return static_cast<std::int32_t>(k - first);
+      eqs.push_back(eq);
+      return static_cast<std::int32_t>(eqs.size() - 1 - first);
     };
-    for (int a = 0; a < 8; ++a)
+    for (const std::int32_t node : nodes)
       for (int k = 0; k < 3; ++k) {
-        const std::size_t g = 3 * static_cast<std::size_t>(elements.nodes(e)[a]) + k;
-        if (dofs.equation(g) >= 0) out.terms.push_back({local_of(dofs.equation(g)), 1.0});
+        const std::size_t g = 3 * static_cast<std::size_t>(node) + k;
+        if (dofs.equation(g) >= 0) terms.push_back({local_of(dofs.equation(g)), 1.0});
         for (const auto& t : dofs.expansion(g))
           if (dofs.equation(t.dof) >= 0)
-            out.terms.push_back({local_of(dofs.equation(t.dof)), t.weight});
-        out.term_start.push_back(static_cast<std::int64_t>(out.terms.size()));
+            terms.push_back({local_of(dofs.equation(t.dof)), t.weight});
+        term_start.push_back(static_cast<std::int64_t>(terms.size()));
       }
-    out.eqs.insert(out.eqs.end(), local.begin(), local.end());
-    out.start.push_back(static_cast<std::int64_t>(out.eqs.size()));
+    start.push_back(static_cast<std::int64_t>(eqs.size()));
+    dof_start.push_back(static_cast<std::int64_t>(term_start.size() - 1));
   }
-  return out;
+  std::size_t size() const { return start.size() - 1; }
+
+  // out (m x m, m = equations of element e) += T^T k T for the element's local matrix k (n x n,
+  // n = its local dofs).
+  void transform_add(std::size_t e, const double* k, double* out) const {
+    const std::int64_t m = start[e + 1] - start[e];
+    const std::int64_t d0 = dof_start[e], n = dof_start[e + 1] - d0;
+    for (std::int64_t i = 0; i < n; ++i)
+      for (std::int64_t ti = term_start[d0 + i]; ti < term_start[d0 + i + 1]; ++ti)
+        for (std::int64_t j = 0; j < n; ++j) {
+          const double kij = terms[ti].weight * k[n * i + j];
+          if (kij == 0.0) continue;
+          for (std::int64_t tj = term_start[d0 + j]; tj < term_start[d0 + j + 1]; ++tj)
+            out[terms[ti].local * m + terms[tj].local] += kij * terms[tj].weight;
+        }
+  }
+};
+
+// The local matrix of a contact element: A w_a w_b C in 3 x 3 blocks.
+void contact_matrix(const StaticContactElement& c, double* k) {
+  const int n = 3 * c.count;
+  for (int a = 0; a < c.count; ++a)
+    for (int b = 0; b < c.count; ++b) {
+      const double s = c.area * c.weights[a] * c.weights[b];
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) k[(3 * a + i) * n + 3 * b + j] = s * c.tangent[3 * i + j];
+    }
 }
 
 }  // namespace
@@ -79,8 +103,10 @@ struct StaticSolver::Impl {
   detail::StaticElements elements;
   std::vector<double> u, reaction;
   StaticStatistics stats;
-  std::unique_ptr<LinearSolver> linear;
-  MatrixKind kind = MatrixKind::SymmetricPositiveDefinite;
+  std::vector<StaticContact> contacts;
+  std::unique_ptr<LinearSolver> symmetric_solver, general_solver;
+  bool indefinite = false;  // NLGEOM made the tangent indefinite: LU from then on
+  LinearSolver* linear = nullptr;
 
   Impl(const Model& m, StaticControls c) : model(m), controls(c), elements(m) {
     if (!m.motions.empty() || !m.gravity.empty() || !m.pressures.empty())
@@ -90,6 +116,88 @@ struct StaticSolver::Impl {
     if (m.static_steps.empty()) throw InputError("the model has no static step");
     u.assign(3 * m.mesh.nodes.size(), 0.0);
     reaction.assign(u.size(), 0.0);
+    for (const ContactSpec& spec : m.contacts) contacts.push_back(make_contact(spec));
+  }
+
+  // The contact of a *CONTACT PAIR (or *CONTACT) for the static solver.
+  StaticContact make_contact(const ContactSpec& spec) const {
+    const Mesh& mesh = model.mesh;
+    StaticContactSettings s;
+    s.node_to_surface = spec.discretisation == Discretisation::NodeToSurface;
+    s.accuracy_level = spec.accuracy_level;
+    s.small_sliding = spec.small_sliding;
+    using Law = ContactSpec::FrictionLaw;
+    switch (spec.friction_law) {
+      case Law::Impetus:
+        s.friction = spec.friction;
+        break;
+      case Law::None:
+        break;
+      case Law::Coulomb:
+        s.friction = spec.mu_static;
+        if (spec.mu_dynamic != spec.mu_static)
+          throw InputError(spec.friction_where,
+                           "static steps take one Coulomb coefficient: "
+                           "give mu_d equal to mu_s");
+        break;
+      case Law::Freeze:
+        s.tied = true;
+        break;
+      default:
+        throw InputError(spec.friction_where,
+                         "this friction law is not supported in static steps yet (NONE, "
+                         "COULOMB and FREEZE/TIED are)");
+    }
+    if (spec.friction_function.valid())
+      throw InputError(spec.where, "a friction function is not supported in static steps yet");
+    const std::vector<SkinFace> main_faces = contact_faces(model, spec.surface2, false);
+    ContactSurface main = contact_surface(mesh, main_faces, [](const SkinFace&) { return 0.0; });
+    double thickness = 0.0, young = 0.0;
+    for (const SkinFace& f : main_faces) {
+      thickness += f.thickness / static_cast<double>(main_faces.size());
+      if (const auto* e = std::get_if<ElasticParams>(&model.material_of_part(f.part)))
+        young = std::max(young, e->young);
+    }
+    // Automatic penalty: 10 E / L, E the stiffest material of surface 2 and L its mean element
+    // size normal to the surface (CalculiX recommends 5 to 50 times the modulus per unit length).
+    s.penalty = spec.penalty ? *spec.penalty : 10.0 * young / thickness;
+    s.stick_slope = spec.tangential_penalty.value_or(s.penalty);
+    if (spec.penalty_curve.valid()) {
+      const FunctionTable* table = &model.functions;
+      const FunctionRef f = spec.penalty_curve;
+      s.normal = CurvePenalty{[table, f](double d) {
+        Variables v;
+        v.t = d;
+        return table->value(f, d, v);
+      }};
+    }
+    if (spec.exponential)
+      s.normal = ExponentialOverclosure{spec.exponential->c0, spec.exponential->p0};
+    s.depth = spec.detection_depth.value_or(0.5 * thickness);
+    s.search_distance = 0.5 * thickness;
+    std::vector<std::int32_t> secondary_nodes;
+    ContactSurface secondary;
+    if (spec.surface1.type == EntityType::NodeSet) {
+      // A node-based surface: its nodes act on their own, with the area of the faces of surface
+      // 2's kind around them in the mesh (exterior faces of the hexes the nodes belong to).
+      secondary_nodes = model.nodes_of(spec.surface1);
+      std::vector<std::uint8_t> in_set(mesh.nodes.size(), 0);
+      for (const std::int32_t n : secondary_nodes) in_set[n] = 1;
+      std::vector<SkinFace> faces;
+      for (const SkinFace& f : exterior_faces(mesh, false)) {
+        int inside = 0;
+        for (const std::int32_t n : f.nodes) inside += in_set[n];
+        if (inside == 4) faces.push_back(f);
+      }
+      secondary = contact_surface(mesh, faces, [](const SkinFace&) { return 0.0; });
+      s.node_to_surface = true;
+    } else {
+      secondary = contact_surface(mesh, contact_faces(model, spec.surface1, false),
+                                  [](const SkinFace&) { return 0.0; });
+    }
+    const Nodes& nodes = mesh.nodes;
+    const ContactInput initial{nodes.x, nodes.y, nodes.z, {}, {}, {}, 0.0, 0.0};
+    return StaticContact(s, std::move(secondary), std::move(main), secondary_nodes, initial);
   }
 
   // The dof of an equation, for messages.
@@ -101,15 +209,18 @@ struct StaticSolver::Impl {
   }
 
   // One attempt at an increment ending at step time tau. Returns the iterations used, or -1.
+  // `base`: the hexes' equations of this step (contact elements are added per iteration).
   int newton(const detail::StepLoads& loads, const detail::DofMap& dofs,
-             const SparseAssembly& assembly, const ElementEquations& ee, double tau,
-             bool nonlinear_geometry, std::vector<double>& state, double& residual_out) {
+             const ElementEquations& base, double tau, bool nonlinear_geometry,
+             std::vector<double>& state, double& residual_out) {
     const std::vector<double> start = state;
     loads.prescribe(tau, state);
     dofs.update_dependent(state);
     const std::size_t n = state.size();
+    const std::size_t nodes = n / 3;
     const auto neq = static_cast<std::size_t>(dofs.equations());
-    std::vector<double> f(n), r(neq), dq(neq), element_values, csr;
+    std::vector<double> f(n), external(n), r(neq), dq(neq), element_values, csr;
+    std::vector<double> x(nodes), y(nodes), z(nodes);
     for (int it = 0; it <= controls.max_iterations; ++it) {
       const auto t0 = Clock::now();
       try {
@@ -119,13 +230,28 @@ struct StaticSolver::Impl {
       }
       std::fill(f.begin(), f.end(), 0.0);
       elements.add_forces(f);
+      std::fill(external.begin(), external.end(), 0.0);
+      loads.add_external_forces(tau, state, nonlinear_geometry, external);
+      // Contact forces, with the contact in the current configuration.
+      const Nodes& reference = model.mesh.nodes;
+      for (std::size_t i = 0; i < nodes; ++i) {
+        x[i] = reference.x[i] + state[3 * i];
+        y[i] = reference.y[i] + state[3 * i + 1];
+        z[i] = reference.z[i] + state[3 * i + 2];
+      }
+      bool symmetric = true;
+      for (StaticContact& c : contacts) {
+        c.evaluate({x, y, z, {}, {}, {}, tau, 0.0});
+        symmetric = symmetric && c.symmetric();
+        for (const StaticContactElement& e : c.elements())
+          for (int a = 0; a < e.count; ++a)
+            for (int k = 0; k < 3; ++k)
+              external[3 * e.nodes[a] + k] += e.weights[a] * e.area * e.traction[k];
+      }
       double force_sum = 0.0;
       std::size_t force_count = 0;
-      for (std::size_t d = 0; d < n; ++d)
-        if (f[d] != 0.0) force_sum += std::abs(f[d]), ++force_count;
-      std::vector<double> external(n, 0.0);
-      loads.add_external_forces(tau, state, nonlinear_geometry, external);
       for (std::size_t d = 0; d < n; ++d) {
+        if (f[d] != 0.0) force_sum += std::abs(f[d]), ++force_count;
         if (external[d] != 0.0) force_sum += std::abs(external[d]), ++force_count;
         f[d] -= external[d];  // residual: internal - external
       }
@@ -151,34 +277,42 @@ struct StaticSolver::Impl {
         return it;
       }
       if (it == controls.max_iterations) break;
-      // Tangent: T^T K_e T of every element, assembled.
+      // Tangent: T^T k T of every hex and contact element, assembled.
+      ElementEquations ee = base;
+      for (const StaticContact& c : contacts)
+        for (const StaticContactElement& e : c.elements())
+          ee.add(std::span<const std::int32_t>(e.nodes.data(), static_cast<std::size_t>(e.count)),
+                 dofs);
+      const SparseAssembly assembly(dofs.equations(), ee.start, ee.eqs);
       element_values.assign(static_cast<std::size_t>(assembly.element_value_count()), 0.0);
-      const auto ne = static_cast<std::int64_t>(elements.count());
+      const auto nh = static_cast<std::int64_t>(elements.count());
 #pragma omp parallel for schedule(static)
-      for (std::int64_t e = 0; e < ne; ++e) {
-        const std::int64_t m = ee.start[e + 1] - ee.start[e];
-        double* out = &element_values[static_cast<std::size_t>(assembly.value_start(e))];
-        const double* k = elements.stiffness(static_cast<std::size_t>(e));
-        for (int i = 0; i < 24; ++i)
-          for (std::int64_t ti = ee.term_start[24 * e + i]; ti < ee.term_start[24 * e + i + 1];
-               ++ti)
-            for (int j = 0; j < 24; ++j)
-              for (std::int64_t tj = ee.term_start[24 * e + j]; tj < ee.term_start[24 * e + j + 1];
-                   ++tj)
-                out[ee.terms[ti].local * m + ee.terms[tj].local] +=
-                    ee.terms[ti].weight * k[24 * i + j] * ee.terms[tj].weight;
-      }
+      for (std::int64_t e = 0; e < nh; ++e)
+        ee.transform_add(static_cast<std::size_t>(e),
+                         elements.stiffness(static_cast<std::size_t>(e)),
+                         &element_values[static_cast<std::size_t>(assembly.value_start(e))]);
+      std::size_t e = elements.count();
+      std::array<double, 576> k{};
+      for (const StaticContact& c : contacts)
+        for (const StaticContactElement& ce : c.elements()) {
+          contact_matrix(ce, k.data());
+          ee.transform_add(e, k.data(),
+                           &element_values[static_cast<std::size_t>(
+                               assembly.value_start(static_cast<std::int64_t>(e)))]);
+          ++e;
+        }
       assembly.assemble(element_values, csr);
       stats.assembly_seconds += seconds_since(t0);
       const auto t1 = Clock::now();
-      if (!factorize(assembly.pattern(), csr, dofs, nonlinear_geometry)) return -1;
+      if (!factorize(assembly.pattern(), csr, dofs, nonlinear_geometry, symmetric)) return -1;
       for (std::size_t i = 0; i < neq; ++i) r[i] = -r[i];
       linear->solve(r, dq);
       stats.solve_seconds += seconds_since(t1);
       if (linear->reciprocal_condition() < kSingularPivotRatio) {
         // Singular to round-off: a free rigid-body motion, which the solution shows as its largest
-        // component. Under NLGEOM it may be a limit point instead: cut back.
-        if (nonlinear_geometry) return -1;
+        // component. Under NLGEOM or with contact it may be a limit point or an open contact that
+        // is about to close: cut back.
+        if (nonlinear_geometry || !contacts.empty()) return -1;
         std::size_t worst = 0;
         for (std::size_t i = 0; i < neq; ++i)
           if (std::abs(dq[i]) > std::abs(dq[worst])) worst = i;
@@ -196,24 +330,29 @@ struct StaticSolver::Impl {
            "only by a contact that is open)";
   }
 
-  // False when the tangent is not positive definite under NLGEOM and LU fails too (cut back).
+  // Cholesky for a symmetric tangent (elements, frictionless or sticking contact), LU once
+  // friction slips or NLGEOM makes the tangent indefinite. False when LU fails too (cut back).
   bool factorize(const SparsePattern& pattern, const std::vector<double>& csr,
-                 const detail::DofMap& dofs, bool nonlinear_geometry) {
-    if (!linear) {
-      linear = make_linear_solver(kind);
-      stats.linear_solver = linear->name();
-    }
+                 const detail::DofMap& dofs, bool nonlinear_geometry, bool symmetric) {
+    const bool use_lu = !symmetric || indefinite;
+    auto& solver = use_lu ? general_solver : symmetric_solver;
+    if (!solver)
+      solver =
+          make_linear_solver(use_lu ? MatrixKind::General : MatrixKind::SymmetricPositiveDefinite);
+    linear = solver.get();
+    if (stats.linear_solver.find(linear->name()) == std::string::npos)
+      stats.linear_solver +=
+          (stats.linear_solver.empty() ? "" : ", ") + std::string(linear->name());
     try {
       linear->factorize(pattern, csr);
     } catch (const SingularMatrixError& e) {
-      if (!nonlinear_geometry) throw InputError(singular_message(dofs, e.equation()));
-      if (kind == MatrixKind::General) return false;
+      if (!nonlinear_geometry && contacts.empty())
+        throw InputError(singular_message(dofs, e.equation()));
+      if (use_lu) return false;
       // Geometric stiffness under compression can make the tangent indefinite but regular:
       // go on with LU.
-      kind = MatrixKind::General;
-      linear = make_linear_solver(kind);
-      stats.linear_solver = linear->name();
-      return factorize(pattern, csr, dofs, nonlinear_geometry);
+      indefinite = true;
+      return factorize(pattern, csr, dofs, nonlinear_geometry, symmetric);
     }
     return true;
   }
@@ -227,8 +366,8 @@ struct StaticSolver::Impl {
       nonlinear_geometry = nonlinear_geometry || step.nonlinear_geometry;
       const detail::StepLoads loads(model, step, u, history, total);
       const detail::DofMap dofs(model.mesh.nodes.size(), loads.prescribed(), model.equations);
-      const ElementEquations ee = element_equations(elements, dofs);
-      const SparseAssembly assembly(dofs.equations(), ee.start, ee.eqs);
+      ElementEquations base;
+      for (std::size_t e = 0; e < elements.count(); ++e) base.add(elements.nodes(e), dofs);
       stats.equations = std::max<std::int64_t>(stats.equations, dofs.equations());
       const double period = step.period;
       const double min_increment = step.min_increment > 0.0 ? step.min_increment : 1e-5 * period;
@@ -247,9 +386,10 @@ struct StaticSolver::Impl {
           std::vector<double> trial = u;
           double residual = 0.0;
           const int iterations =
-              newton(loads, dofs, assembly, ee, tau + dtau, nonlinear_geometry, trial, residual);
+              newton(loads, dofs, base, tau + dtau, nonlinear_geometry, trial, residual);
           if (iterations >= 0) {
             u = std::move(trial);
+            for (StaticContact& c : contacts) c.commit();
             tau += dtau;
             ++stats.increments;
             StaticIncrement report;
@@ -299,5 +439,6 @@ std::span<const double> StaticSolver::stress() const { return impl_->elements.st
 std::span<const double> StaticSolver::strain() const { return impl_->elements.strain(); }
 std::span<const double> StaticSolver::element_energy() const { return impl_->elements.energy(); }
 const StaticStatistics& StaticSolver::statistics() const { return impl_->stats; }
+std::span<const StaticContact> StaticSolver::contacts() const { return impl_->contacts; }
 
 }  // namespace abut
