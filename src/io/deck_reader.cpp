@@ -364,6 +364,7 @@ int parse_direction(const Row& r, std::size_t i, bool rotations) {
 }  // namespace deck
 
 DeckResult read_deck_with_notes(const std::string& path) {
+  if (deck::upper(fs::path(path).extension().string()) == ".INP") return read_inp_with_notes(path);
   deck::DeckReader reader;
   reader.model.deck_path = path;
   deck::IncludeFrame frame;

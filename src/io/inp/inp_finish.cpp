@@ -1,0 +1,282 @@
+// The end of reading, part 1: elements with their nodes and sections into hexes and parts,
+// materials, node and element sets, surfaces into face sets and node sets. Then Reader::finish,
+// which runs the parts in order (contacts and steps: inp_finish_steps.cpp).
+#include <algorithm>
+#include <map>
+
+#include "abut/mesh/skin.hpp"
+#include "abut/solver/contact_surfaces.hpp"
+#include "inp_reader.hpp"
+
+namespace abut::inp {
+namespace {
+
+void sort_unique(std::vector<std::int32_t>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+// "A, B, C" (the first 10 names) or "none", for messages that say what exists.
+std::string names_of(const std::vector<IdSet>& sets) {
+  std::string s;
+  for (std::size_t i = 0; i < sets.size() && i < 10; ++i) s += (i ? ", " : "") + sets[i].name;
+  if (sets.size() > 10) s += ", ...";
+  return s.empty() ? "none" : s;
+}
+
+const IdSet& find_set(const Reader& r, const std::vector<IdSet>& sets,
+                      const std::unordered_map<std::string, std::size_t>& names,
+                      const std::string& name, Loc at, const std::string& keyword,
+                      const std::string& kind) {
+  const auto it = names.find(upper_name(name));
+  if (it == names.end()) {
+    throw InputError(r.where(at, keyword), kind + " set " + name + " is not defined (defined " +
+                                               kind + " sets: " + names_of(sets) + ")");
+  }
+  return sets[it->second];
+}
+
+// Node ids of every node set, element ids of every element set -> indices.
+void resolve_sets(Reader& r) {
+  for (IdSet& s : r.node_sets) {
+    s.members.reserve(s.ids.size());
+    for (std::size_t k = 0; k < s.ids.size(); ++k) {
+      const auto it = r.node_index.find(s.ids[k]);
+      if (it == r.node_index.end()) {
+        throw InputError(r.where(s.where[k], "*NSET"), "node " + std::to_string(s.ids[k]) +
+                                                           " of node set " + s.name +
+                                                           " is not defined (no *NODE line)");
+      }
+      s.members.push_back(it->second);
+    }
+    sort_unique(s.members);
+    s.model_id = static_cast<std::int64_t>(r.model.node_sets.size()) + 1;
+    r.model.node_sets.push_back({s.model_id, s.members});
+  }
+  for (IdSet& s : r.element_sets) {
+    s.members.reserve(s.ids.size());
+    for (std::size_t k = 0; k < s.ids.size(); ++k) {
+      const auto it = r.element_index.find(s.ids[k]);
+      if (it == r.element_index.end()) {
+        throw InputError(r.where(s.where[k], "*ELSET"), "element " + std::to_string(s.ids[k]) +
+                                                            " of element set " + s.name +
+                                                            " is not defined (no *ELEMENT line)");
+      }
+      s.members.push_back(static_cast<std::int32_t>(it->second));
+    }
+    sort_unique(s.members);
+  }
+}
+
+// Materials in deck order (id = position + 1); a material without *ELASTIC is left out, and an
+// error if a section uses it (checked with the sections).
+void make_materials(Reader& r) {
+  for (std::size_t m = 0; m < r.materials.size(); ++m) {
+    const MaterialRecord& rec = r.materials[m];
+    if (!rec.elastic) continue;
+    Material mat;
+    mat.id = static_cast<std::int64_t>(m) + 1;
+    mat.params = ElasticParams{rec.density, rec.young, rec.poisson};
+    mat.where = r.where(rec.defined, "*MATERIAL", "NAME");
+    r.model.materials.push_back(mat);
+  }
+}
+
+// Sections -> parts (one per section and element type), and the part of every element.
+std::vector<std::int64_t> assign_parts(Reader& r) {
+  const std::size_t n = r.elements.size();
+  std::vector<std::int32_t> section_of(n, -1);
+  std::vector<std::int64_t> part_of(n, 0);
+  for (std::size_t s = 0; s < r.sections.size(); ++s) {
+    const SectionRecord& sec = r.sections[s];
+    const auto material = r.material_names.find(upper_name(sec.material));
+    if (material == r.material_names.end()) {
+      throw InputError(
+          r.where(sec.where, "*SOLID SECTION", "MATERIAL"),
+          "material " + sec.material + " is not defined (no *MATERIAL, NAME=" + sec.material + ")");
+    }
+    const MaterialRecord& mat = r.materials[material->second];
+    if (!mat.elastic) {
+      throw InputError(r.where(mat.defined, "*MATERIAL"),
+                       "material " + mat.name +
+                           " has no *ELASTIC card: abut needs Young's modulus and Poisson's "
+                           "ratio (its materials are linear elastic)");
+    }
+    const IdSet& set = find_set(r, r.element_sets, r.element_set_names, sec.elset, sec.where,
+                                "*SOLID SECTION", "element");
+    std::int64_t part_ids[2] = {0, 0};  // C3D8, C3D8R
+    for (const std::int32_t e : set.members) {
+      const ElementRecord& el = r.elements[static_cast<std::size_t>(e)];
+      std::int32_t& assigned = section_of[static_cast<std::size_t>(e)];
+      if (assigned >= 0) {
+        throw InputError(r.where(sec.where, "*SOLID SECTION", "ELSET"),
+                         "element " + std::to_string(el.id) + " already has the section of " +
+                             r.at(r.sections[static_cast<std::size_t>(assigned)].where) +
+                             ": every element takes exactly one *SOLID SECTION");
+      }
+      assigned = static_cast<std::int32_t>(s);
+      std::int64_t& part = part_ids[el.reduced ? 1 : 0];
+      if (part == 0) {
+        Part p;
+        p.id = static_cast<std::int64_t>(r.model.parts.size()) + 1;
+        p.title = set.name;
+        p.material_id = static_cast<std::int64_t>(material->second) + 1;
+        p.solid_integration =
+            el.reduced ? Part::SolidIntegration::OnePoint : Part::SolidIntegration::Full;
+        p.where = r.where(sec.where, "*SOLID SECTION");
+        r.model.parts.push_back(p);
+        part = p.id;
+      }
+      part_of[static_cast<std::size_t>(e)] = part;
+    }
+    // A section over both element types: say which part is which.
+    if (part_ids[0] != 0 && part_ids[1] != 0) {
+      for (Part& p : r.model.parts) {
+        if (p.id == part_ids[0]) p.title += " (C3D8)";
+        if (p.id == part_ids[1]) p.title += " (C3D8R)";
+      }
+    }
+  }
+  for (std::size_t e = 0; e < n; ++e) {
+    if (section_of[e] < 0) {
+      throw InputError(r.where(r.elements[e].where, "*ELEMENT"),
+                       "element " + std::to_string(r.elements[e].id) +
+                           " has no *SOLID SECTION: put it in an element set that has one");
+    }
+  }
+  return part_of;
+}
+
+void make_hexes(Reader& r, const std::vector<std::int64_t>& part_of) {
+  Mesh& mesh = r.model.mesh;
+  mesh.hexes.reserve(r.elements.size());
+  for (std::size_t e = 0; e < r.elements.size(); ++e) {
+    const ElementRecord& el = r.elements[e];
+    Hex8 hex;
+    for (std::size_t k = 0; k < 8; ++k) {
+      const auto it = r.node_index.find(el.nodes[k]);
+      if (it == r.node_index.end()) {
+        throw InputError(r.where(el.where, "*ELEMENT", "n" + std::to_string(k + 1)),
+                         "node " + std::to_string(el.nodes[k]) + " of element " +
+                             std::to_string(el.id) + " is not defined (no *NODE line)");
+      }
+      hex[k] = it->second;
+    }
+    const double volume = hex_volume(mesh.nodes, hex);
+    if (!(volume > 0.0)) {
+      throw InputError(r.where(el.where, "*ELEMENT"),
+                       "element " + std::to_string(el.id) + " has a non-positive volume (" +
+                           std::to_string(volume) +
+                           "): its nodes must follow the C3D8 order (nodes 1-4 counter-clockwise "
+                           "seen from nodes 5-8, which lie above them)");
+    }
+    mesh.add_hex(el.id, part_of[e], hex);
+  }
+}
+
+void make_surfaces(Reader& r) {
+  for (SurfaceRecord& s : r.surfaces) {
+    const SourceLocation where = r.where(s.defined, "*SURFACE", "NAME");
+    if (s.node_based) {
+      std::vector<std::int32_t> nodes;
+      for (const Item& item : s.items) {
+        const std::vector<std::int32_t> more = nodes_of(r, item, "*SURFACE");
+        nodes.insert(nodes.end(), more.begin(), more.end());
+      }
+      sort_unique(nodes);
+      if (nodes.empty()) throw InputError(where, "surface " + s.name + " has no nodes");
+      const auto id = static_cast<std::int64_t>(r.model.node_sets.size()) + 1;
+      r.model.node_sets.push_back({id, std::move(nodes)});
+      s.entity = EntityRef{EntityType::NodeSet, id, where};
+      continue;
+    }
+    FaceSet set;
+    set.id = static_cast<std::int64_t>(r.model.face_sets.size()) + 1;
+    set.name = s.name;
+    set.where = where;
+    std::map<std::pair<std::int32_t, std::int8_t>, bool> seen;
+    for (std::size_t k = 0; k < s.items.size(); ++k) {
+      for (const std::int32_t hex : hexes_of(r, s.items[k], "*SURFACE")) {
+        if (seen.emplace(std::make_pair(hex, s.faces[k]), true).second)
+          set.faces.push_back({hex, s.faces[k]});
+      }
+    }
+    if (set.faces.empty()) throw InputError(where, "surface " + s.name + " has no faces");
+    s.entity = EntityRef{EntityType::FaceSet, set.id, where};
+    r.model.face_sets.push_back(std::move(set));
+  }
+}
+
+}  // namespace
+
+std::vector<std::int32_t> node_set_members(const Reader& r, const std::string& name, Loc at,
+                                           const std::string& keyword) {
+  return find_set(r, r.node_sets, r.node_set_names, name, at, keyword, "node").members;
+}
+
+std::vector<std::int32_t> element_set_members(const Reader& r, const std::string& name, Loc at,
+                                              const std::string& keyword) {
+  return find_set(r, r.element_sets, r.element_set_names, name, at, keyword, "element").members;
+}
+
+std::vector<std::int32_t> nodes_of(const Reader& r, const Item& item, const std::string& keyword) {
+  if (!item.name.empty()) return node_set_members(r, item.name, item.where, keyword);
+  const auto it = r.node_index.find(item.id);
+  if (it == r.node_index.end()) {
+    throw InputError(r.where(item.where, keyword),
+                     "node " + std::to_string(item.id) + " is not defined (no *NODE line)");
+  }
+  return {it->second};
+}
+
+std::vector<std::int32_t> hexes_of(const Reader& r, const Item& item, const std::string& keyword) {
+  if (!item.name.empty()) return element_set_members(r, item.name, item.where, keyword);
+  const auto it = r.element_index.find(item.id);
+  if (it == r.element_index.end()) {
+    throw InputError(r.where(item.where, keyword),
+                     "element " + std::to_string(item.id) + " is not defined (no *ELEMENT line)");
+  }
+  return {static_cast<std::int32_t>(it->second)};
+}
+
+void finish_mesh(Reader& r) {
+  if (r.elements.empty()) {
+    throw InputError(r.where(Loc{}, ""),
+                     "the input has no *ELEMENT: abut needs C3D8 or C3D8R hexahedra");
+  }
+  resolve_sets(r);
+  make_materials(r);
+  make_hexes(r, assign_parts(r));
+  make_surfaces(r);
+}
+
+DeckResult Reader::finish() {
+  if (change_friction) {
+    throw InputError(where(step().changes.back().where, "*CHANGE FRICTION"),
+                     "*CHANGE FRICTION must be followed by a *FRICTION card with the new values");
+  }
+  if (in_step) {
+    throw InputError(where(step().where, "*STEP"),
+                     "the step has no *END STEP: close it at the end of its cards");
+  }
+  if (steps.empty()) {
+    throw InputError(where(Loc{}, ""),
+                     "the input has no *STEP: abut runs static steps (*STEP, *STATIC, loads, "
+                     "*END STEP)");
+  }
+  for (std::size_t i = 0; i < title_lines.size(); ++i)
+    model.title += (i ? " " : "") + title_lines[i];
+  finish_mesh(*this);
+  finish_contacts(*this);
+  finish_steps(*this);
+  model.functions.resolve();
+  // CalculiX ADJUST: slave nodes onto the master surface, in the reference configuration.
+  for (std::string& n : adjust_contact_nodes(model)) notes.push_back(std::move(n));
+  const std::size_t n = model.mesh.nodes.size();
+  for (std::vector<double>* v :
+       {&model.vx0, &model.vy0, &model.vz0, &model.wx0, &model.wy0, &model.wz0})
+    v->assign(n, 0.0);
+  return {std::move(model), std::move(notes)};
+}
+
+}  // namespace abut::inp
