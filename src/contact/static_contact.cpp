@@ -293,6 +293,8 @@ void StaticContact::evaluate(const ContactInput& in) {
     }
     h.in_contact = true;
     h.traction = traction;
+    h.total_slip = (c.in_contact ? c.total_slip : Vec3{}) + tangential(motion, normal);
+    out.total_slip = h.total_slip;
     out.active = true;
     out.slipping = slipping[p] != 0;
     out.pressure = pressure;

@@ -282,6 +282,7 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
 }  // namespace
 
 RunReport run_simulation(const Model& model, const RunOptions& options, std::ostream& log) {
+  if (!model.static_steps.empty()) return run_static_analysis(model, options, log);
   if (options.threads > 0) omp_set_num_threads(options.threads);
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   fs::create_directories(options.output_dir);

@@ -73,6 +73,7 @@ struct StaticContactPoint {
   double pressure = 0.0;  // normal traction, positive in compression
   Vec3 traction;          // tangential traction on the point
   Vec3 slip;              // tangential relative motion since the last converged state
+  Vec3 total_slip;        // tangential relative motion accumulated while in contact
   double energy = 0.0;    // elastic energy of its springs (normal and stick) [energy]
 };
 
@@ -91,7 +92,9 @@ class StaticContact {
 
   std::span<const StaticContactElement> elements() const { return elements_; }
   std::span<const StaticContactPoint> points() const { return points_; }
-  bool symmetric() const { return symmetric_; }            // false when a point slips with friction
+  bool symmetric() const { return symmetric_; }  // false when a point slips with friction
+  const ContactSurface& secondary() const { return secondary_; }
+  bool node_to_surface() const { return settings_.node_to_surface; }
   Vec3 total_force() const;                                // on the secondary surface
   double energy() const;                                   // sum over the points
   double friction_work() const { return friction_work_; }  // dissipated so far (committed)
@@ -103,6 +106,7 @@ class StaticContact {
     double xi = 0.0, eta = 0.0;
     Vec3 traction;  // committed tangential traction
     Vec3 offset;    // tied: relative position x_point - x_partner when the pair formed
+    Vec3 total_slip;
     double slip_work = 0.0;
   };
   void find_partners(const ContactInput& in);

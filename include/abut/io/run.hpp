@@ -30,6 +30,13 @@ struct RunReport {
 
 // Throws InputError for models the solver cannot run; an instability is reported, not thrown,
 // after the last good state has been written.
+// A model with static steps (Model::static_steps) runs run_static_analysis instead.
 RunReport run_simulation(const Model& model, const RunOptions& options, std::ostream& log);
+
+// The static steps of a model (src/io/run_static.cpp): a ParaView state per converged increment,
+// increments.csv, results.dat (the *NODE/*EL/*CONTACT PRINT requests in CalculiX's .dat layout)
+// and summary.json. report.cycles counts the increments; a step that does not converge is
+// reported (stable = false) after the last converged state was written.
+RunReport run_static_analysis(const Model& model, const RunOptions& options, std::ostream& log);
 
 }  // namespace abut

@@ -77,6 +77,9 @@ class StaticSolver {
   // CalculiX point order), and its strain energy.
   std::span<const double> displacement() const;
   std::span<const double> reaction() const;
+  // The force of the elements on each node less the contact forces, i.e. the applied loads plus
+  // the reactions: what CalculiX prints as RF (3 per node).
+  std::span<const double> nodal_force() const;
   std::span<const double> stress() const;
   std::span<const double> strain() const;
   std::span<const double> element_energy() const;

@@ -101,7 +101,7 @@ struct StaticSolver::Impl {
   const Model& model;
   StaticControls controls;
   detail::StaticElements elements;
-  std::vector<double> u, reaction;
+  std::vector<double> u, reaction, nodal_force;
   StaticStatistics stats;
   std::vector<StaticContact> contacts;
   std::unique_ptr<LinearSolver> symmetric_solver, general_solver;
@@ -116,6 +116,7 @@ struct StaticSolver::Impl {
     if (m.static_steps.empty()) throw InputError("the model has no static step");
     u.assign(3 * m.mesh.nodes.size(), 0.0);
     reaction.assign(u.size(), 0.0);
+    nodal_force.assign(u.size(), 0.0);
     for (const ContactSpec& spec : m.contacts) contacts.push_back(make_contact(spec));
   }
 
@@ -219,7 +220,7 @@ struct StaticSolver::Impl {
     const std::size_t n = state.size();
     const std::size_t nodes = n / 3;
     const auto neq = static_cast<std::size_t>(dofs.equations());
-    std::vector<double> f(n), external(n), r(neq), dq(neq), element_values, csr;
+    std::vector<double> f(n), external(n), applied(n), r(neq), dq(neq), element_values, csr;
     std::vector<double> x(nodes), y(nodes), z(nodes);
     for (int it = 0; it <= controls.max_iterations; ++it) {
       const auto t0 = Clock::now();
@@ -232,6 +233,7 @@ struct StaticSolver::Impl {
       elements.add_forces(f);
       std::fill(external.begin(), external.end(), 0.0);
       loads.add_external_forces(tau, state, nonlinear_geometry, external);
+      applied = external;
       // Contact forces, with the contact in the current configuration.
       const Nodes& reference = model.mesh.nodes;
       for (std::size_t i = 0; i < nodes; ++i) {
@@ -272,7 +274,10 @@ struct StaticSolver::Impl {
       const bool converged = tiny || (it > 0 && rmax <= controls.force_tolerance * q &&
                                       cmax <= controls.displacement_tolerance * dumax);
       if (converged) {
-        for (std::size_t d = 0; d < n; ++d) reaction[d] = loads.prescribed()[d] ? f[d] : 0.0;
+        for (std::size_t d = 0; d < n; ++d) {
+          reaction[d] = loads.prescribed()[d] ? f[d] : 0.0;
+          nodal_force[d] = f[d] + applied[d];  // elements less contact: loads plus reactions
+        }
         stats.assembly_seconds += seconds_since(t0);
         return it;
       }
@@ -435,6 +440,7 @@ void StaticSolver::run(const std::function<void(const StaticIncrement&)>& on_inc
 
 std::span<const double> StaticSolver::displacement() const { return impl_->u; }
 std::span<const double> StaticSolver::reaction() const { return impl_->reaction; }
+std::span<const double> StaticSolver::nodal_force() const { return impl_->nodal_force; }
 std::span<const double> StaticSolver::stress() const { return impl_->elements.stress(); }
 std::span<const double> StaticSolver::strain() const { return impl_->elements.strain(); }
 std::span<const double> StaticSolver::element_energy() const { return impl_->elements.energy(); }

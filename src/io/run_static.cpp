@@ -1,0 +1,145 @@
+// Runs the static steps of a model and writes what a user opens afterwards:
+//   results.pvd + states/state_NNNN.vtu   one state per converged increment
+//   increments.csv                        step, increment, attempts, iterations, times, residual
+//   results.dat                           the *NODE/*EL/*CONTACT PRINT blocks (CalculiX layout)
+//   summary.json                          equations, increments, iterations, solve times
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <ostream>
+
+#include "abut/io/csv_history.hpp"
+#include "abut/io/json_writer.hpp"
+#include "abut/io/run.hpp"
+#include "abut/io/vtu_writer.hpp"
+#include "abut/solver/static_solver.hpp"
+#include "io/static_print.hpp"
+
+namespace abut {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// One ParaView state: displacement and nodal force (loads and reactions) at the nodes; per hex
+// the mean over its Gauss points of the stress tensor and of the von Mises stress, and its strain
+// energy.
+void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
+                 const StaticSolver& solver, double time) {
+  const Mesh& mesh = model.mesh;
+  const std::size_t n = mesh.nodes.size(), nh = mesh.hex_count();
+  std::vector<double> x(n), y(n), z(n), part(nh), stress(6 * nh, 0.0), mises(nh, 0.0);
+  const auto u = solver.displacement();
+  for (std::size_t i = 0; i < n; ++i) {
+    x[i] = mesh.nodes.x[i] + u[3 * i];
+    y[i] = mesh.nodes.y[i] + u[3 * i + 1];
+    z[i] = mesh.nodes.z[i] + u[3 * i + 2];
+  }
+  const auto s = solver.stress();
+  for (std::size_t h = 0; h < nh; ++h) {
+    part[h] = static_cast<double>(mesh.hex_part[h]);
+    for (int p = 0; p < 8; ++p) {
+      const double* v = &s[48 * h + 6 * p];
+      for (int k = 0; k < 6; ++k) stress[6 * h + k] += v[k] / 8.0;
+      const double dxy = v[0] - v[1], dyz = v[1] - v[2], dzx = v[2] - v[0];
+      mises[h] += std::sqrt(0.5 * (dxy * dxy + dyz * dyz + dzx * dzx) +
+                            3.0 * (v[3] * v[3] + v[4] * v[4] + v[5] * v[5])) /
+                  8.0;
+    }
+  }
+  std::vector<double> energy(solver.element_energy().begin(), solver.element_energy().end());
+  const std::vector<FieldView> points{{"displacement", 3, u}, {"force", 3, solver.nodal_force()}};
+  const std::vector<FieldView> cells{{"part_id", 1, part},
+                                     {"stress", 6, stress},
+                                     {"von_mises_stress", 1, mises},
+                                     {"strain_energy", 1, energy}};
+  const std::string name = fmt::format("states/state_{:04d}.vtu", series.size());
+  write_vtu(dir / name, {x, y, z, mesh.hexes, mesh.shells}, points, cells);
+  series.add(time, name);
+}
+
+}  // namespace
+
+RunReport run_static_analysis(const Model& model, const RunOptions& options, std::ostream& log) {
+  if (options.threads > 0) omp_set_num_threads(options.threads);
+  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+  const fs::path& dir = options.output_dir;
+  fs::create_directories(dir / "states");
+  StaticSolver solver(model);
+  log << fmt::format("abut: {} nodes, {} hexahedra, {} parts, {} contacts; {} static steps\n",
+                     model.mesh.nodes.size(), model.mesh.hex_count(), model.parts.size(),
+                     model.contacts.size(), model.static_steps.size());
+  log << "abut: writing results to " << dir.string() << "\n";
+  PvdSeries series(dir / "results.pvd");
+  write_state(dir, series, model, solver, 0.0);
+  CsvHistory increments(dir / "increments.csv",
+                        {"step", "increment", "attempts", "iterations", "step_time", "residual"});
+  std::ofstream printed(dir / "results.dat");
+  RunReport report;
+  const auto start = std::chrono::steady_clock::now();
+  double last_time = 0.0;
+  try {
+    solver.run([&](const StaticIncrement& inc) {
+      increments.write_row(
+          inc.total_time,
+          {static_cast<std::int64_t>(inc.step + 1), static_cast<std::int64_t>(inc.increment),
+           static_cast<std::int64_t>(inc.attempts), static_cast<std::int64_t>(inc.iterations),
+           inc.step_time, inc.residual});
+      write_state(dir, series, model, solver, inc.total_time);
+      print_static_results(printed, model, model.static_steps[inc.step], solver, inc);
+      printed.flush();
+      last_time = inc.total_time;
+      if (options.progress)
+        log << fmt::format(
+            "abut: step {} increment {} (t = {:.6g}): {} iterations{}\n", inc.step + 1,
+            inc.increment, inc.total_time, inc.iterations,
+            inc.attempts > 1 ? fmt::format(", {} cut-backs", inc.attempts - 1) : std::string());
+    });
+  } catch (const InstabilityError& e) {
+    report.stable = false;
+    report.message = e.what();
+  }
+  report.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.end_time = last_time;
+  report.pvd = series.path();
+  const StaticStatistics& st = solver.statistics();
+  report.cycles = st.increments;
+  JsonWriter json;
+  json.begin_object();
+  json.member("deck", model.deck_path);
+  json.member("procedure", "static");
+  json.member("status", report.stable ? "completed" : "did not converge");
+  if (!report.stable) json.member("message", report.message);
+  json.member("end_time", report.end_time).member("wall_seconds", report.wall_seconds);
+  json.member("threads", threads);
+  json.member("nodes", static_cast<std::int64_t>(model.mesh.nodes.size()));
+  json.member("elements", static_cast<std::int64_t>(model.mesh.hex_count()));
+  json.member("equations", st.equations).member("increments", st.increments);
+  json.member("iterations", st.iterations).member("cutbacks", st.cutbacks);
+  json.member("assembly_seconds", st.assembly_seconds).member("solve_seconds", st.solve_seconds);
+  json.member("linear_solver", st.linear_solver);
+  json.end_object();
+  json.write_file(dir / "summary.json");
+  if (report.stable) {
+    log << fmt::format(
+        "abut: completed {} steps in {} increments, {} iterations ({:.2f} per increment), "
+        "{:.2f} s ({:.2f} s solving {} equations with {})\n",
+        model.static_steps.size(), st.increments, st.iterations,
+        st.increments > 0 ? static_cast<double>(st.iterations) / static_cast<double>(st.increments)
+                          : 0.0,
+        report.wall_seconds, st.solve_seconds, st.equations, st.linear_solver);
+  } else {
+    log << "abut: the static analysis stopped: " << report.message << "\n"
+        << fmt::format("abut: the last converged state (t = {:.6g}) is in the ParaView series\n",
+                       last_time);
+  }
+  log << "abut: ParaView series: " << report.pvd.string() << " (" << series.size()
+      << " states); printed results: " << (dir / "results.dat").string() << "\n";
+  return report;
+}
+
+}  // namespace abut

@@ -1,0 +1,191 @@
+#include "io/static_print.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace abut {
+
+namespace {
+
+// CalculiX writes the time as a Fortran E14.7 (0.1000000E+01); any float format parses the same.
+std::string time_text(double t) { return fmt::format("{:14.7E}", t); }
+
+std::string set_text(const PrintRequest& r) {
+  std::string s = r.set_name;
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::toupper(c); });
+  return s;
+}
+
+bool wants(const PrintRequest& r, const char* quantity) {
+  return std::find(r.quantities.begin(), r.quantities.end(), quantity) != r.quantities.end();
+}
+
+std::vector<std::int32_t> members_or_all(const PrintRequest& r, std::size_t all) {
+  if (!r.members.empty()) return r.members;
+  std::vector<std::int32_t> out(all);
+  for (std::size_t i = 0; i < all; ++i) out[i] = static_cast<std::int32_t>(i);
+  return out;
+}
+
+// A contact point's tangent basis, as CalculiX prints tangential values: tang1 along the
+// projection of the global x axis (y if the normal is along x), tang2 = n x tang1.
+void tangent_basis(const Vec3& n, Vec3& t1, Vec3& t2) {
+  const Vec3 axis = std::abs(n.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+  t1 = normalized(axis - n * dot(axis, n));
+  t2 = cross(n, t1);
+}
+
+// The hex and its face (S number) of a secondary facet, for surface-to-surface rows.
+void element_face(const Model& model, const ContactSurface& s, std::int32_t facet,
+                  std::int64_t& element, int& face) {
+  const std::int32_t hex = s.element[static_cast<std::size_t>(facet)];
+  element = hex >= 0 ? model.mesh.hex_id[static_cast<std::size_t>(hex)] : 0;
+  face = 0;
+  if (hex < 0) return;
+  const Hex8& h = model.mesh.hexes[static_cast<std::size_t>(hex)];
+  for (int f = 0; f < 6 && face == 0; ++f) {
+    int shared = 0;
+    for (const int a : kHexFaces[f])
+      for (const std::int32_t n : s.facets[static_cast<std::size_t>(facet)]) shared += h[a] == n;
+    if (shared >= 4) face = f + 1;
+  }
+}
+
+void print_nodes(std::ostream& out, const Model& model, const PrintRequest& r,
+                 const StaticSolver& solver, double t) {
+  const std::vector<std::int32_t> nodes = members_or_all(r, model.mesh.nodes.size());
+  auto block = [&](const char* title, std::span<const double> v) {
+    out << fmt::format("\n {} for set {} and time {}\n\n", title, set_text(r), time_text(t));
+    for (const std::int32_t n : nodes)
+      out << fmt::format("{:10d}{:14.6E}{:14.6E}{:14.6E}\n", model.mesh.nodes.id[n], v[3 * n],
+                         v[3 * n + 1], v[3 * n + 2]);
+  };
+  if (wants(r, "U")) block("displacements (vx,vy,vz)", solver.displacement());
+  if (wants(r, "RF")) block("forces (fx,fy,fz)", solver.nodal_force());
+}
+
+void print_elements(std::ostream& out, const Model& model, const PrintRequest& r,
+                    const StaticSolver& solver, double t) {
+  const std::vector<std::int32_t> hexes = members_or_all(r, model.mesh.hex_count());
+  // Our Voigt order xx yy zz xy yz zx; CalculiX prints xx yy zz xy xz yz.
+  static constexpr int kOrder[6] = {0, 1, 2, 3, 5, 4};
+  auto tensor_block = [&](const char* title, std::span<const double> v, double shear) {
+    out << fmt::format("\n {} for set {} and time {}\n\n", title, set_text(r), time_text(t));
+    for (const std::int32_t h : hexes)
+      for (int p = 0; p < 8; ++p) {
+        out << fmt::format("{:10d}{:4d}", model.mesh.hex_id[h], p + 1);
+        for (int k = 0; k < 6; ++k)
+          out << fmt::format("{:14.6E}", v[48 * h + 6 * p + kOrder[k]] * (k >= 3 ? shear : 1.0));
+        out << "\n";
+      }
+  };
+  if (wants(r, "S") && !r.totals_only)
+    tensor_block("stresses (elem, integ.pnt.,sxx,syy,szz,sxy,sxz,syz)", solver.stress(), 1.0);
+  if (wants(r, "E") && !r.totals_only)  // tensor shears, as CalculiX prints them
+    tensor_block("strains (elem, integ.pnt.,exx,eyy,ezz,exy,exz,eyz)", solver.strain(), 0.5);
+  if (wants(r, "ELSE")) {
+    double total = 0.0;
+    for (const std::int32_t h : hexes) total += solver.element_energy()[h];
+    if (!r.totals_only) {
+      out << fmt::format("\n internal energy (element, energy) for set {} and time {}\n\n",
+                         set_text(r), time_text(t));
+      for (const std::int32_t h : hexes)
+        out << fmt::format("{:10d}{:14.6E}\n", model.mesh.hex_id[h], solver.element_energy()[h]);
+    }
+    if (r.totals || r.totals_only)
+      out << fmt::format("\n total internal energy for set {} and time {}\n\n{:20.6E}\n",
+                         set_text(r), time_text(t), total);
+  }
+}
+
+void print_contact(std::ostream& out, const Model& model, const PrintRequest& r,
+                   const StaticSolver& solver, double t) {
+  std::vector<std::uint8_t> in_set;
+  if (!r.members.empty()) {
+    in_set.assign(model.mesh.nodes.size(), 0);
+    for (const std::int32_t n : r.members) in_set[n] = 1;
+  }
+  double total_energy = 0.0;
+  for (const StaticContact& c : solver.contacts()) {
+    const char* who = c.node_to_surface() ? "slave node" : "slave element+face";
+    auto row_start = [&](const StaticContactPoint& p) {
+      if (p.node >= 0) return fmt::format("{:10d}", model.mesh.nodes.id[p.node]);
+      std::int64_t element = 0;
+      int face = 0;
+      element_face(model, c.secondary(), p.facet, element, face);
+      return fmt::format("{:10d}{:11d}", element, face);
+    };
+    auto selected = [&](const StaticContactPoint& p) {
+      return p.active && (in_set.empty() || (p.node >= 0 && in_set[p.node]));
+    };
+    for (const StaticContactPoint& p : c.points())
+      if (selected(p)) total_energy += p.energy;
+    if (r.totals_only) continue;
+    if (wants(r, "CSTR")) {
+      out << fmt::format(
+          "\n contact stress ({},press,tang1,tang2) for all contact elements and "
+          "time {}\n\n",
+          who, time_text(t));
+      for (const StaticContactPoint& p : c.points()) {
+        if (!selected(p)) continue;
+        Vec3 t1, t2;
+        tangent_basis(p.normal, t1, t2);
+        out << row_start(p)
+            << fmt::format("{:14.6E}{:14.6E}{:14.6E}\n", p.pressure, dot(p.traction, t1),
+                           dot(p.traction, t2));
+      }
+    }
+    if (wants(r, "CDIS")) {
+      out << fmt::format(
+          "\n relative contact displacement ({},normal,tang1,tang2) for all "
+          "contact elements and time {}\n\n",
+          who, time_text(t));
+      for (const StaticContactPoint& p : c.points()) {
+        if (!selected(p)) continue;
+        Vec3 t1, t2;
+        tangent_basis(p.normal, t1, t2);
+        out << row_start(p)
+            << fmt::format("{:14.6E}{:14.6E}{:14.6E}\n", p.gap, dot(p.total_slip, t1),
+                           dot(p.total_slip, t2));
+      }
+    }
+    if (wants(r, "CELS")) {
+      out << fmt::format(
+          "\n contact print energy ({},energy)for all contact elements and time "
+          "{}\n",
+          who, time_text(t));
+      for (const StaticContactPoint& p : c.points())
+        if (selected(p)) out << row_start(p) << fmt::format("{:14.6E}\n", p.energy);
+    }
+  }
+  if (wants(r, "CELS") && (r.totals || r.totals_only))
+    out << fmt::format("\n total contact spring energy for time {}\n\n{:20.6E}\n", time_text(t),
+                       total_energy);
+}
+
+}  // namespace
+
+void print_static_results(std::ostream& out, const Model& model, const StaticStep& step,
+                          const StaticSolver& solver, const StaticIncrement& increment) {
+  for (const PrintRequest& r : step.prints) {
+    const bool due =
+        increment.step_end || (r.frequency > 0 && increment.increment % r.frequency == 0);
+    if (!due) continue;
+    switch (r.kind) {
+      case PrintRequest::Kind::Node:
+        print_nodes(out, model, r, solver, increment.total_time);
+        break;
+      case PrintRequest::Kind::Element:
+        print_elements(out, model, r, solver, increment.total_time);
+        break;
+      case PrintRequest::Kind::Contact:
+        print_contact(out, model, r, solver, increment.total_time);
+        break;
+    }
+  }
+}
+
+}  // namespace abut
