@@ -179,8 +179,9 @@ struct StaticSolver::Impl {
     std::vector<std::int32_t> secondary_nodes;
     ContactSurface secondary;
     if (spec.surface1.type == EntityType::NodeSet) {
-      // A node-based surface: its nodes act on their own, with the area of the faces of surface
-      // 2's kind around them in the mesh (exterior faces of the hexes the nodes belong to).
+      // A node-based surface: its nodes act on their own, each with a quarter of the area of
+      // every exterior face of the mesh it belongs to (CalculiX's rule for nodal slave surfaces,
+      // tiefaccont.f: all external faces containing the node, coefficient 1/4 each).
       secondary_nodes = model.nodes_of(spec.surface1);
       std::vector<std::uint8_t> in_set(mesh.nodes.size(), 0);
       for (const std::int32_t n : secondary_nodes) in_set[n] = 1;
@@ -188,7 +189,7 @@ struct StaticSolver::Impl {
       for (const SkinFace& f : exterior_faces(mesh, false)) {
         int inside = 0;
         for (const std::int32_t n : f.nodes) inside += in_set[n];
-        if (inside == 4) faces.push_back(f);
+        if (inside > 0) faces.push_back(f);
       }
       secondary = contact_surface(mesh, faces, [](const SkinFace&) { return 0.0; });
       s.node_to_surface = true;
