@@ -20,7 +20,40 @@ fs::path default_output_dir(const fs::path& deck) {
   return deck.parent_path() / (deck.stem().string() + "_out");
 }
 
+// A static model: its parts, contacts and steps (no time step to report).
+void print_static_info(const abut::Model& model, std::ostream& out) {
+  const abut::StaticSolver solver(model);  // validates it
+  out << fmt::format("deck:       {}\n", model.deck_path);
+  if (!model.title.empty()) out << fmt::format("title:      {}\n", model.title);
+  out << fmt::format("mesh:       {} nodes, {} hexahedra\n", model.mesh.nodes.size(),
+                     model.mesh.hex_count());
+  out << "parts:\n";
+  for (const abut::Part& p : model.parts)
+    out << fmt::format(
+        "  {:>6}  {:<20} material {}, {} integration\n", p.id, p.title.empty() ? "-" : p.title,
+        p.material_id,
+        p.solid_integration == abut::Part::SolidIntegration::Full ? "full (C3D8)" : "one-point");
+  out << fmt::format("contacts:   {}\n", model.contacts.size());
+  for (const abut::ContactSpec& c : model.contacts)
+    out << fmt::format("  {:>6}  {} ({})\n", c.id, c.title.empty() ? "-" : c.title,
+                       c.discretisation == abut::Discretisation::NodeToSurface
+                           ? "node to surface"
+                           : "surface to surface");
+  out << fmt::format("equations:  {}\n", model.equations.size());
+  out << fmt::format("static steps: {}\n", model.static_steps.size());
+  for (std::size_t i = 0; i < model.static_steps.size(); ++i) {
+    const abut::StaticStep& st = model.static_steps[i];
+    out << fmt::format(
+        "  {:>6}  period {:.6g}, initial increment {:.6g}{}{}; {} prescribed dofs, {} forces, {} "
+        "face pressures\n",
+        i + 1, st.period, st.initial_increment, st.fixed_increments ? " (fixed)" : "",
+        st.nonlinear_geometry ? ", NLGEOM" : "", st.displacements.size(), st.forces.size(),
+        st.pressures.size());
+  }
+}
+
 void print_info(const abut::Model& model, std::ostream& out) {
+  if (!model.static_steps.empty()) return print_static_info(model, out);
   const abut::Simulation sim(model);
   out << fmt::format("deck:       {}\n", model.deck_path);
   if (!model.title.empty()) out << fmt::format("title:      {}\n", model.title);
@@ -47,7 +80,8 @@ void print_info(const abut::Model& model, std::ostream& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"abut: explicit finite-element solver built around contact"};
+  CLI::App app{
+      "abut: finite-element solver built around contact (explicit dynamics, nonlinear statics)"};
   app.set_version_flag("--version", std::string("abut ") + ABUT_VERSION);
   app.require_subcommand(1);
 
@@ -57,7 +91,7 @@ int main(int argc, char** argv) {
   bool quiet = false;
   CLI::App* run =
       app.add_subcommand("run", "Run a deck; writes a ParaView series and time histories");
-  run->add_option("deck", deck, "Input deck (IMPETUS keyword syntax)")
+  run->add_option("deck", deck, "Input deck (IMPETUS keyword syntax, or Abaqus/CalculiX .inp)")
       ->required()
       ->check(CLI::ExistingFile);
   run->add_option("-o,--output", output,
