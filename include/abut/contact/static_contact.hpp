@@ -89,6 +89,12 @@ class StaticContact {
   void evaluate(const ContactInput& in);
   // The evaluated state becomes the history (friction, tied pairs, small-sliding partners).
   void commit();
+  // *CHANGE FRICTION: new Coulomb coefficient and stick slope from the next evaluation on.
+  void change_friction(double mu, double stick_slope) {
+    settings_.friction = mu;
+    settings_.stick_slope = stick_slope;
+  }
+  const StaticContactSettings& settings() const { return settings_; }
 
   std::span<const StaticContactElement> elements() const { return elements_; }
   std::span<const StaticContactPoint> points() const { return points_; }

@@ -370,6 +370,15 @@ struct StaticSolver::Impl {
     for (std::size_t s = 0; s < model.static_steps.size(); ++s) {
       const StaticStep& step = model.static_steps[s];
       nonlinear_geometry = nonlinear_geometry || step.nonlinear_geometry;
+      for (const ContactChange& change : step.contact_changes) {
+        if (change.contact >= contacts.size())
+          throw InputError(change.where, "*CHANGE FRICTION names a contact that does not exist");
+        StaticContact& c = contacts[change.contact];
+        if (c.settings().tied)
+          throw InputError(change.where, "*CHANGE FRICTION on a tied contact is not supported");
+        c.change_friction(change.friction.value_or(c.settings().friction),
+                          change.stick_slope.value_or(c.settings().stick_slope));
+      }
       const detail::StepLoads loads(model, step, u, history, total);
       const detail::DofMap dofs(model.mesh.nodes.size(), loads.prescribed(), model.equations);
       ElementEquations base;
