@@ -134,8 +134,10 @@ void print_contact(std::ostream& out, const Model& model, const PrintRequest& r,
         Vec3 t1, t2;
         tangent_basis(p.normal, t1, t2);
         out << row_start(p)
-            << fmt::format("{:14.6E}{:14.6E}{:14.6E}\n", p.pressure, dot(p.traction, t1),
-                           dot(p.traction, t2));
+            // The tangential traction the slave exerts on the master (along its slip), which is
+            // CalculiX's sign; the pressure is the same on either side.
+            << fmt::format("{:14.6E}{:14.6E}{:14.6E}\n", p.pressure, -dot(p.traction, t1),
+                           -dot(p.traction, t2));
       }
     }
     if (wants(r, "CDIS")) {
