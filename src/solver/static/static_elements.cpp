@@ -1,5 +1,6 @@
 #include "solver/static/static_elements.hpp"
 
+#include <cmath>
 #include <string>
 #include <variant>
 
@@ -78,6 +79,12 @@ void StaticElements::evaluate(std::span<const double> u, bool nonlinear_geometry
     throw InstabilityError("element " + std::to_string(ids_[inverted]) +
                            " turned inside out (det J <= 0 at a Gauss point): the load increment "
                            "is too large or the model lacks support");
+}
+
+double StaticElements::force_magnitude_sum() const {
+  double sum = 0.0;
+  for (const double v : force_) sum += std::abs(v);
+  return sum;
 }
 
 void StaticElements::add_forces(std::span<double> f) const {

@@ -33,6 +33,9 @@ class StaticElements {
 
   // f += the internal forces of all elements, in element order (3 per node).
   void add_forces(std::span<double> f) const;
+  // Sum of |component| over the element nodal forces (before assembly), and their count.
+  double force_magnitude_sum() const;
+  std::size_t force_entries() const { return force_.size(); }
 
  private:
   const Model& model_;

@@ -251,10 +251,12 @@ struct StaticSolver::Impl {
             for (int k = 0; k < 3; ++k)
               external[3 * e.nodes[a] + k] += e.weights[a] * e.area * e.traction[k];
       }
-      double force_sum = 0.0;
-      std::size_t force_count = 0;
+      // The average force: over the element nodal forces before assembly (Abaqus's spatially
+      // averaged force, Analysis User's Guide 7.2.3), not over the assembled totals, which
+      // cancel at the free nodes; plus the loads and contact forces.
+      double force_sum = elements.force_magnitude_sum();
+      std::size_t force_count = elements.force_entries();
       for (std::size_t d = 0; d < n; ++d) {
-        if (f[d] != 0.0) force_sum += std::abs(f[d]), ++force_count;
         if (external[d] != 0.0) force_sum += std::abs(external[d]), ++force_count;
         f[d] -= external[d];  // residual: internal - external
       }
