@@ -58,13 +58,24 @@ void print_nodes(std::ostream& out, const Model& model, const PrintRequest& r,
                  const StaticSolver& solver, double t) {
   const std::vector<std::int32_t> nodes = members_or_all(r, model.mesh.nodes.size());
   auto block = [&](const char* title, std::span<const double> v) {
+    if (r.totals_only) return;
     out << fmt::format("\n {} for set {} and time {}\n\n", title, set_text(r), time_text(t));
     for (const std::int32_t n : nodes)
       out << fmt::format("{:10d}{:14.6E}{:14.6E}{:14.6E}\n", model.mesh.nodes.id[n], v[3 * n],
                          v[3 * n + 1], v[3 * n + 2]);
   };
   if (wants(r, "U")) block("displacements (vx,vy,vz)", solver.displacement());
-  if (wants(r, "RF")) block("forces (fx,fy,fz)", solver.nodal_force());
+  if (wants(r, "RF")) {
+    block("forces (fx,fy,fz)", solver.nodal_force());
+    if (r.totals || r.totals_only) {  // TOTALS=YES/ONLY: the sum over the set (CalculiX's line)
+      double sum[3] = {0.0, 0.0, 0.0};
+      for (const std::int32_t n : nodes)
+        for (int k = 0; k < 3; ++k) sum[k] += solver.nodal_force()[3 * n + k];
+      out << fmt::format(
+          "\n total force (fx,fy,fz) for set {} and time {}\n\n{:20.6E}{:14.6E}{:14.6E}\n",
+          set_text(r), time_text(t), sum[0], sum[1], sum[2]);
+    }
+  }
 }
 
 void print_elements(std::ostream& out, const Model& model, const PrintRequest& r,
