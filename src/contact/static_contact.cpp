@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "abut/contact/adjust.hpp"
 #include "abut/contact/integration.hpp"
 #include "abut/contact/narrow_phase.hpp"
 #include "abut/contact/quad.hpp"
@@ -15,20 +16,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 Vec3 tangential(const Vec3& v, const Vec3& n) { return v - n * dot(v, n); }
-
-double mean_edge(const ContactSurface& s, std::span<const double> x, std::span<const double> y,
-                 std::span<const double> z) {
-  double sum = 0.0;
-  std::size_t count = 0;
-  for (const auto& f : s.facets) {
-    const QuadCorners c = quad_corners(f, x, y, z);
-    for (int e = 0; e < 4; ++e) {
-      const double l = norm(c[(e + 1) % 4] - c[e]);
-      if (l > 0.0) sum += l, ++count;
-    }
-  }
-  return count > 0 ? sum / static_cast<double>(count) : 0.0;
-}
 
 // The element's nodes with their weights, repeated nodes merged (a triangle repeats its third).
 struct Weights {
@@ -108,7 +95,7 @@ void StaticContact::evaluate(const ContactInput& in) {
   const std::size_t np = point_facet_.size();
   const double search = std::max(settings_.search_distance, reach_at_clearance(settings_.normal));
   const double reach = std::max(search, settings_.depth);
-  const double edge_tolerance = 0.01 * mean_edge(main_, in.x, in.y, in.z);
+  const double edge_tolerance = 0.01 * mean_edge_length(main_, in.x, in.y, in.z);
   // Positions, areas and normals of the points.
   std::vector<double> qx(np), qy(np), qz(np);
   std::vector<Vec3> own_normal(np);

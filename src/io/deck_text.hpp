@@ -27,6 +27,8 @@ std::optional<double> parse_number(std::string_view s);
 std::optional<std::int64_t> parse_integer(std::string_view s);
 // Shortest text that reads back to the same double (used for %param substitution).
 std::string format_number(double v);
+// Levenshtein distance (insertions, deletions, substitutions), for "did you mean" suggestions.
+std::size_t edit_distance(std::string_view a, std::string_view b);
 
 // One data line of a keyword, split into fields that have names (for messages).
 class Row {

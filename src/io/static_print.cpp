@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace abut {
 
@@ -135,36 +136,28 @@ void print_contact(std::ostream& out, const Model& model, const PrintRequest& r,
     for (const StaticContactPoint& p : c.points())
       if (selected(p)) total_energy += p.energy;
     if (r.totals_only) continue;
-    if (wants(r, "CSTR")) {
-      out << fmt::format(
-          "\n contact stress ({},press,tang1,tang2) for all contact elements and "
-          "time {}\n\n",
-          who, time_text(t));
+    auto point_rows = [&](const std::string& header, auto values) {
+      out << fmt::format("\n {} for all contact elements and time {}\n\n", header, time_text(t));
       for (const StaticContactPoint& p : c.points()) {
         if (!selected(p)) continue;
         Vec3 t1, t2;
         tangent_basis(p.normal, t1, t2);
-        out << row_start(p)
-            // The tangential traction the slave exerts on the master (along its slip), which is
-            // CalculiX's sign; the pressure is the same on either side.
-            << fmt::format("{:14.6E}{:14.6E}{:14.6E}\n", p.pressure, -dot(p.traction, t1),
-                           -dot(p.traction, t2));
+        const auto [n, v] = values(p);
+        out << row_start(p) << fmt::format("{:14.6E}{:14.6E}{:14.6E}\n", n, dot(v, t1), dot(v, t2));
       }
-    }
-    if (wants(r, "CDIS")) {
-      out << fmt::format(
-          "\n relative contact displacement ({},normal,tang1,tang2) for all "
-          "contact elements and time {}\n\n",
-          who, time_text(t));
-      for (const StaticContactPoint& p : c.points()) {
-        if (!selected(p)) continue;
-        Vec3 t1, t2;
-        tangent_basis(p.normal, t1, t2);
-        out << row_start(p)
-            << fmt::format("{:14.6E}{:14.6E}{:14.6E}\n", p.gap, dot(p.total_slip, t1),
-                           dot(p.total_slip, t2));
-      }
-    }
+    };
+    // CSTR: the tangential traction the slave exerts on the master (along its slip), which is
+    // CalculiX's sign; the pressure is the same on either side.
+    if (wants(r, "CSTR"))
+      point_rows(fmt::format("contact stress ({},press,tang1,tang2)", who),
+                 [](const StaticContactPoint& p) {
+                   return std::pair{p.pressure, -p.traction};
+                 });
+    if (wants(r, "CDIS"))
+      point_rows(fmt::format("relative contact displacement ({},normal,tang1,tang2)", who),
+                 [](const StaticContactPoint& p) {
+                   return std::pair{p.gap, p.total_slip};
+                 });
     if (wants(r, "CELS")) {
       out << fmt::format(
           "\n contact print energy ({},energy)for all contact elements and time "

@@ -131,15 +131,7 @@ ContactSettings settings_of(const Model& model, const ContactSpec& spec) {
   s.freeze = spec.friction_law == ContactSpec::FrictionLaw::Freeze;
   s.tangential_penalty = spec.tangential_penalty;
   s.friction_filter = spec.friction_filter;
-  if (spec.penalty_curve.valid()) {
-    const FunctionRef f = spec.penalty_curve;
-    s.normal_law = CurvePenalty{[table, f, term](double d) {
-      Variables v;  // a *CURVE is read at d; a *FUNCTION gets d as its t (as fcn(fid, d) would)
-      v.term = term;
-      v.t = d;
-      return table->value(f, d, v);
-    }};
-  }
+  if (spec.penalty_curve.valid()) s.normal_law = curve_penalty(model, spec.penalty_curve);
   s.sense = spec.sense;
   s.detection_depth = spec.detection_depth;
   s.clearance = spec.clearance;

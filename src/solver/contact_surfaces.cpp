@@ -148,4 +148,15 @@ std::vector<std::string> adjust_contact_nodes(Model& model) {
   return notes;
 }
 
+CurvePenalty curve_penalty(const Model& model, FunctionRef curve) {
+  const FunctionTable* table = &model.functions;
+  const double term = model.time.end_time;
+  return CurvePenalty{[table, curve, term](double d) {
+    Variables v;
+    v.term = term;
+    v.t = d;
+    return table->value(curve, d, v);
+  }};
+}
+
 }  // namespace abut

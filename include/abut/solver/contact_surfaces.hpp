@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "abut/contact/laws/normal.hpp"
 #include "abut/contact/surface.hpp"
 #include "abut/mesh/mesh.hpp"
 #include "abut/mesh/skin.hpp"
@@ -54,5 +55,10 @@ std::vector<std::string> adjust_contact_nodes(Model& model);
 // together; a shell's volume is its area times `shell_thickness`); InputError if the part has no
 // element.
 double smallest_element_volume(const Mesh& mesh, std::int64_t part, double shell_thickness = 0.0);
+
+// The normal law of a pressure-penetration curve (*CONTACT_NORMAL CURVE, .inp TABULAR): a *CURVE
+// is read at the penetration d; a *FUNCTION gets d as its t (as fcn(fid, d) would) and the end
+// time as term.
+CurvePenalty curve_penalty(const Model& model, FunctionRef curve);
 
 }  // namespace abut

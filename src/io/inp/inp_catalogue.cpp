@@ -6,6 +6,7 @@
 #include <map>
 
 #include "inp_reader.hpp"
+#include "io/deck_text.hpp"
 
 namespace abut::inp {
 namespace {
@@ -215,21 +216,6 @@ const Described kUnsupported[] = {
     {"*ADAPTIVE MESH", kGeneric},
 };
 
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
-
 template <class Table>
 std::optional<std::string_view> find_in(const Table& table, const std::string& key) {
   for (const Described& d : table)
@@ -257,7 +243,7 @@ std::vector<std::string> closest_keywords(const std::string& key) {
   const std::size_t limit = std::max<std::size_t>(2, key.size() / 4);
   std::vector<std::pair<std::size_t, std::string>> found;
   const auto consider = [&](std::string_view name) {
-    const std::size_t d = edit_distance(key, lookup_key(name));
+    const std::size_t d = deck::edit_distance(key, lookup_key(name));
     if (d <= limit) found.emplace_back(d, std::string(name));
   };
   for (const auto& [k, entry] : supported()) consider(entry.name);

@@ -163,15 +163,7 @@ struct StaticSolver::Impl {
     // size normal to the surface (CalculiX recommends 5 to 50 times the modulus per unit length).
     s.penalty = spec.penalty ? *spec.penalty : 10.0 * young / thickness;
     s.stick_slope = spec.tangential_penalty.value_or(s.penalty);
-    if (spec.penalty_curve.valid()) {
-      const FunctionTable* table = &model.functions;
-      const FunctionRef f = spec.penalty_curve;
-      s.normal = CurvePenalty{[table, f](double d) {
-        Variables v;
-        v.t = d;
-        return table->value(f, d, v);
-      }};
-    }
+    if (spec.penalty_curve.valid()) s.normal = curve_penalty(model, spec.penalty_curve);
     if (spec.exponential)
       s.normal = ExponentialOverclosure{spec.exponential->c0, spec.exponential->p0};
     s.depth = spec.detection_depth.value_or(0.5 * thickness);
