@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "abut/element/hex8.hpp"
+#include "abut/material/j2_strain_point.hpp"
 
 namespace abut {
 
@@ -220,6 +221,8 @@ void hex8_full_with(const Hex8FullInput& in, const M& material, Hex8FullResult& 
 
 template void hex8_full_with<IsotropicElastic>(const Hex8FullInput&, const IsotropicElastic&,
                                                Hex8FullResult&);
+template void hex8_full_with<J2StrainPoint>(const Hex8FullInput&, const J2StrainPoint&,
+                                            Hex8FullResult&);
 
 void hex8_full(const Hex8FullInput& in, const IsotropicElastic& material, Hex8FullResult& out) {
   hex8_full_with(in, material, out);

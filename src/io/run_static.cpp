@@ -31,7 +31,8 @@ void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
                  const StaticSolver& solver, double time) {
   const Mesh& mesh = model.mesh;
   const std::size_t n = mesh.nodes.size(), nh = mesh.hex_count();
-  std::vector<double> x(n), y(n), z(n), part(nh), stress(6 * nh, 0.0), mises(nh, 0.0);
+  std::vector<double> x(n), y(n), z(n), part(nh), stress(6 * nh, 0.0), mises(nh, 0.0),
+      plastic(nh, 0.0);
   const auto u = solver.displacement();
   for (std::size_t i = 0; i < n; ++i) {
     x[i] = mesh.nodes.x[i] + u[3 * i];
@@ -41,6 +42,8 @@ void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
   const auto s = solver.stress();
   for (std::size_t h = 0; h < nh; ++h) {
     part[h] = static_cast<double>(mesh.hex_part[h]);
+    for (int p = 0; p < 8; ++p)
+      plastic[h] = std::max(plastic[h], solver.plastic_strain()[8 * h + p]);
     for (int p = 0; p < 8; ++p) {
       const double* v = &s[48 * h + 6 * p];
       for (int k = 0; k < 6; ++k) stress[6 * h + k] += v[k] / 8.0;
@@ -55,6 +58,7 @@ void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
   const std::vector<FieldView> cells{{"part_id", 1, part},
                                      {"stress", 6, stress},
                                      {"von_mises_stress", 1, mises},
+                                     {"plastic_strain", 1, plastic},
                                      {"strain_energy", 1, energy}};
   const std::string name = fmt::format("states/state_{:04d}.vtu", series.size());
   write_vtu(dir / name, {x, y, z, mesh.hexes, mesh.shells}, points, cells);

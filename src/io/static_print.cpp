@@ -87,7 +87,7 @@ void print_elements(std::ostream& out, const Model& model, const PrintRequest& r
   auto tensor_block = [&](const char* title, std::span<const double> v, double shear) {
     out << fmt::format("\n {} for set {} and time {}\n\n", title, set_text(r), time_text(t));
     for (const std::int32_t h : hexes)
-      for (int p = 0; p < 8; ++p) {
+      for (int p = 0; p < solver.integration_points(static_cast<std::size_t>(h)); ++p) {
         out << fmt::format("{:10d}{:4d}", model.mesh.hex_id[h], p + 1);
         for (int k = 0; k < 6; ++k)
           out << fmt::format("{:14.6E}", v[48 * h + 6 * p + kOrder[k]] * (k >= 3 ? shear : 1.0));
@@ -98,6 +98,15 @@ void print_elements(std::ostream& out, const Model& model, const PrintRequest& r
     tensor_block("stresses (elem, integ.pnt.,sxx,syy,szz,sxy,sxz,syz)", solver.stress(), 1.0);
   if (wants(r, "E") && !r.totals_only)  // tensor shears, as CalculiX prints them
     tensor_block("strains (elem, integ.pnt.,exx,eyy,ezz,exy,exz,eyz)", solver.strain(), 0.5);
+  if (wants(r, "PEEQ") && !r.totals_only) {  // CalculiX's title has no space before "for"
+    out << fmt::format(
+        "\n equivalent plastic strain (elem, integ.pnt.,pe)for set {} and time {}\n\n", set_text(r),
+        time_text(t));
+    for (const std::int32_t h : hexes)
+      for (int p = 0; p < solver.integration_points(static_cast<std::size_t>(h)); ++p)
+        out << fmt::format("{:10d}{:4d}{:14.6E}\n", model.mesh.hex_id[h], p + 1,
+                           solver.plastic_strain()[8 * static_cast<std::size_t>(h) + p]);
+  }
   if (wants(r, "ELSE")) {
     double total = 0.0;
     for (const std::int32_t h : hexes) total += solver.element_energy()[h];

@@ -61,7 +61,7 @@ TEST(InpErrors, Keywords) {
   expect_error(kModel + "*NODEPRNT, NSET=NALL\nU\n",
                {23, "unknown keyword *NODEPRNT; did you mean *NODE PRINT"});
   expect_error(kModel + "*FOOBAR\n", {23, "unknown keyword *FOOBAR"});
-  expect_error(kModel + "*PLASTIC\n100., 0.\n", {23, "*PLASTIC is not supported yet"});
+  expect_error(kModel + "*HYPERELASTIC\n100., 0.\n", {23, "*HYPERELASTIC is not supported yet"});
   expect_error("1, 0., 0., 0.\n", {1, "data line before the first keyword"});
   expect_error(kModel + "*ELASTIC\n1., 0.3\n", {23, "put it right after the *MATERIAL card"});
   expect_error(kModel + "*FRICTION\n0.1, 10.\n",
@@ -211,6 +211,20 @@ TEST(InpErrors, PhysicsNotSupportedYet) {
                {29, "suits TYPE=NODE TO SURFACE only", "slave"});
   expect_error(kModel + "*EQUATION\n2\n1, 1, 1., 2, 1, -1.\n*BOUNDARY\n1, 1, 1\n" + kStep,
                {27, "is the dependent term of the *EQUATION at t.inp:24"});
+}
+
+// *PLASTIC (CalculiX User's Manual): isotropic hardening, one curve starting at plastic strain 0.
+TEST(InpErrors, Plastic) {
+  const std::string b = kModel + "*MATERIAL, NAME=B\n*ELASTIC\n1., 0.3\n";
+  expect_error(b + "*PLASTIC, HARDENING=KINEMATIC\n100., 0.\n",
+               {26, "HARDENING=KINEMATIC is not supported yet", "HARDENING"});
+  expect_error(b + "*PLASTIC\n100., 0.01\n", {27, "the first line must be at plastic strain 0"});
+  expect_error(b + "*PLASTIC\n100., 0.\n120., 0.1\n130., 0.1\n",
+               {29, "the plastic strains must increase"});
+  expect_error(b + "*PLASTIC\n0., 0.\n", {27, "expected a yield stress > 0"});
+  expect_error(b + "*PLASTIC\n100., 0., 20.\n120., 0.1, 300.\n",
+               {28, "temperature-dependent hardening"});
+  expect_error(b + "*PLASTIC\n100., 0.\n*PLASTIC\n100., 0.\n", {28, "already has a *PLASTIC"});
 }
 
 TEST(InpErrors, ErrorsInIncludedFilesNameThatFile) {

@@ -108,6 +108,29 @@ TEST(InpMesh, SectionsBecomePartsWithTheirIntegration) {
   EXPECT_EQ(soft.density, 0.0);  // no *DENSITY: 0, fine for static steps
 }
 
+// *PLASTIC makes the material J2 plastic with the table as its flow curve (constant beyond the
+// last point, as in CalculiX).
+TEST(InpMesh, PlasticMaterialHasItsFlowCurve) {
+  const Model m = model_of(kNodes + R"(*ELEMENT, TYPE=C3D8, ELSET=EALL
+1, 1, 2, 5, 4, 7, 8, 11, 10
+*MATERIAL, NAME=STEEL
+*ELASTIC
+210000., 0.3
+*PLASTIC
+250., 0.
+350., 0.1
+*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL
+)" + kStep);
+  const auto& steel = std::get<MetalParams>(m.material_of_part(1));
+  EXPECT_EQ(steel.young, 210000.0);
+  EXPECT_EQ(steel.poisson, 0.3);
+  EXPECT_FALSE(steel.johnson_cook);
+  const Variables v;
+  EXPECT_DOUBLE_EQ(m.functions.value(steel.flow_curve, 0.0, v), 250.0);
+  EXPECT_DOUBLE_EQ(m.functions.value(steel.flow_curve, 0.05, v), 300.0);
+  EXPECT_DOUBLE_EQ(m.functions.value(steel.flow_curve, 0.5, v), 350.0);
+}
+
 TEST(InpMesh, OneSectionOverTwoElementTypesMakesTwoParts) {
   const Model m = model_of(kNodes + R"(*ELEMENT, TYPE=C3D8R, ELSET=EALL
 1, 1, 2, 5, 4, 7, 8, 11, 10

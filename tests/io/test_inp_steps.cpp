@@ -293,7 +293,7 @@ S
 *STEP
 *STATIC
 *EL PRINT
-PEEQ
+SDV
 *END STEP
 )",
                                                   "t.inp");
@@ -306,7 +306,7 @@ PEEQ
   EXPECT_EQ(second[0].kind, PrintRequest::Kind::Node);
   ASSERT_EQ(r.notes.size(), 2u);
   EXPECT_EQ(r.notes[0].rfind("t.inp:25: *NODE PRINT: NT left out", 0), 0u) << r.notes[0];
-  EXPECT_EQ(r.notes[1].rfind("t.inp:32: *EL PRINT: PEEQ left out", 0), 0u) << r.notes[1];
+  EXPECT_EQ(r.notes[1].rfind("t.inp:32: *EL PRINT: SDV left out", 0), 0u) << r.notes[1];
 }
 
 TEST(InpSteps, OutputOnlyCardsAndControlsAreNotedWithTheirLine) {

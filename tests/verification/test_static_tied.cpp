@@ -1,9 +1,7 @@
 // A tied (FREEZE / TIED) interface between non-matching meshes carries bending as one body would
 // (issue 10). A cantilever of C3D8 hexes, clamped at x = 0 and loaded by a tip shear, is cut at
 // mid-span into two parts with different meshes (4 and 3 elements through the depth) tied by
-// surface-to-surface contact. Reference: Timoshenko's tip deflection
-//   delta = P L^3 / (3 E I) + P L / (kappa G A),  kappa = 5/6
-// (Timoshenko & Gere, Mechanics of Materials; nu = 0, so the section does not contract).
+// surface-to-surface contact. Reference: Timoshenko's tip deflection (static_cantilever.hpp).
 // The fully integrated hex is too stiff in bending by about (1 - nu)/2 (a/b)^2 for elements of
 // length a and depth b (parasitic shear; Cook et al., Concepts and Applications of FEA, 4th ed.,
 // section 6.13): the elements here are 8 to 16 times deeper than long, so that share stays below
@@ -15,58 +13,12 @@
 
 #include "abut/mesh/generators.hpp"
 #include "abut/solver/static_solver.hpp"
+#include "static_cantilever.hpp"
 
 namespace abut {
 namespace {
 
-constexpr double kE = 1000.0, kL = 4.0, kH = 1.0, kW = 0.5, kP = 0.01;
-
-Material elastic() {
-  Material m;
-  m.id = 1;
-  m.params = ElasticParams{1e-9, kE, 0.0};
-  return m;
-}
-
-Part full_part(std::int64_t id) {
-  Part p;
-  p.id = id;
-  p.material_id = 1;
-  p.solid_integration = Part::SolidIntegration::Full;
-  return p;
-}
-
-// Clamp x = 0; tip shear P along -y on x = L, as consistent nodal forces of a uniform traction.
-void clamp_and_load(Model& m) {
-  StaticStep step;
-  const Nodes& n = m.mesh.nodes;
-  double weight_sum = 0.0;
-  std::vector<std::pair<std::int32_t, double>> tip;
-  for (std::size_t i = 0; i < n.size(); ++i) {
-    const auto node = static_cast<std::int32_t>(i);
-    if (n.x[i] == 0.0)
-      for (int d = 0; d < 3; ++d) step.displacements.push_back({node, d, 0.0, {}, {}});
-    if (std::abs(n.x[i] - kL) < 1e-12) {
-      // Tributary share of the end face: half an element at the borders.
-      double wy = 1.0, wz = 1.0;
-      if (n.y[i] == 0.0 || std::abs(n.y[i] - kH) < 1e-12) wy = 0.5;
-      if (n.z[i] == 0.0 || std::abs(n.z[i] - kW) < 1e-12) wz = 0.5;
-      tip.push_back({node, wy * wz});
-      weight_sum += wy * wz;
-    }
-  }
-  for (const auto& [node, w] : tip) step.forces.push_back({node, 1, -kP * w / weight_sum, {}, {}});
-  m.static_steps.push_back(step);
-  m.time.end_time = 1.0;
-}
-
-double tip_deflection(const Model& m, const StaticSolver& s) {
-  double sum = 0.0;
-  int count = 0;
-  for (std::size_t i = 0; i < m.mesh.nodes.size(); ++i)
-    if (std::abs(m.mesh.nodes.x[i] - kL) < 1e-12) sum += s.displacement()[3 * i + 1], ++count;
-  return -sum / count;
-}
+using namespace cantilever;
 
 FaceSet faces_at_x(const Model& m, std::int64_t id, std::int64_t part, int face, double x) {
   FaceSet s;
@@ -91,8 +43,7 @@ StaticControls tight() {
 }
 
 TEST(StaticTied, NonMatchingMeshesCarryBendingAsOneBody) {
-  const double I = kW * kH * kH * kH / 12.0, A = kW * kH, G = kE / 2.0;
-  const double reference = kP * kL * kL * kL / (3 * kE * I) + kP * kL / (5.0 / 6.0 * G * A);
+  const double reference = timoshenko_deflection();
   // One body: 128 x 4 x 1 hexes.
   Model one;
   generate_box(one.mesh, {1, 128, 4, 1, {0, 0, 0}, {kL, kH, kW}});

@@ -19,6 +19,10 @@ inline constexpr std::array<std::array<double, 8>, 4> kHex8Hourglass{
      {1, -1, 1, -1, 1, -1, 1, -1},    // xi eta
      {-1, 1, -1, 1, 1, -1, 1, -1}}};  // xi eta zeta
 
+// Default hourglass coefficient c_hg of the one-point hexahedron (stiffness c_hg 2 G (b:b) / V,
+// solid_block.cpp explains the scaling), shared by the explicit and the implicit element.
+inline constexpr double kHex8HourglassCoefficient = 0.05;
+
 struct Hex8Coords {
   double x[8], y[8], z[8];
 };

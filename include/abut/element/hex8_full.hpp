@@ -90,7 +90,8 @@ struct Hex8FullResult {
 void hex8_full(const Hex8FullInput& in, const IsotropicElastic& material, Hex8FullResult& out);
 
 // The same element with any material point. Defined in src/element/hex8_full.cpp and explicitly
-// instantiated there for each material (IsotropicElastic now): a new material adds one line.
+// instantiated there for each material (IsotropicElastic, J2StrainPoint of
+// material/j2_strain_point.hpp): a new material adds one line.
 template <Hex8MaterialPoint M>
 void hex8_full_with(const Hex8FullInput& in, const M& material, Hex8FullResult& out);
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "abut/core/functions.hpp"
+#include "abut/element/hex8.hpp"
 #include "abut/material/material.hpp"
 #include "abut/mesh/mesh.hpp"
 
@@ -90,7 +91,7 @@ class SolidBlock {
 
   // Hourglass control (see solid_block.cpp): stiffness-type Flanagan-Belytschko forces with
   // stiffness hourglass_coefficient * 2 G * (b:b) / V, G the (initial) shear modulus.
-  static constexpr double kDefaultHourglassCoefficient = 0.05;
+  static constexpr double kDefaultHourglassCoefficient = kHex8HourglassCoefficient;
   // Artificial bulk viscosity (LS-DYNA's defaults): quadratic C0 = 1.5, linear C1 = 0.06.
   static constexpr double kDefaultBulkViscosityQuadratic = 1.5;
   static constexpr double kDefaultBulkViscosityLinear = 0.06;

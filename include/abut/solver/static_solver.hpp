@@ -62,7 +62,7 @@ struct StaticStatistics {
 class StaticSolver {
  public:
   // Checks that the model can be solved (InputError naming what cannot: materials other than
-  // *ELASTIC, one-point hexes, shells, explicit-only loads).
+  // elastic and J2 plastic, shells, explicit-only loads).
   explicit StaticSolver(const Model& model, StaticControls controls = {});
   ~StaticSolver();
   StaticSolver(const StaticSolver&) = delete;
@@ -74,7 +74,8 @@ class StaticSolver {
   // The last converged state. Per node (3 values, node-major): displacement, and reaction force
   // of the supports on the prescribed dofs (0 elsewhere). Per hex: Cauchy stress and strain (small
   // or Green-Lagrange, engineering shears) at its 8 Gauss points (8 x 6, Voigt xx yy zz xy yz zx,
-  // CalculiX point order), and its strain energy.
+  // CalculiX point order; a one-point C3D8R repeats its point in all 8), the equivalent plastic
+  // strain at the same points (8), and its energy (elastic, hourglass and plastic work).
   std::span<const double> displacement() const;
   std::span<const double> reaction() const;
   // The force of the elements on each node less the contact forces, i.e. the applied loads plus
@@ -82,6 +83,8 @@ class StaticSolver {
   std::span<const double> nodal_force() const;
   std::span<const double> stress() const;
   std::span<const double> strain() const;
+  std::span<const double> plastic_strain() const;
+  int integration_points(std::size_t hex) const;  // 8 (C3D8) or 1 (C3D8R)
   std::span<const double> element_energy() const;
   const StaticStatistics& statistics() const;
   // The contacts of Model::contacts, in order, at the last converged state.

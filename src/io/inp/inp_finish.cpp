@@ -69,14 +69,27 @@ void resolve_sets(Reader& r) {
 }
 
 // Materials in deck order (id = position + 1); a material without *ELASTIC is left out, and an
-// error if a section uses it (checked with the sections).
+// error if a section uses it (checked with the sections). With *PLASTIC: J2 plasticity whose
+// flow curve (plastic strain -> stress) becomes a curve of the model's function table.
 void make_materials(Reader& r) {
   for (std::size_t m = 0; m < r.materials.size(); ++m) {
     const MaterialRecord& rec = r.materials[m];
     if (!rec.elastic) continue;
     Material mat;
     mat.id = static_cast<std::int64_t>(m) + 1;
-    mat.params = ElasticParams{rec.density, rec.young, rec.poisson};
+    if (rec.flow_stress.empty()) {
+      mat.params = ElasticParams{rec.density, rec.young, rec.poisson};
+    } else {
+      MetalParams metal;
+      metal.density = rec.density;
+      metal.young = rec.young;
+      metal.poisson = rec.poisson;
+      const std::int64_t id = r.next_function_id++;
+      const SourceLocation where = r.where(rec.plastic_defined, "*PLASTIC");
+      r.model.functions.add_curve(id, Curve{rec.plastic_strain, rec.flow_stress}, where);
+      metal.flow_curve = r.model.functions.find(id, where);
+      mat.params = metal;
+    }
     mat.where = r.where(rec.defined, "*MATERIAL", "NAME");
     r.model.materials.push_back(mat);
   }

@@ -27,7 +27,13 @@ LoadCard load_card(Reader& r, const Card& c, LoadKind kind) {
   card.op_new = parameter_choice(r, c, "OP", {"MOD", "NEW"}, "MOD") == "NEW";
   card.amplitude = parameter_value(c, "AMPLITUDE").value_or("");
   card.where = r.loc(c);
-  if (c.data.empty()) throw InputError(r.where(c), c.keyword + " has no data lines");
+  // OP=NEW without data lines removes every condition of this kind (CalculiX, *CLOAD: "OP=NEW
+  // ... all previous concentrated loads are removed").
+  if (c.data.empty() && !card.op_new) {
+    throw InputError(r.where(c), c.keyword +
+                                     " has no data lines (only OP=NEW may have none: it "
+                                     "removes the previous ones)");
+  }
   return card;
 }
 

@@ -1,5 +1,5 @@
-// *MATERIAL with *ELASTIC and *DENSITY, the thermal properties abut skips, and *SOLID SECTION.
-// Materials become Model::materials (ElasticParams) and sections parts in finish_mesh.
+// *MATERIAL with *ELASTIC, *DENSITY and *PLASTIC, the thermal properties abut skips, and *SOLID
+// SECTION. Materials become Model::materials (ElasticParams) and sections parts in finish_mesh.
 #include "inp_reader.hpp"
 
 namespace abut::inp {
@@ -67,6 +67,55 @@ void read_density(Reader& r, const Card& c) {
   const double rho = f.number(0, "density");
   if (!(rho > 0.0)) f.fail("density", "expected a density > 0");
   current_material(r).density = rho;
+}
+
+// *PLASTIC, HARDENING=ISOTROPIC: lines of von Mises stress and equivalent plastic strain, the
+// first at zero plastic strain (CalculiX User's Manual, *PLASTIC). Beyond the last point the
+// stress stays constant, as in CalculiX.
+void read_plastic(Reader& r, const Card& c) {
+  check_parameters(r, c, {{"HARDENING"}});
+  const std::string hardening =
+      parameter_choice(r, c, "HARDENING",
+                       {"ISOTROPIC", "KINEMATIC", "COMBINED", "USER", "JOHNSON COOK"}, "ISOTROPIC");
+  if (hardening != "ISOTROPIC") {
+    throw InputError(r.where(c, "HARDENING"), "HARDENING=" + hardening +
+                                                  " is not supported yet by abut: its J2 "
+                                                  "plasticity hardens isotropically");
+  }
+  if (c.data.empty()) {
+    throw InputError(r.where(c), "the lines of yield stress and plastic strain are missing");
+  }
+  MaterialRecord& m = current_material(r);
+  if (!m.flow_stress.empty()) {
+    throw InputError(r.where(c), "material " + m.name + " already has a *PLASTIC card at " +
+                                     r.at(m.plastic_defined));
+  }
+  m.plastic_defined = r.loc(c);
+  std::optional<double> temperature;
+  for (const DataLine& l : c.data) {
+    const Fields f(r, c, l);
+    f.at_most(3, "yield stress, plastic strain, temperature");
+    const double stress = f.number(0, "yield stress");
+    const double strain = f.number_or(1, "plastic strain", 0.0);
+    if (!(stress > 0.0)) f.fail("yield stress", "expected a yield stress > 0");
+    if (m.flow_stress.empty() && strain != 0.0) {
+      f.fail("plastic strain", "the first line must be at plastic strain 0 (the initial yield)");
+    }
+    if (!m.plastic_strain.empty() && !(strain > m.plastic_strain.back())) {
+      f.fail("plastic strain", "the plastic strains must increase from line to line");
+    }
+    if (f.given(2)) {
+      const double t = f.number(2, "temperature");
+      if (temperature && *temperature != t) {
+        f.fail("temperature",
+               "temperature-dependent hardening (several temperatures) is not supported yet by "
+               "abut: give the curve of one temperature");
+      }
+      temperature = t;
+    }
+    m.flow_stress.push_back(stress);
+    m.plastic_strain.push_back(strain);
+  }
 }
 
 void read_thermal_property(Reader& r, const Card& c) {

@@ -63,6 +63,9 @@ struct MaterialRecord {
   Loc defined;
   bool elastic = false;
   double young = 0.0, poisson = 0.0, density = 0.0;
+  // *PLASTIC (isotropic hardening): von Mises flow stress against equivalent plastic strain.
+  std::vector<double> plastic_strain, flow_stress;
+  Loc plastic_defined;
 };
 
 struct SectionRecord {
@@ -292,6 +295,7 @@ void read_surface(Reader&, const Card&);
 void read_material(Reader&, const Card&);
 void read_elastic(Reader&, const Card&);
 void read_density(Reader&, const Card&);
+void read_plastic(Reader&, const Card&);
 void read_thermal_property(Reader&, const Card&);
 void read_solid_section(Reader&, const Card&);
 void read_surface_interaction(Reader&, const Card&);

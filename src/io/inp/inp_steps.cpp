@@ -29,8 +29,8 @@ const PrintKeys& keys_of(PrintRequest::Kind kind) {
   static const PrintKeys node{{"U", "RF"},
                               {"NT", "TS", "TSF", "TTF", "PN", "PSF", "PTF", "MACH", "CP", "VF",
                                "MF", "RFL", "PS", "PT", "V"}};
-  static const PrintKeys element{{"S", "E", "ME", "ENER", "ELSE", "EVOL"},
-                                 {"PEEQ", "CEEQ", "SDV", "HFL", "SVF", "ELKE"}};
+  static const PrintKeys element{{"S", "E", "ME", "PEEQ", "ENER", "ELSE", "EVOL"},
+                                 {"CEEQ", "SDV", "HFL", "SVF", "ELKE"}};
   static const PrintKeys contact{{"CDIS", "CSTR", "CELS", "CNUM"}, {}};
   switch (kind) {
     case PrintRequest::Kind::Node:

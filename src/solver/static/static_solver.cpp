@@ -156,8 +156,9 @@ struct StaticSolver::Impl {
     double thickness = 0.0, young = 0.0;
     for (const SkinFace& f : main_faces) {
       thickness += f.thickness / static_cast<double>(main_faces.size());
-      if (const auto* e = std::get_if<ElasticParams>(&model.material_of_part(f.part)))
-        young = std::max(young, e->young);
+      // Young's modulus from the initial bulk and shear moduli: E = 9 K G / (3 K + G).
+      const ElasticModuli m = initial_moduli(model.material_of_part(f.part));
+      if (m.shear > 0.0) young = std::max(young, 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear));
     }
     // Automatic penalty: 10 E / L, E the stiffest material of surface 2 and L its mean element
     // size normal to the surface (CalculiX recommends 5 to 50 times the modulus per unit length).
@@ -398,6 +399,7 @@ struct StaticSolver::Impl {
               newton(loads, dofs, base, tau + dtau, nonlinear_geometry, trial, residual);
           if (iterations >= 0) {
             u = std::move(trial);
+            elements.commit();
             for (StaticContact& c : contacts) c.commit();
             tau += dtau;
             ++stats.increments;
@@ -447,6 +449,12 @@ std::span<const double> StaticSolver::reaction() const { return impl_->reaction;
 std::span<const double> StaticSolver::nodal_force() const { return impl_->nodal_force; }
 std::span<const double> StaticSolver::stress() const { return impl_->elements.stress(); }
 std::span<const double> StaticSolver::strain() const { return impl_->elements.strain(); }
+std::span<const double> StaticSolver::plastic_strain() const {
+  return impl_->elements.plastic_strain();
+}
+int StaticSolver::integration_points(std::size_t hex) const {
+  return impl_->elements.integration_points(hex);
+}
 std::span<const double> StaticSolver::element_energy() const { return impl_->elements.energy(); }
 const StaticStatistics& StaticSolver::statistics() const { return impl_->stats; }
 std::span<const StaticContact> StaticSolver::contacts() const { return impl_->contacts; }
