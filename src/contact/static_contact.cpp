@@ -89,6 +89,37 @@ StaticContact::StaticContact(StaticContactSettings settings, ContactSurface seco
     evaluate(initial);
     commit();
   }
+  if (!settings_.tied &&
+      (settings_.clearance || settings_.initial_penetration != InitialPenetration::Force))
+    initial_gaps(initial);
+}
+
+// The initial treatment of the settings, from each point's partner in the reference
+// configuration (as ContactInterface::initial_state does for the explicit solver).
+void StaticContact::initial_gaps(const ContactInput& initial) {
+  if (!settings_.small_sliding) evaluate(initial);  // small sliding: evaluated just above
+  const std::size_t np = points_.size();
+  if (settings_.clearance) shift_.assign(np, 0.0);
+  if (settings_.initial_penetration == InitialPenetration::Offset) released_.assign(np, 0);
+  for (std::size_t p = 0; p < np; ++p) {
+    const StaticContactPoint& point = points_[p];
+    if (!point.paired) continue;
+    if (settings_.clearance) {
+      shift_[p] = *settings_.clearance - point.gap;
+      continue;
+    }
+    if (!(point.gap < 0.0)) continue;
+    const double depth = -point.gap;
+    if (settings_.initial_penetration == InitialPenetration::Shift)
+      committed_[p].initial_offset = depth;
+    else if (depth > settings_.initial_max)
+      released_[p] = 1;
+    else
+      committed_[p].initial_offset = std::min(depth, settings_.initial_offset);
+  }
+  trial_ = committed_;
+  std::fill(points_.begin(), points_.end(), StaticContactPoint{});
+  elements_.clear();
 }
 
 void StaticContact::evaluate(const ContactInput& in) {
@@ -171,7 +202,8 @@ void StaticContact::evaluate(const ContactInput& in) {
     History& h = trial_[p];
     const History& c = committed_[p];
     h = History{};
-    h.slip_work = 0.0;
+    h.initial_offset = c.initial_offset;
+    if (!released_.empty() && released_[p]) continue;
     const Vec3 x = out.position;
     // The partner: fixed for tied pairs and small sliding once found, else searched.
     std::int32_t facet = -1;
@@ -208,7 +240,10 @@ void StaticContact::evaluate(const ContactInput& in) {
       }
     }
     if (facet < 0) continue;
-    const double gap = dot(x - q, normal);
+    out.paired = true;
+    const double distance = dot(x - q, normal);
+    if (distance >= 0.0) h.initial_offset = 0.0;  // separated: the initial offset has done its job
+    const double gap = distance + h.initial_offset + (shift_.empty() ? 0.0 : shift_[p]);
     const double d = -gap;
     out.gap = gap;
     h.facet = facet, h.xi = xi, h.eta = eta;
@@ -251,14 +286,14 @@ void StaticContact::evaluate(const ContactInput& in) {
       pressure = r.pressure, kn = r.stiffness, energy = r.energy;
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) C[i][j] = kn * normal[i] * normal[j];
-      if (settings_.friction > 0.0) {
+      if (settings_.friction > 0.0 || settings_.stick) {
         const Vec3 slip = tangential(motion, normal);
         const Vec3 t0 = c.in_contact ? tangential(c.traction, normal) : Vec3{};
         const Vec3 trial = t0 - slip * kt;
         const double limit = settings_.friction * pressure;
         const double size = norm(trial);
         out.slip = slip;
-        if (size <= limit) {
+        if (settings_.stick || size <= limit) {
           traction = trial;
           for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 3; ++j) C[i][j] += kt * P[i][j];

@@ -23,12 +23,14 @@
 // Evaluations do not change the history; commit() does, once an increment has converged.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "abut/contact/broad_phase.hpp"
 #include "abut/contact/interface.hpp"
 #include "abut/contact/laws/normal.hpp"
+#include "abut/contact/settings.hpp"
 #include "abut/contact/surface.hpp"
 
 namespace abut {
@@ -47,6 +49,19 @@ struct StaticContactSettings {
   double search_distance = 0.0;
   double depth = 0.0;
   double edge_angle = 20.0;  // degrees: edges sharper than this end the surface (narrow_phase.hpp)
+  // STICK (OptiStruct TYPE = STICK, Metafor's sticking contact): no sliding while closed, the
+  // stick spring k_t however large the traction; the surfaces may still separate.
+  bool stick = false;
+  // The reference configuration (the `initial` coordinates of the constructor), treated as the
+  // explicit interface does (settings.hpp): a point paired there with a clearance starts with
+  // that opening whatever its distance, for the whole run (OptiStruct CLEARANCE; negative:
+  // interference); without one, an initial penetration d0 pushes from the start (Force, as
+  // CalculiX), is subtracted until the point first separates (Shift, Radioss Inacti = 5), or is
+  // subtracted up to initial_offset and released for good beyond initial_max (Offset, seed 000).
+  std::optional<double> clearance;
+  InitialPenetration initial_penetration = InitialPenetration::Force;
+  double initial_offset = 0.0;  // [length], Offset only
+  double initial_max = 0.0;     // [length], Offset only
 };
 
 // A contact element of the last evaluation: its nodes (no repeats) with their weights w_a, the
@@ -65,11 +80,12 @@ struct StaticContactPoint {
   std::int32_t node = -1;   // node-to-surface: the secondary node
   std::int32_t facet = -1;  // surface-to-surface: its own facet
   Vec3 position;
-  bool active = false;
+  bool paired = false;  // has a partner facet, open or closed
+  bool active = false;  // closed: carries a spring
   bool slipping = false;
   double area = 0.0;
   Vec3 normal;            // partner's normal (the push direction)
-  double gap = 0.0;       // negative = penetration
+  double gap = 0.0;       // negative = penetration (after the initial shifts, see settings)
   double pressure = 0.0;  // normal traction, positive in compression
   Vec3 traction;          // tangential traction on the point
   Vec3 slip;              // tangential relative motion since the last converged state
@@ -114,7 +130,9 @@ class StaticContact {
     Vec3 offset;    // tied: relative position x_point - x_partner when the pair formed
     Vec3 total_slip;
     double slip_work = 0.0;
+    double initial_offset = 0.0;  // subtracted from the penetration until the point separates
   };
+  void initial_gaps(const ContactInput& initial);
   void find_partners(const ContactInput& in);
 
   StaticContactSettings settings_;
@@ -130,6 +148,8 @@ class StaticContact {
   std::vector<double> xc_, yc_, zc_;                          // at the last commit
   std::vector<double> xe_, ye_, ze_;                          // of the last evaluation
   std::vector<History> committed_, trial_;
+  std::vector<double> shift_;           // per point: clearance - initial gap (empty: none)
+  std::vector<std::uint8_t> released_;  // per point: released at the start (empty: none)
   std::vector<StaticContactPoint> points_;
   std::vector<StaticContactElement> elements_;
   bool symmetric_ = true;

@@ -87,8 +87,11 @@ class StaticSolver {
   int integration_points(std::size_t hex) const;  // 8 (C3D8) or 1 (C3D8R)
   std::span<const double> element_energy() const;
   const StaticStatistics& statistics() const;
-  // The contacts of Model::contacts, in order, at the last converged state.
+  // The contact passes at the last converged state: for each contact of Model::contacts, in
+  // order, one (surface 1's points on surface 2) or two (symmetric: also 2 on 1); contact_of(k)
+  // is the index in Model::contacts of pass k.
   std::span<const StaticContact> contacts() const;
+  std::size_t contact_of(std::size_t pass) const;
 
  private:
   struct Impl;

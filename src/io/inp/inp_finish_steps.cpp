@@ -206,6 +206,8 @@ void finish_contacts(Reader& r) {
     c.one_way = true;  // CalculiX pairs act one way: slave points against master faces
     c.symmetric = false;
     c.damping = 0.0;  // static
+    // CalculiX: an initial overclosure is a real penetration (contact6; ADJUST removes it).
+    c.initial_penetration = InitialPenetration::Force;
     c.adjust_depth = p.adjust;
     c.small_sliding = p.small_sliding;
     const Behaviour& b = *in.behaviour;

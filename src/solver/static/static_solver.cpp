@@ -14,6 +14,7 @@
 #include "abut/linalg/sparse_matrix.hpp"
 #include "abut/solver/contact_surfaces.hpp"
 #include "solver/static/dof_map.hpp"
+#include "solver/static/static_contacts.hpp"
 #include "solver/static/static_elements.hpp"
 #include "solver/static/step_loads.hpp"
 
@@ -103,7 +104,8 @@ struct StaticSolver::Impl {
   detail::StaticElements elements;
   std::vector<double> u, reaction, nodal_force;
   StaticStatistics stats;
-  std::vector<StaticContact> contacts;
+  std::vector<StaticContact> contacts;  // passes (static_contacts.hpp)
+  std::vector<std::size_t> contact_of;  // per pass: its index in Model::contacts
   std::unique_ptr<LinearSolver> symmetric_solver, general_solver;
   bool indefinite = false;  // NLGEOM made the tangent indefinite: LU from then on
   LinearSolver* linear = nullptr;
@@ -117,82 +119,9 @@ struct StaticSolver::Impl {
     u.assign(3 * m.mesh.nodes.size(), 0.0);
     reaction.assign(u.size(), 0.0);
     nodal_force.assign(u.size(), 0.0);
-    for (const ContactSpec& spec : m.contacts) contacts.push_back(make_contact(spec));
-  }
-
-  // The contact of a *CONTACT PAIR (or *CONTACT) for the static solver.
-  StaticContact make_contact(const ContactSpec& spec) const {
-    const Mesh& mesh = model.mesh;
-    StaticContactSettings s;
-    s.node_to_surface = spec.discretisation == Discretisation::NodeToSurface;
-    s.accuracy_level = spec.accuracy_level;
-    s.small_sliding = spec.small_sliding;
-    using Law = ContactSpec::FrictionLaw;
-    switch (spec.friction_law) {
-      case Law::Impetus:
-        s.friction = spec.friction;
-        break;
-      case Law::None:
-        break;
-      case Law::Coulomb:
-        s.friction = spec.mu_static;
-        if (spec.mu_dynamic != spec.mu_static)
-          throw InputError(spec.friction_where,
-                           "static steps take one Coulomb coefficient: "
-                           "give mu_d equal to mu_s");
-        break;
-      case Law::Freeze:
-        s.tied = true;
-        break;
-      default:
-        throw InputError(spec.friction_where,
-                         "this friction law is not supported in static steps yet (NONE, "
-                         "COULOMB and FREEZE/TIED are)");
-    }
-    if (spec.friction_function.valid())
-      throw InputError(spec.where, "a friction function is not supported in static steps yet");
-    const std::vector<SkinFace> main_faces = contact_faces(model, spec.surface2, false);
-    ContactSurface main = contact_surface(mesh, main_faces, [](const SkinFace&) { return 0.0; });
-    double thickness = 0.0, young = 0.0;
-    for (const SkinFace& f : main_faces) {
-      thickness += f.thickness / static_cast<double>(main_faces.size());
-      // Young's modulus from the initial bulk and shear moduli: E = 9 K G / (3 K + G).
-      const ElasticModuli m = initial_moduli(model.material_of_part(f.part));
-      if (m.shear > 0.0) young = std::max(young, 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear));
-    }
-    // Automatic penalty: 10 E / L, E the stiffest material of surface 2 and L its mean element
-    // size normal to the surface (CalculiX recommends 5 to 50 times the modulus per unit length).
-    s.penalty = spec.penalty ? *spec.penalty : 10.0 * young / thickness;
-    s.stick_slope = spec.tangential_penalty.value_or(s.penalty);
-    if (spec.penalty_curve.valid()) s.normal = curve_penalty(model, spec.penalty_curve);
-    if (spec.exponential)
-      s.normal = ExponentialOverclosure{spec.exponential->c0, spec.exponential->p0};
-    s.depth = spec.detection_depth.value_or(0.5 * thickness);
-    s.search_distance = 0.5 * thickness;
-    std::vector<std::int32_t> secondary_nodes;
-    ContactSurface secondary;
-    if (spec.surface1.type == EntityType::NodeSet) {
-      // A node-based surface: its nodes act on their own, each with a quarter of the area of
-      // every exterior face of the mesh it belongs to (CalculiX's rule for nodal slave surfaces,
-      // tiefaccont.f: all external faces containing the node, coefficient 1/4 each).
-      secondary_nodes = model.nodes_of(spec.surface1);
-      std::vector<std::uint8_t> in_set(mesh.nodes.size(), 0);
-      for (const std::int32_t n : secondary_nodes) in_set[n] = 1;
-      std::vector<SkinFace> faces;
-      for (const SkinFace& f : exterior_faces(mesh, false)) {
-        int inside = 0;
-        for (const std::int32_t n : f.nodes) inside += in_set[n];
-        if (inside > 0) faces.push_back(f);
-      }
-      secondary = contact_surface(mesh, faces, [](const SkinFace&) { return 0.0; });
-      s.node_to_surface = true;
-    } else {
-      secondary = contact_surface(mesh, contact_faces(model, spec.surface1, false),
-                                  [](const SkinFace&) { return 0.0; });
-    }
-    const Nodes& nodes = mesh.nodes;
-    const ContactInput initial{nodes.x, nodes.y, nodes.z, {}, {}, {}, 0.0, 0.0};
-    return StaticContact(s, std::move(secondary), std::move(main), secondary_nodes, initial);
+    detail::StaticContacts set = detail::make_static_contacts(m);
+    contacts = std::move(set.passes);
+    contact_of = std::move(set.contact_of);
   }
 
   // The dof of an equation, for messages.
@@ -366,13 +295,17 @@ struct StaticSolver::Impl {
       const StaticStep& step = model.static_steps[s];
       nonlinear_geometry = nonlinear_geometry || step.nonlinear_geometry;
       for (const ContactChange& change : step.contact_changes) {
-        if (change.contact >= contacts.size())
+        if (change.contact >= model.contacts.size())
           throw InputError(change.where, "*CHANGE FRICTION names a contact that does not exist");
-        StaticContact& c = contacts[change.contact];
-        if (c.settings().tied)
-          throw InputError(change.where, "*CHANGE FRICTION on a tied contact is not supported");
-        c.change_friction(change.friction.value_or(c.settings().friction),
-                          change.stick_slope.value_or(c.settings().stick_slope));
+        for (std::size_t pass = 0; pass < contacts.size(); ++pass) {
+          if (contact_of[pass] != change.contact) continue;
+          StaticContact& c = contacts[pass];
+          if (c.settings().tied || c.settings().stick)
+            throw InputError(change.where,
+                             "*CHANGE FRICTION on a tied or sticking contact is not supported");
+          c.change_friction(change.friction.value_or(c.settings().friction),
+                            change.stick_slope.value_or(c.settings().stick_slope));
+        }
       }
       const detail::StepLoads loads(model, step, u, history, total);
       const detail::DofMap dofs(model.mesh.nodes.size(), loads.prescribed(), model.equations);
@@ -458,5 +391,6 @@ int StaticSolver::integration_points(std::size_t hex) const {
 std::span<const double> StaticSolver::element_energy() const { return impl_->elements.energy(); }
 const StaticStatistics& StaticSolver::statistics() const { return impl_->stats; }
 std::span<const StaticContact> StaticSolver::contacts() const { return impl_->contacts; }
+std::size_t StaticSolver::contact_of(std::size_t pass) const { return impl_->contact_of[pass]; }
 
 }  // namespace abut

@@ -1,0 +1,164 @@
+#include "solver/static/static_contacts.hpp"
+
+#include <algorithm>
+#include <string>
+#include <variant>
+
+#include "abut/core/error.hpp"
+#include "abut/solver/contact_surfaces.hpp"
+
+namespace abut::detail {
+
+namespace {
+
+// Default delta0_max of seed 000: 4% of the element thickness (as the explicit interface).
+constexpr double kDefaultInitialMaxFraction = 0.04;
+
+[[noreturn]] void not_static(const SourceLocation& where, const std::string& what) {
+  throw InputError(where, what + " is not supported in static steps yet");
+}
+
+// Everything of the spec the static contact does not do: an error at the card that asks for it.
+void check_static(const ContactSpec& spec) {
+  using Law = ContactSpec::FrictionLaw;
+  if (spec.friction_function.valid()) not_static(spec.where, "a friction function (fid)");
+  if (spec.begin_time != 0.0 || spec.end_time < 1e20)
+    not_static(spec.where, "an activation window (t_start, t_end)");
+  if (spec.initial_geometry || spec.moving_geometry)
+    not_static(spec.where, "a contact region (gid_0, gid_1)");
+  if (spec.wear1.valid() || spec.wear2.valid()) not_static(spec.where, "wear");
+  if (spec.thermal.valid() || spec.friction_heat) not_static(spec.where, "thermal contact");
+  if (spec.stick_stress) not_static(spec.where, "sticking by sigma_stick");
+  if (spec.accuracy_edge) not_static(spec.where, "edge contact (accuracy level with E)");
+  if (spec.sense != ContactSense::Positive)
+    not_static(spec.normal_where, "a contact sense other than POSITIVE");
+  if (spec.adhesion) not_static(spec.where, "adhesion (*CONTACT_ADHESION)");
+  if (!spec.pair_scales.empty())
+    not_static(spec.pair_scales.front().where, "*CONTACT_SCALE_PENALTY");
+  if (!spec.stiffness_where.file.empty())
+    not_static(spec.stiffness_where,
+               "*CONTACT_STIFFNESS (the static penalty is pfac of *CONTACT, or 10 E / L)");
+  if (!spec.gap_where.file.empty()) not_static(spec.gap_where, "*CONTACT_GAP");
+  if (!spec.erosion_where.file.empty()) not_static(spec.erosion_where, "*CONTACT_EROSION");
+  if (!spec.edge_where.file.empty()) not_static(spec.edge_where, "*CONTACT_EDGE");
+  if (spec.friction_filter.kind != FrictionFilter::Kind::None)
+    not_static(spec.friction_where, "friction filtering");
+  switch (spec.friction_law) {
+    case Law::Impetus:
+    case Law::None:
+    case Law::Coulomb:
+    case Law::Stick:
+    case Law::Freeze:
+      break;
+    default:
+      throw InputError(spec.friction_where,
+                       "this friction law is not supported in static steps yet (NONE, COULOMB, "
+                       "STICK and FREEZE/TIED are)");
+  }
+  if (spec.friction_law == Law::Coulomb && spec.mu_dynamic != spec.mu_static)
+    throw InputError(spec.friction_where,
+                     "static steps take one Coulomb coefficient: give mu_d equal to mu_s");
+}
+
+// Young's modulus of a part from its initial moduli: E = 9 K G / (3 K + G).
+double young_of(const Model& model, std::int64_t part) {
+  const ElasticModuli m = initial_moduli(model.material_of_part(part));
+  return m.shear > 0.0 ? 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear) : 0.0;
+}
+
+// The surface of a contact side: its faces, or, for a node set, every exterior face with one of
+// its nodes (which gives each node a quarter of every face around it: CalculiX's area rule for
+// nodal slave surfaces, tiefaccont.f) and the nodes themselves.
+struct Side {
+  std::vector<SkinFace> faces;
+  std::vector<std::int32_t> nodes;  // node set only
+};
+
+Side side_of(const Model& model, const EntityRef& entity) {
+  Side s;
+  if (entity.type != EntityType::NodeSet) {
+    s.faces = contact_faces(model, entity, false);
+    return s;
+  }
+  const Mesh& mesh = model.mesh;
+  s.nodes = model.nodes_of(entity);
+  std::vector<std::uint8_t> in_set(mesh.nodes.size(), 0);
+  for (const std::int32_t n : s.nodes) in_set[n] = 1;
+  for (const SkinFace& f : exterior_faces(mesh, false)) {
+    int inside = 0;
+    for (const std::int32_t n : f.nodes) inside += in_set[n];
+    if (inside > 0) s.faces.push_back(f);
+  }
+  return s;
+}
+
+double mean_thickness(const std::vector<SkinFace>& faces) {
+  double t = 0.0;
+  for (const SkinFace& f : faces) t += f.thickness / static_cast<double>(faces.size());
+  return t;
+}
+
+// One pass: the points of `own` against the faces of `target`.
+StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side& own,
+                        const Side& target) {
+  const Mesh& mesh = model.mesh;
+  using Law = ContactSpec::FrictionLaw;
+  StaticContactSettings s;
+  s.node_to_surface = spec.discretisation == Discretisation::NodeToSurface || !own.nodes.empty();
+  s.accuracy_level = spec.accuracy_level;
+  s.small_sliding = spec.small_sliding;
+  s.friction = spec.friction_law == Law::Coulomb   ? spec.mu_static
+               : spec.friction_law == Law::Impetus ? spec.friction
+                                                   : 0.0;
+  s.stick = spec.friction_law == Law::Stick;
+  s.tied = spec.friction_law == Law::Freeze;
+  double young = 0.0;
+  for (const SkinFace& f : target.faces) young = std::max(young, young_of(model, f.part));
+  const double thickness = mean_thickness(target.faces);
+  // Automatic penalty: 10 E / L, E the stiffest material of the target surface and L its mean
+  // element size normal to the surface (CalculiX recommends 5 to 50 times the modulus per unit
+  // length).
+  s.penalty = spec.penalty ? *spec.penalty : 10.0 * young / thickness;
+  s.stick_slope = spec.tangential_penalty.value_or(s.penalty);
+  if (spec.penalty_curve.valid()) s.normal = curve_penalty(model, spec.penalty_curve);
+  if (spec.exponential)
+    s.normal = ExponentialOverclosure{spec.exponential->c0, spec.exponential->p0};
+  s.depth = spec.detection_depth.value_or(0.5 * thickness);
+  s.search_distance = 0.5 * thickness;
+  s.clearance = spec.clearance;
+  s.initial_penetration = spec.initial_penetration;
+  s.initial_offset = spec.initial_offset;
+  s.initial_max = spec.initial_max.value_or(kDefaultInitialMaxFraction * mean_thickness(own.faces));
+  const auto no_penalty = [](const SkinFace&) { return 0.0; };
+  const Nodes& nodes = mesh.nodes;
+  const ContactInput initial{nodes.x, nodes.y, nodes.z, {}, {}, {}, 0.0, 0.0};
+  return StaticContact(s, contact_surface(mesh, own.faces, no_penalty),
+                       contact_surface(mesh, target.faces, no_penalty), own.nodes, initial);
+}
+
+}  // namespace
+
+StaticContacts make_static_contacts(const Model& model) {
+  StaticContacts out;
+  for (std::size_t i = 0; i < model.contacts.size(); ++i) {
+    const ContactSpec& spec = model.contacts[i];
+    check_static(spec);
+    if (spec.surface1.type == spec.surface2.type && spec.surface1.id == spec.surface2.id)
+      not_static(spec.where, "self contact (the same entity on both sides)");
+    if (spec.surface2.type == EntityType::NodeSet)
+      throw InputError(spec.surface2.where,
+                       "surface 2 of a contact must be made of element faces, not nodes");
+    const Side one = side_of(model, spec.surface1), two = side_of(model, spec.surface2);
+    out.passes.push_back(make_pass(model, spec, one, two));
+    out.contact_of.push_back(i);
+    // Symmetric unless one-way (the explicit interface's rule): node sets act one way.
+    const bool symmetric = spec.symmetric.value_or(!spec.one_way) && one.nodes.empty();
+    if (symmetric) {
+      out.passes.push_back(make_pass(model, spec, two, one));
+      out.contact_of.push_back(i);
+    }
+  }
+  return out;
+}
+
+}  // namespace abut::detail

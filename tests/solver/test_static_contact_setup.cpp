@@ -1,0 +1,83 @@
+// How the static solver takes a model's contacts (solver/static/static_contacts.hpp): one pass
+// per one-way contact, two per symmetric one (the explicit interface's rule), and an error at
+// the card for every contact feature that static steps do not have, rather than ignoring it.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <string>
+
+#include "abut/mesh/generators.hpp"
+#include "abut/solver/static_solver.hpp"
+
+namespace abut {
+namespace {
+
+// Two stacked blocks, part 1 below z = 1, part 2 above; a contact of part 2 on part 1.
+Model stacked() {
+  Model m;
+  generate_box(m.mesh, {1, 2, 2, 1, {0, 0, 0}, {1, 1, 1}});
+  generate_box(m.mesh, {2, 2, 2, 1, {0, 0, 1}, {1, 1, 2}});
+  Material mat;
+  mat.id = 1;
+  mat.params = ElasticParams{7.8e-9, 1000.0, 0.3};
+  m.materials.push_back(mat);
+  for (const std::int64_t id : {1, 2}) {
+    Part p;
+    p.id = id;
+    p.material_id = 1;
+    p.solid_integration = Part::SolidIntegration::Full;
+    m.parts.push_back(p);
+  }
+  ContactSpec c;
+  c.id = 1;
+  c.surface1 = {EntityType::Part, 2, {}};
+  c.surface2 = {EntityType::Part, 1, {}};
+  c.where = {"t.k", 7, "", ""};
+  m.contacts.push_back(c);
+  m.static_steps.push_back(StaticStep{});
+  return m;
+}
+
+TEST(StaticContactSetup, SymmetricContactsRunBothWays) {
+  Model m = stacked();
+  const StaticSolver symmetric(m);
+  ASSERT_EQ(symmetric.contacts().size(), 2u);
+  EXPECT_EQ(symmetric.contact_of(0), 0u);
+  EXPECT_EQ(symmetric.contact_of(1), 0u);
+  m.contacts[0].one_way = true;
+  const StaticSolver one_way(m);
+  EXPECT_EQ(one_way.contacts().size(), 1u);
+}
+
+TEST(StaticContactSetup, ExplicitOnlyFeaturesAreErrorsAtTheirCard) {
+  const auto expect_error = [](const std::function<void(ContactSpec&)>& change,
+                               const std::string& message) {
+    Model m = stacked();
+    change(m.contacts[0]);
+    try {
+      const StaticSolver s(m);
+      ADD_FAILURE() << "expected an error containing '" << message << "'";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+      EXPECT_EQ(e.where().file, "t.k") << e.what();
+    }
+  };
+  expect_error([](ContactSpec& c) { c.begin_time = 0.5; }, "activation window");
+  expect_error([](ContactSpec& c) { c.stick_stress = 10.0; }, "sigma_stick");
+  expect_error(
+      [](ContactSpec& c) {
+        c.friction_law = ContactSpec::FrictionLaw::Tresca;
+        c.friction_where = {"t.k", 9, "", ""};
+      },
+      "friction law is not supported in static steps");
+  expect_error(
+      [](ContactSpec& c) {
+        c.sense = ContactSense::Bilateral;
+        c.normal_where = {"t.k", 11, "", ""};
+      },
+      "contact sense");
+  expect_error([](ContactSpec& c) { c.surface1 = c.surface2; }, "self contact");
+}
+
+}  // namespace
+}  // namespace abut
