@@ -160,6 +160,7 @@ void StaticContact::evaluate(const ContactInput& in) {
       out.position = quad_point(c, point_xi_[p], point_eta_[p]);
       out.area = point_weight_[p] * jacobian;
     }
+    out.area *= settings_.weight;
     qx[p] = out.position.x, qy[p] = out.position.y, qz[p] = out.position.z;
   }
   // Candidate facets.

@@ -50,14 +50,19 @@ void check_contact_options(const ContactSpec& c) {
 }
 
 void read_contact_discretization(DeckReader& d, Block& b) {
-  const Row r = b.row({"coid", "method", "symmetric"});
+  const Row r = b.row({"coid", "method", "symmetric", "sliding"});
   const Discretisation method = word_choice(
       r, 1, Discretisation::SurfaceToSurface,
       {{"S2S", Discretisation::SurfaceToSurface}, {"N2S", Discretisation::NodeToSurface}},
       "S2S (surface to surface) or N2S (node to surface)");
   std::optional<bool> symmetric;
   if (r.given(2)) symmetric = r.flag(2);
-  refine_contact(d, r, [r, method, symmetric](ContactSpec& c) {
+  // OptiStruct TRACK: SMALL pairs each point once, in the initial configuration (static steps).
+  const bool small_sliding =
+      word_choice(r, 3, false, {{"FINITE", false}, {"SMALL", true}},
+                  "FINITE (partners searched as the bodies move) or SMALL (partners of the "
+                  "initial configuration kept; static steps)");
+  refine_contact(d, r, [r, method, symmetric, small_sliding](ContactSpec& c) {
     const bool node_set = c.surface1.type == EntityType::NodeSet;
     if (node_set && method == Discretisation::SurfaceToSurface) {
       r.fail(1, "surface 1 of " + contact_at(c) +
@@ -75,6 +80,7 @@ void read_contact_discretization(DeckReader& d, Block& b) {
     }
     c.discretisation = method;
     c.symmetric = symmetric;
+    c.small_sliding = small_sliding;
     c.discretisation_where = r.where();
   });
 }

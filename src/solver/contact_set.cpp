@@ -392,6 +392,11 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
   const Nodes& nodes = model.mesh.nodes;
   const ContactInput initial{nodes.x, nodes.y, nodes.z, vx0, vy0, vz0, model.time.start_time, 0.0};
   for (const ContactSpec& spec : model.contacts) {
+    if (spec.small_sliding)
+      throw InputError(
+          spec.discretisation_where.file.empty() ? spec.where : spec.discretisation_where,
+          "small sliding (TRACK = SMALL) is an option of static steps: the explicit "
+          "solver searches partners as the bodies move (give FINITE)");
     // Node-to-surface of a node group: its nodes on the model's exterior faces that hold them.
     std::vector<std::int32_t> secondary_nodes;
     std::vector<SkinFace> faces1;

@@ -77,6 +77,10 @@ TEST(DeckContactDiscretization, NodeToSurfaceAndSymmetry) {
   EXPECT_FALSE(d.symmetric.has_value());
   EXPECT_EQ(d.discretisation_where.line, kLine + 1);
   EXPECT_EQ(contact_of("*CONTACT_DISCRETIZATION\n3, s2s, 1\n").symmetric, true);
+  EXPECT_FALSE(d.small_sliding);  // OptiStruct TRACK: FINITE by default in abut
+  EXPECT_TRUE(contact_of("*CONTACT_DISCRETIZATION\n3, S2S, , small\n").small_sliding);
+  EXPECT_THAT(error_at("*CONTACT_DISCRETIZATION\n3, S2S, , tiny\n", kLine + 1, "sliding"),
+              HasSubstr("FINITE"));
 
   // Without the keyword: seed 000's surface to surface, symmetric by default.
   const ContactSpec e = contact_of("");

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "abut/mesh/generators.hpp"
+#include "abut/solver/simulation.hpp"
 #include "abut/solver/static_solver.hpp"
 
 namespace abut {
@@ -77,6 +78,24 @@ TEST(StaticContactSetup, ExplicitOnlyFeaturesAreErrorsAtTheirCard) {
       },
       "contact sense");
   expect_error([](ContactSpec& c) { c.surface1 = c.surface2; }, "self contact");
+}
+
+// Small sliding (OptiStruct TRACK = SMALL) pairs points once; the explicit solver searches every
+// cycle, so it refuses the option rather than ignore it.
+TEST(StaticContactSetup, SmallSlidingIsAStaticOption) {
+  Model m = stacked();
+  m.static_steps.clear();
+  m.time.end_time = 1e-3;
+  m.contacts[0].penalty = 1e3;
+  m.contacts[0].small_sliding = true;
+  try {
+    const Simulation s(m);
+    ADD_FAILURE() << "expected an error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("small sliding"), std::string::npos) << e.what();
+  }
+  m.static_steps.push_back(StaticStep{});
+  EXPECT_NO_THROW(StaticSolver s(m));
 }
 
 }  // namespace

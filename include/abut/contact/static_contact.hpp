@@ -49,6 +49,9 @@ struct StaticContactSettings {
   double search_distance = 0.0;
   double depth = 0.0;
   double edge_angle = 20.0;  // degrees: edges sharper than this end the surface (narrow_phase.hpp)
+  // Share of this pass in its contact: 1, or 1/2 for each of the two passes of a symmetric
+  // contact (as the explicit interface weighs them); scales the points' areas.
+  double weight = 1.0;
   // STICK (OptiStruct TYPE = STICK, Metafor's sticking contact): no sliding while closed, the
   // stick spring k_t however large the traction; the surfaces may still separate.
   bool stick = false;

@@ -100,13 +100,14 @@ double mean_thickness(const std::vector<SkinFace>& faces) {
 
 // One pass: the points of `own` against the faces of `target`.
 StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side& own,
-                        const Side& target) {
+                        const Side& target, double weight) {
   const Mesh& mesh = model.mesh;
   using Law = ContactSpec::FrictionLaw;
   StaticContactSettings s;
   s.node_to_surface = spec.discretisation == Discretisation::NodeToSurface || !own.nodes.empty();
   s.accuracy_level = spec.accuracy_level;
   s.small_sliding = spec.small_sliding;
+  s.weight = weight;
   s.friction = spec.friction_law == Law::Coulomb   ? spec.mu_static
                : spec.friction_law == Law::Impetus ? spec.friction
                                                    : 0.0;
@@ -149,12 +150,14 @@ StaticContacts make_static_contacts(const Model& model) {
       throw InputError(spec.surface2.where,
                        "surface 2 of a contact must be made of element faces, not nodes");
     const Side one = side_of(model, spec.surface1), two = side_of(model, spec.surface2);
-    out.passes.push_back(make_pass(model, spec, one, two));
-    out.contact_of.push_back(i);
-    // Symmetric unless one-way (the explicit interface's rule): node sets act one way.
+    // Symmetric unless one-way (the explicit interface's rule, each way with weight 1/2): node
+    // sets act one way.
     const bool symmetric = spec.symmetric.value_or(!spec.one_way) && one.nodes.empty();
+    const double weight = symmetric ? 0.5 : 1.0;
+    out.passes.push_back(make_pass(model, spec, one, two, weight));
+    out.contact_of.push_back(i);
     if (symmetric) {
-      out.passes.push_back(make_pass(model, spec, two, one));
+      out.passes.push_back(make_pass(model, spec, two, one, weight));
       out.contact_of.push_back(i);
     }
   }

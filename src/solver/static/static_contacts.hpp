@@ -2,8 +2,8 @@
 // The contacts of a model for the static solver: each ContactSpec (*CONTACT PAIR of an .inp deck,
 // *CONTACT of abut's own) becomes one pass of the contact library's StaticContact (surface 1's
 // points against surface 2), or two when the contact is symmetric (also surface 2's points
-// against surface 1, as the explicit interface does). Features the static solver does not have are
-// InputErrors at their card, never ignored.
+// against surface 1, each with weight 1/2, as the explicit interface does). Features the static
+// solver does not have are InputErrors at their card, never ignored.
 #include <cstddef>
 #include <vector>
 
