@@ -1,6 +1,7 @@
 // Runs the static steps of a model and writes what a user opens afterwards:
 //   results.pvd + states/state_NNNN.vtu   one state per converged increment
 //   increments.csv                        step, increment, attempts, iterations, times, residual
+//   energy.csv, contact.csv               energies; per contact forces, energy, penetration
 //   results.dat                           the *NODE/*EL/*CONTACT PRINT blocks (CalculiX layout)
 //   summary.json                          equations, increments, iterations, solve times
 #include <fmt/format.h>
@@ -9,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <ostream>
 
 #include "abut/io/csv_history.hpp"
@@ -25,8 +27,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // One ParaView state: displacement and nodal force (loads and reactions) at the nodes; per hex
-// the mean over its Gauss points of the stress tensor and of the von Mises stress, and its strain
-// energy.
+// the mean over its Gauss points of the stress tensor and of the von Mises stress, the largest
+// equivalent plastic strain of its points, and its strain energy.
 void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
                  const StaticSolver& solver, double time) {
   const Mesh& mesh = model.mesh;
@@ -65,6 +67,48 @@ void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
   series.add(time, name);
 }
 
+// One contact.csv row per contact of the model (the explicit run's columns), summed over its
+// passes; a symmetric contact's second pass acts on surface 2, so its force counts negated.
+void write_contact_rows(CsvHistory& csv, const Model& model, const StaticSolver& solver,
+                        double time) {
+  const auto passes = solver.contacts();
+  for (std::size_t i = 0; i < model.contacts.size(); ++i) {
+    Vec3 force{};
+    double normal = 0.0, tangential = 0.0, energy = 0.0, friction = 0.0, penetration = 0.0;
+    std::int64_t active = 0;
+    bool first_pass = true;
+    for (std::size_t k = 0; k < passes.size(); ++k) {
+      if (solver.contact_of(k) != i) continue;
+      const StaticContact& c = passes[k];
+      force = first_pass ? force + c.total_force() : force - c.total_force();
+      first_pass = false;
+      friction += c.friction_work();
+      for (const StaticContactPoint& p : c.points()) {
+        if (!p.active) continue;
+        ++active;
+        normal += p.pressure * p.area;
+        tangential += norm(p.traction) * p.area;
+        energy += p.energy;
+        penetration = std::max(penetration, -p.gap);
+      }
+    }
+    csv.write_row(time, {model.contacts[i].id, force.x, force.y, force.z, normal, tangential,
+                         energy, friction, penetration, active});
+  }
+}
+
+// energy.csv of a static run: the elements' energy (elastic, hourglass and plastic work), the
+// contact springs' energy and the friction work.
+void write_energy_row(CsvHistory& csv, const StaticSolver& solver, double time) {
+  double internal = 0.0, contact = 0.0, friction = 0.0;
+  for (const double e : solver.element_energy()) internal += e;
+  for (const StaticContact& c : solver.contacts()) {
+    contact += c.energy();
+    friction += c.friction_work();
+  }
+  csv.write_row(time, {internal, contact, friction});
+}
+
 }  // namespace
 
 RunReport run_static_analysis(const Model& model, const RunOptions& options, std::ostream& log) {
@@ -81,6 +125,13 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
   write_state(dir, series, model, solver, 0.0);
   CsvHistory increments(dir / "increments.csv",
                         {"step", "increment", "attempts", "iterations", "step_time", "residual"});
+  CsvHistory energy(dir / "energy.csv", {"internal", "contact", "friction"});
+  std::optional<CsvHistory> contact;
+  if (!model.contacts.empty())
+    contact.emplace(
+        dir / "contact.csv",
+        std::vector<std::string>{"contact", "fx", "fy", "fz", "normal_force", "tangential_force",
+                                 "energy", "friction_energy", "max_penetration", "active_points"});
   std::ofstream printed(dir / "results.dat");
   RunReport report;
   const auto start = std::chrono::steady_clock::now();
@@ -93,6 +144,8 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
            static_cast<std::int64_t>(inc.attempts), static_cast<std::int64_t>(inc.iterations),
            inc.step_time, inc.residual});
       write_state(dir, series, model, solver, inc.total_time);
+      write_energy_row(energy, solver, inc.total_time);
+      if (contact) write_contact_rows(*contact, model, solver, inc.total_time);
       print_static_results(printed, model, model.static_steps[inc.step], solver, inc);
       printed.flush();
       last_time = inc.total_time;

@@ -34,8 +34,8 @@ struct RunReport {
 RunReport run_simulation(const Model& model, const RunOptions& options, std::ostream& log);
 
 // The static steps of a model (src/io/run_static.cpp): a ParaView state per converged increment,
-// increments.csv, results.dat (the *NODE/*EL/*CONTACT PRINT requests in CalculiX's .dat layout)
-// and summary.json. report.cycles counts the increments; a step that does not converge is
+// increments.csv, energy.csv, contact.csv, results.dat (the *NODE/*EL/*CONTACT PRINT requests in
+// CalculiX's .dat layout) and summary.json. report.cycles counts the increments; a step that does not converge is
 // reported (stable = false) after the last converged state was written.
 RunReport run_static_analysis(const Model& model, const RunOptions& options, std::ostream& log);
 

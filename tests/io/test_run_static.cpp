@@ -1,0 +1,115 @@
+// What a static run writes (run_static.cpp): the histories a user plots. Two unit cubes stacked,
+// the lower one held at its base, the upper one pressed by a pressure p on its top face and held
+// sideways, frictionless contact in between: the contact carries p x 1 (equilibrium of the upper
+// cube), and for this linear problem the stored energy (elements and contact springs) is half the
+// work of the load, 1/2 p u_top (Clapeyron's theorem).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "abut/io/deck.hpp"
+#include "abut/io/run.hpp"
+
+namespace abut {
+namespace {
+
+constexpr double kPressure = 5.0;
+
+const char* const kDeck = R"(*NODE
+1, 0., 0., 0.
+2, 1., 0., 0.
+3, 1., 1., 0.
+4, 0., 1., 0.
+5, 0., 0., 1.
+6, 1., 0., 1.
+7, 1., 1., 1.
+8, 0., 1., 1.
+11, 0., 0., 1.
+12, 1., 0., 1.
+13, 1., 1., 1.
+14, 0., 1., 1.
+15, 0., 0., 2.
+16, 1., 0., 2.
+17, 1., 1., 2.
+18, 0., 1., 2.
+*ELEMENT, TYPE=C3D8, ELSET=LOWER
+1, 1, 2, 3, 4, 5, 6, 7, 8
+*ELEMENT, TYPE=C3D8, ELSET=UPPER
+2, 11, 12, 13, 14, 15, 16, 17, 18
+*NSET, NSET=BASE
+1, 2, 3, 4
+*NSET, NSET=UPPERN
+11, 12, 13, 14, 15, 16, 17, 18
+*MATERIAL, NAME=M
+*ELASTIC
+1000., 0.
+*SOLID SECTION, ELSET=LOWER, MATERIAL=M
+*SOLID SECTION, ELSET=UPPER, MATERIAL=M
+*SURFACE, NAME=TOPOFLOWER
+LOWER, S2
+*SURFACE, NAME=BOTTOMOFUPPER
+UPPER, S1
+*SURFACE INTERACTION, NAME=I
+*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR
+1.e5
+*CONTACT PAIR, INTERACTION=I, TYPE=SURFACE TO SURFACE
+BOTTOMOFUPPER, TOPOFLOWER
+*BOUNDARY
+BASE, 1, 3
+UPPERN, 1, 2
+*STEP
+*STATIC
+0.5, 1.
+*DLOAD
+2, P2, 5.
+*END STEP
+)";
+
+std::vector<std::vector<double>> csv_rows(const std::filesystem::path& path, std::string& header) {
+  std::ifstream in(path);
+  std::getline(in, header);
+  std::vector<std::vector<double>> rows;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<double> row;
+    std::stringstream fields(line);
+    for (std::string f; std::getline(fields, f, ',');) row.push_back(std::stod(f));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST(RunStatic, EnergyAndContactHistories) {
+  const Model model = read_inp_string_with_notes(kDeck, "t.inp").model;
+  const auto dir = std::filesystem::temp_directory_path() / "abut_test_run_static";
+  std::filesystem::remove_all(dir);
+  std::ostringstream log;
+  const RunReport report = run_static_analysis(model, {dir, 1, false}, log);
+  ASSERT_TRUE(report.stable) << log.str();
+
+  std::string header;
+  const auto contact = csv_rows(dir / "contact.csv", header);
+  EXPECT_EQ(header,
+            "time,contact,fx,fy,fz,normal_force,tangential_force,energy,friction_energy,"
+            "max_penetration,active_points");
+  ASSERT_EQ(contact.size(), 2u);  // two increments of 0.5
+  EXPECT_NEAR(contact[0][5], 0.5 * kPressure, 1e-9 * kPressure);
+  EXPECT_NEAR(contact[1][5], kPressure, 1e-9 * kPressure);
+  EXPECT_NEAR(contact[1][4], kPressure, 1e-9 * kPressure);  // on the upper cube, along +z
+  EXPECT_EQ(contact[1][10], 4.0);                           // 2 x 2 Gauss points
+
+  const auto energy = csv_rows(dir / "energy.csv", header);
+  EXPECT_EQ(header, "time,internal,contact,friction");
+  ASSERT_EQ(energy.size(), 2u);
+  // The top face's downward displacement from the contact penetration and the two cubes.
+  const double u_top = kPressure / 1000.0 * 2.0 + contact[1][9];
+  EXPECT_NEAR(energy[1][1] + energy[1][2], 0.5 * kPressure * u_top, 1e-9);
+  EXPECT_EQ(energy[1][3], 0.0);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace abut
