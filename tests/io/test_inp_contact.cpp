@@ -190,5 +190,37 @@ TOP, UNDER
   EXPECT_EQ(m.contacts[1].friction_law, ContactSpec::FrictionLaw::None);
 }
 
+// *CHANGE SURFACE BEHAVIOR (CalculiX manual): the new law for every pair of the interaction; a
+// TIED pair becomes a sliding one with the interaction's *FRICTION.
+TEST(InpContact, ChangeSurfaceBehaviorUntiesWithTheInteractionsFriction) {
+  const Model m = read(kModel + R"(*SURFACE INTERACTION, NAME=SI1
+*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TIED
+1.e9
+*FRICTION
+0.3, 1.e3
+*CONTACT PAIR, INTERACTION=SI1, TYPE=SURFACE TO SURFACE
+TOP, UNDER
+*STEP
+*STATIC
+*END STEP
+*STEP
+*STATIC
+*CHANGE SURFACE BEHAVIOR, INTERACTION=SI1
+*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL
+0.01, 5.
+*END STEP
+)")
+                      .model;
+  EXPECT_EQ(m.contacts[0].friction_law, ContactSpec::FrictionLaw::Freeze);
+  const auto& changes = m.static_steps.at(1).contact_changes;
+  ASSERT_EQ(changes.size(), 1u);
+  ASSERT_TRUE(changes[0].overclosure.has_value());
+  EXPECT_EQ(changes[0].overclosure->c0, 0.01);
+  EXPECT_EQ(changes[0].overclosure->p0, 5.0);
+  EXPECT_FALSE(changes[0].overclosure->slope.has_value());
+  EXPECT_EQ(changes[0].friction, 0.3);
+  EXPECT_EQ(changes[0].stick_slope, 1.e3);
+}
+
 }  // namespace
 }  // namespace abut

@@ -113,6 +113,13 @@ class StaticContact {
     settings_.friction = mu;
     settings_.stick_slope = stick_slope;
   }
+  // *CHANGE SURFACE BEHAVIOR: a new normal law and penalty from the next evaluation on; a tied
+  // contact lets go (its points search partners again and may separate or slide).
+  void change_normal(const NormalLaw& law, double penalty) {
+    settings_.normal = law;
+    settings_.penalty = penalty;
+    settings_.tied = false;
+  }
   const StaticContactSettings& settings() const { return settings_; }
 
   std::span<const StaticContactElement> elements() const { return elements_; }

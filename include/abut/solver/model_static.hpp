@@ -80,13 +80,22 @@ struct StepPressure {
   SourceLocation where;
 };
 
-// *CHANGE FRICTION: new Coulomb coefficient and stick slope of a contact (index into
+// *CHANGE SURFACE BEHAVIOR: a new pressure-overclosure law (LINEAR, TABULAR or EXPONENTIAL; not
+// TIED), which also unties a tied contact.
+struct OverclosureChange {
+  std::optional<double> slope;   // LINEAR: K [stress/length]
+  FunctionRef table;             // TABULAR: pressure against overclosure
+  std::optional<double> c0, p0;  // EXPONENTIAL (CalculiX form, ContactSpec::Exponential)
+};
+
+// *CHANGE FRICTION and *CHANGE SURFACE BEHAVIOR: the new laws of a contact (index into
 // Model::contacts) from this step on.
 struct ContactChange {
   std::size_t contact = 0;
   std::optional<double> friction;     // mu
   std::optional<double> stick_slope;  // tangential penalty [stress/length]
   SourceLocation where;
+  std::optional<OverclosureChange> overclosure;
 };
 
 // *NODE PRINT, *EL PRINT, *CONTACT PRINT: quantities written to the printed table (.dat-like)

@@ -1,6 +1,7 @@
 // *SURFACE INTERACTION with *SURFACE BEHAVIOR and *FRICTION, *CONTACT PAIR, and *CHANGE FRICTION
-// in a step. The pairs become ContactSpecs in finish_contacts (inp_finish_steps.cpp), once every
-// surface and interaction is known (a pair may name an interaction defined after it).
+// and *CHANGE SURFACE BEHAVIOR in a step. The pairs become ContactSpecs in finish_contacts
+// (inp_finish_steps.cpp), once every surface and interaction is known (a pair may name an
+// interaction defined after it).
 #include "inp_reader.hpp"
 
 namespace abut::inp {
@@ -95,6 +96,16 @@ void read_surface_behavior(Reader& r, const Card& c) {
       }
     }
   }
+  if (r.change_behaviour) {
+    if (b.kind == Behaviour::Kind::Tied) {
+      throw InputError(r.where(c, "PRESSURE-OVERCLOSURE"),
+                       "changing a contact to TIED between steps is not supported yet by abut "
+                       "(LINEAR, EXPONENTIAL and TABULAR are)");
+    }
+    r.step().changes.back().behaviour = std::move(b);
+    r.change_behaviour = false;
+    return;
+  }
   r.interactions[*r.interaction].behaviour = std::move(b);
 }
 
@@ -188,11 +199,24 @@ void read_contact_pair(Reader& r, const Card& c) {
 void read_change_friction(Reader& r, const Card& c) {
   check_parameters(r, c, {{"INTERACTION"}, {"RESET", ParameterRule::Kind::Unsupported}});
   no_data(r, c, "the new values follow on a *FRICTION card");
-  ChangeFrictionRecord change;
+  ChangeRecord change;
   change.interaction = required_parameter(r, c, "INTERACTION");
   change.where = r.loc(c);
   r.step().changes.push_back(std::move(change));
   r.change_friction = true;
+}
+
+// *CHANGE SURFACE BEHAVIOR, INTERACTION=name, followed by the new *SURFACE BEHAVIOR (CalculiX
+// User's Manual, *CHANGE SURFACE BEHAVIOR).
+void read_change_surface_behavior(Reader& r, const Card& c) {
+  check_parameters(r, c, {{"INTERACTION"}});
+  no_data(r, c, "the new law follows on a *SURFACE BEHAVIOR card");
+  ChangeRecord change;
+  change.interaction = required_parameter(r, c, "INTERACTION");
+  change.surface_behaviour = true;
+  change.where = r.loc(c);
+  r.step().changes.push_back(std::move(change));
+  r.change_behaviour = true;
 }
 
 }  // namespace abut::inp

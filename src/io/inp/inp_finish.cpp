@@ -264,6 +264,11 @@ void finish_mesh(Reader& r) {
 }
 
 DeckResult Reader::finish() {
+  if (change_behaviour) {
+    throw InputError(where(step().changes.back().where, "*CHANGE SURFACE BEHAVIOR"),
+                     "*CHANGE SURFACE BEHAVIOR must be followed by a *SURFACE BEHAVIOR card with "
+                     "the new law");
+  }
   if (change_friction) {
     throw InputError(where(step().changes.back().where, "*CHANGE FRICTION"),
                      "*CHANGE FRICTION must be followed by a *FRICTION card with the new values");

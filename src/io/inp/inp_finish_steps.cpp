@@ -311,20 +311,46 @@ void finish_steps(Reader& r) {
                                 step_amplitude(r, e.amplitude), r.where(e.where, "*DLOAD")});
     }
 
-    for (const ChangeFrictionRecord& change : rec.changes) {
-      const std::size_t i =
-          find_interaction(r, change.interaction, change.where, "*CHANGE FRICTION");
+    for (const ChangeRecord& change : rec.changes) {
+      const char* keyword =
+          change.surface_behaviour ? "*CHANGE SURFACE BEHAVIOR" : "*CHANGE FRICTION";
+      const std::size_t i = find_interaction(r, change.interaction, change.where, keyword);
+      const InteractionRecord& in = r.interactions[i];
       bool used = false;
       for (std::size_t k = 0; k < r.pairs.size(); ++k) {
-        if (upper_name(r.pairs[k].interaction) != upper_name(r.interactions[i].name)) continue;
+        if (upper_name(r.pairs[k].interaction) != upper_name(in.name)) continue;
         used = true;
-        step.contact_changes.push_back({k, change.friction->mu, change.friction->stick_slope,
-                                        r.where(change.friction->where, "*FRICTION")});
+        if (!change.surface_behaviour) {
+          step.contact_changes.push_back({k,
+                                          change.friction->mu,
+                                          change.friction->stick_slope,
+                                          r.where(change.friction->where, "*FRICTION"),
+                                          {}});
+          continue;
+        }
+        // The new pressure-overclosure law; a tied contact becomes a sliding one with the
+        // interaction's *FRICTION (frictionless without one), as in CalculiX.
+        const Behaviour& b = *change.behaviour;
+        const SourceLocation where = r.where(b.where, "*SURFACE BEHAVIOR");
+        OverclosureChange law;
+        if (b.kind == Behaviour::Kind::Linear) law.slope = b.slope;
+        if (b.kind == Behaviour::Kind::Exponential) law.c0 = b.c0, law.p0 = b.p0;
+        if (b.kind == Behaviour::Kind::Tabular) {
+          const std::int64_t id = r.next_function_id++;
+          r.model.functions.add_curve(id, Curve{b.overclosure, b.pressure}, where);
+          law.table = r.model.functions.find(id, where);
+        }
+        ContactChange c{k, std::nullopt, std::nullopt, where, law};
+        if (in.behaviour && in.behaviour->kind == Behaviour::Kind::Tied) {
+          c.friction = in.friction ? in.friction->mu : 0.0;
+          if (in.friction) c.stick_slope = in.friction->stick_slope;
+        }
+        step.contact_changes.push_back(c);
       }
       if (!used) {
-        throw InputError(r.where(change.where, "*CHANGE FRICTION", "INTERACTION"),
+        throw InputError(r.where(change.where, keyword, "INTERACTION"),
                          "no *CONTACT PAIR uses surface interaction " + change.interaction +
-                             ": changing its friction would do nothing");
+                             ": changing it would do nothing");
       }
     }
 

@@ -46,6 +46,12 @@ void Reader::read(const Card& c) {
                      "coefficient and stick slope (found " +
                          c.keyword + " at " + at(loc(c)) + ")");
   }
+  if (change_behaviour && c.key != "*SURFACEBEHAVIOR") {
+    throw InputError(where(step().changes.back().where, "*CHANGE SURFACE BEHAVIOR"),
+                     "*CHANGE SURFACE BEHAVIOR must be followed by a *SURFACE BEHAVIOR card with "
+                     "the new pressure-overclosure law (found " +
+                         c.keyword + " at " + at(loc(c)) + ")");
+  }
   if (c.key == "*STEP" && in_step) {
     throw InputError(line, "a new *STEP inside the step of " + at(step().where) +
                                ": close that step with *END STEP first");
@@ -74,13 +80,16 @@ void Reader::read(const Card& c) {
                                "*MATERIAL card (or after another property of that material)");
   }
   const bool new_friction = c.key == "*FRICTION" && change_friction;
-  if (entry->family == Family::Interaction && !interaction && !new_friction) {
+  const bool new_behaviour = c.key == "*SURFACEBEHAVIOR" && change_behaviour;
+  if (entry->family == Family::Interaction && !interaction && !new_friction && !new_behaviour) {
     throw InputError(
         line, c.keyword +
                   " defines a property of a surface interaction: put it right "
                   "after the *SURFACE INTERACTION card" +
                   (c.key == "*FRICTION" ? std::string(" (or, in a step, after *CHANGE FRICTION)")
-                                        : std::string()));
+                   : c.key == "*SURFACEBEHAVIOR"
+                       ? std::string(" (or, in a step, after *CHANGE SURFACE BEHAVIOR)")
+                       : std::string()));
   }
   if (entry->family != Family::Material) material.reset();
   if (entry->family != Family::Interaction) interaction.reset();

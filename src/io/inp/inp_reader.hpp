@@ -148,9 +148,12 @@ struct PrintCard {
   Loc where;
 };
 
-struct ChangeFrictionRecord {
+// *CHANGE FRICTION (then friction) or *CHANGE SURFACE BEHAVIOR (then behaviour).
+struct ChangeRecord {
   std::string interaction;
   std::optional<FrictionRecord> friction;
+  std::optional<Behaviour> behaviour;
+  bool surface_behaviour = false;  // *CHANGE SURFACE BEHAVIOR
   Loc where;
 };
 
@@ -165,7 +168,7 @@ struct StepRecord {
   std::optional<double> min_increment, max_increment;
   std::vector<LoadCard> loads;
   std::vector<PrintCard> prints;
-  std::vector<ChangeFrictionRecord> changes;
+  std::vector<ChangeRecord> changes;
 };
 
 class Reader {
@@ -216,6 +219,7 @@ class Reader {
   std::optional<std::size_t> material;     // the *MATERIAL block being read
   std::optional<std::size_t> interaction;  // the *SURFACE INTERACTION block being read
   bool change_friction = false;            // a *CHANGE FRICTION waits for its *FRICTION
+  bool change_behaviour = false;  // a *CHANGE SURFACE BEHAVIOR waits for its *SURFACE BEHAVIOR
   StepRecord& step() { return steps.back(); }
 
   // The set of a name, created empty when new (for NSET=, ELSET=, *NSET, *ELSET).
@@ -303,6 +307,8 @@ void read_surface_behavior(Reader&, const Card&);
 void read_friction(Reader&, const Card&);
 void read_contact_pair(Reader&, const Card&);
 void read_change_friction(Reader&, const Card&);
+void read_change_surface_behavior(Reader&, const Card&);
+void read_change_surface_behavior(Reader&, const Card&);
 void read_amplitude(Reader&, const Card&);
 void read_equation(Reader&, const Card&);
 void read_boundary(Reader&, const Card&);

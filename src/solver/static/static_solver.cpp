@@ -107,6 +107,8 @@ struct StaticSolver::Impl {
   std::vector<StaticContact> contacts;  // passes (static_contacts.hpp)
   std::vector<std::size_t> contact_of;  // per pass: its index in Model::contacts
   std::unique_ptr<LinearSolver> symmetric_solver, general_solver;
+  double converged_force_sum = 0.0;  // sum of the average force q of the converged increments
+  int converged_increments = 0;
   bool indefinite = false;  // NLGEOM made the tangent indefinite: LU from then on
   LinearSolver* linear = nullptr;
 
@@ -186,7 +188,14 @@ struct StaticSolver::Impl {
       double rmax = 0.0;
       for (const double v : r) rmax = std::max(rmax, std::abs(v));
       if (!std::isfinite(rmax)) return -1;
-      const double q = force_count > 0 ? force_sum / static_cast<double>(force_count) : 0.0;
+      // The reference force: this average, but not below the mean over the increments converged
+      // so far (Abaqus's time-averaged force, Analysis User's Guide 7.2.3), so that a state in
+      // which every force vanishes (a body released to zero stress) converges on round-off.
+      const double q_now = force_count > 0 ? force_sum / static_cast<double>(force_count) : 0.0;
+      const double q_past = converged_increments > 0
+                                ? converged_force_sum / static_cast<double>(converged_increments)
+                                : 0.0;
+      const double q = std::max(q_now, q_past);
       residual_out = q > 0.0 ? rmax / q : 0.0;
       // Convergence: residual small against the average force, and (after a correction) the
       // last correction small against the displacement increment.
@@ -199,6 +208,8 @@ struct StaticSolver::Impl {
       const bool converged = tiny || (it > 0 && rmax <= controls.force_tolerance * q &&
                                       cmax <= controls.displacement_tolerance * dumax);
       if (converged) {
+        converged_force_sum += q_now;
+        ++converged_increments;
         for (std::size_t d = 0; d < n; ++d) {
           reaction[d] = loads.prescribed()[d] ? f[d] : 0.0;
           nodal_force[d] = f[d] + applied[d];  // elements less contact: loads plus reactions
@@ -296,10 +307,17 @@ struct StaticSolver::Impl {
       nonlinear_geometry = nonlinear_geometry || step.nonlinear_geometry;
       for (const ContactChange& change : step.contact_changes) {
         if (change.contact >= model.contacts.size())
-          throw InputError(change.where, "*CHANGE FRICTION names a contact that does not exist");
+          throw InputError(change.where, "a contact change names a contact that does not exist");
         for (std::size_t pass = 0; pass < contacts.size(); ++pass) {
           if (contact_of[pass] != change.contact) continue;
           StaticContact& c = contacts[pass];
+          if (const auto& o = change.overclosure) {
+            NormalLaw law = LinearPenalty{};
+            if (o->table.valid()) law = curve_penalty(model, o->table);
+            if (o->c0) law = ExponentialOverclosure{*o->c0, *o->p0};
+            c.change_normal(law, o->slope.value_or(c.settings().penalty));
+          }
+          if (!change.friction && !change.stick_slope) continue;
           if (c.settings().tied || c.settings().stick)
             throw InputError(change.where,
                              "*CHANGE FRICTION on a tied or sticking contact is not supported");
