@@ -111,6 +111,7 @@ void hex8_full_with(const Hex8FullInput& in, const M& material, Hex8FullResult& 
   std::fill(out.force, out.force + 24, 0.0);
   std::fill(out.stiffness, out.stiffness + 24 * 24, 0.0);
   out.strain_energy = 0.0;
+  out.volume = 0.0;
   out.min_jacobian = 0.0;
   const bool nl = in.nonlinear_geometry;
 
@@ -142,6 +143,7 @@ void hex8_full_with(const Hex8FullInput& in, const M& material, Hex8FullResult& 
     double stress[6], d[36];
     const double w = material.evaluate(p, strain, stress, d);
     out.strain_energy += w * dv;
+    out.energy_density[p] = w;
     for (int r = 0; r < 6; ++r) out.strain[p][r] = strain[r];
 
     double b[6][24];
@@ -208,9 +210,11 @@ void hex8_full_with(const Hex8FullInput& in, const M& material, Hex8FullResult& 
       }
       const double det = detf * det0;
       out.min_jacobian = p == 0 ? det : std::min(out.min_jacobian, det);
+      out.volume += det;
     } else {
       for (int r = 0; r < 6; ++r) out.stress[p][r] = stress[r];
       out.min_jacobian = p == 0 ? det0 : std::min(out.min_jacobian, det0);
+      out.volume += det0;
     }
   }
 

@@ -56,7 +56,9 @@ void hex8_reduced_with(const Hex8FullInput& in, const M& material, double hourgl
     strain[r] = r < 3 ? 0.5 * e : e;
   }
   double stress[6], d[36];
-  out.strain_energy = material.evaluate(0, strain, stress, d) * v0;
+  const double w = material.evaluate(0, strain, stress, d);
+  out.strain_energy = w * v0;
+  for (double& density : out.energy_density) density = w;
 
   double b[6][24];
   for (int a = 0; a < 8; ++a) {
@@ -117,6 +119,7 @@ void hex8_reduced_with(const Hex8FullInput& in, const M& material, double hourgl
   for (int p = 0; p < 8; ++p)
     for (int r = 0; r < 6; ++r) out.stress[p][r] = cauchy[r], out.strain[p][r] = strain[r];
   out.min_jacobian = detf * v0 / 8.0;
+  out.volume = detf * v0;
 
   // Hourglass stiffness with the reference gamma vectors.
   double gamma[4][8];

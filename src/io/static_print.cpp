@@ -98,14 +98,35 @@ void print_elements(std::ostream& out, const Model& model, const PrintRequest& r
     tensor_block("stresses (elem, integ.pnt.,sxx,syy,szz,sxy,sxz,syz)", solver.stress(), 1.0);
   if (wants(r, "E") && !r.totals_only)  // tensor shears, as CalculiX prints them
     tensor_block("strains (elem, integ.pnt.,exx,eyy,ezz,exy,exz,eyz)", solver.strain(), 0.5);
-  if (wants(r, "PEEQ") && !r.totals_only) {  // CalculiX's title has no space before "for"
-    out << fmt::format(
-        "\n equivalent plastic strain (elem, integ.pnt.,pe)for set {} and time {}\n\n", set_text(r),
-        time_text(t));
+  // Mechanical strains: the total strain less the thermal one, which abut does not have.
+  if (wants(r, "ME") && !r.totals_only)
+    tensor_block("mechanical strains (elem, integ.pnt.,exx,eyy,ezz,exy,exz,eyz)", solver.strain(),
+                 0.5);
+  // Scalars per integration point, with CalculiX 2.20's titles (PEEQ's has no space before
+  // "for").
+  auto point_block = [&](const char* title, std::span<const double> v) {
+    out << fmt::format("\n {}set {} and time {}\n\n", title, set_text(r), time_text(t));
     for (const std::int32_t h : hexes)
       for (int p = 0; p < solver.integration_points(static_cast<std::size_t>(h)); ++p)
         out << fmt::format("{:10d}{:4d}{:14.6E}\n", model.mesh.hex_id[h], p + 1,
-                           solver.plastic_strain()[8 * static_cast<std::size_t>(h) + p]);
+                           v[8 * static_cast<std::size_t>(h) + p]);
+  };
+  if (wants(r, "ENER") && !r.totals_only)
+    point_block("internal energy density (elem, integ.pnt.,energy) for ", solver.energy_density());
+  if (wants(r, "PEEQ") && !r.totals_only)
+    point_block("equivalent plastic strain (elem, integ.pnt.,pe)for ", solver.plastic_strain());
+  if (wants(r, "EVOL")) {
+    double total = 0.0;
+    for (const std::int32_t h : hexes) total += solver.element_volume()[h];
+    if (!r.totals_only) {
+      out << fmt::format("\n volume (element, volume) for set {} and time {}\n\n", set_text(r),
+                         time_text(t));
+      for (const std::int32_t h : hexes)
+        out << fmt::format("{:10d}{:14.6E}\n", model.mesh.hex_id[h], solver.element_volume()[h]);
+    }
+    if (r.totals || r.totals_only)
+      out << fmt::format("\n total volume for set {} and time {}\n\n{:20.6E}\n", set_text(r),
+                         time_text(t), total);
   }
   if (wants(r, "ELSE")) {
     double total = 0.0;

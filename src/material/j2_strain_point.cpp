@@ -61,9 +61,14 @@ double J2StrainPoint::evaluate(int point, const double strain[6], double stress[
     now.equivalent_plastic_strain = p_new;
     now.plastic_work += 0.5 * (flow(old.equivalent_plastic_strain, 0.0) + flow(p_new, 0.0)) * dp;
   }
-  double w = 0.0;
-  for (int i = 0; i < 6; ++i) w += stress[i] * (strain[i] - now.plastic_strain[i]);
-  return 0.5 * w + now.plastic_work;
+  double dw = 0.0;
+  for (int i = 0; i < 6; ++i) {
+    dw += 0.5 * (old.stress[i] + stress[i]) * (strain[i] - old.strain[i]);
+    now.strain[i] = strain[i];
+    now.stress[i] = stress[i];
+  }
+  now.energy = old.energy + dw;
+  return now.energy;
 }
 
 }  // namespace abut

@@ -248,6 +248,8 @@ def classify(title):
         return "plain", [("S", allcols)]
     if t.startswith("strains"):
         return "plain", [("E", allcols)]
+    if t.startswith("internal energy density"):
+        return "plain", [("ENER", allcols)]
     if t.startswith("internal energy"):
         return "plain", [("ELSE", allcols)]
     return "plain", [(title.split("(")[0].strip(), allcols)]

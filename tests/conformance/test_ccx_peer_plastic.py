@@ -2,9 +2,9 @@
 """J2 plasticity in statics against CalculiX as a peer: the same generated deck (a cantilever of
 fully integrated hexahedra, C3D8, *PLASTIC with linear isotropic hardening, small strain) is run
 by abut and by ccx; the step-end blocks of their .dat files are compared: tip displacements,
-total support reaction, stresses and equivalent plastic strains of the root elements, after
-loading into the plastic range and after unloading (residual deflection and stresses, which test
-the plastic history).
+total support reaction, stresses, strains, equivalent plastic strains, energy densities (elastic
+energy plus plastic work) and volumes of the root elements, after loading into the plastic range
+and after unloading (residual deflection and stresses, which test the plastic history).
 
 Both codes use the same element (C3D8, 2x2x2 Gauss points in the same order), the von Mises yield
 condition with isotropic hardening and a radial return (backward Euler), and both take the same
@@ -61,7 +61,7 @@ def cantilever(load):
             "*PLASTIC", "250.,0.", "350.,0.1",
             "*SOLID SECTION,ELSET=EALL,MATERIAL=STEEL", "*BOUNDARY", "FIX,1,3"]
     prints = ["*NODE PRINT,NSET=TIP", "U", "*NODE PRINT,NSET=FIX,TOTALS=ONLY", "RF",
-              "*EL PRINT,ELSET=ROOT", "S,PEEQ"]
+              "*EL PRINT,ELSET=ROOT,TOTALS=YES", "S,ME,PEEQ,ENER,EVOL"]
     out += ["*STEP,INC=200", "*STATIC,DIRECT", "0.05,1.", "*CLOAD"]
     out += [f"{n},3,{load / len(tip)}" for n in tip]
     out += prints + ["*END STEP"]

@@ -74,7 +74,9 @@ struct Hex8FullResult {
                               // exactly symmetric (upper triangle computed and mirrored)
   double stress[8][6];        // Cauchy stress at the Gauss points (Voigt xx yy zz xy yz zx)
   double strain[8][6];        // small strain, or Green-Lagrange with NLGEOM; engineering shears
+  double energy_density[8];   // W at the Gauss points, per unit reference volume
   double strain_energy;       // integral of W over the reference volume
+  double volume;              // current volume (the reference one for small strain)
   double min_jacobian;        // smallest det(dx/dxi) at the Gauss points: of the reference
                               // coordinates for small strain, of the current ones (X + u) with
                               // NLGEOM. <= 0: inverted element, the other results are meaningless.

@@ -12,9 +12,9 @@
 // f_a = sum_alpha gamma_alpha(a) Q_alpha, K_hg = k sum_alpha gamma_alpha (x) gamma_alpha (x) I.
 // The explicit solver uses hourglass_modulus = c_hg 2 G (kHex8HourglassCoefficient).
 //
-// Results: Hex8FullResult with the one point's stress and strain copied to all eight slots (so
-// that averaging over the slots gives the element value); min_jacobian is det F V0 / 8, the
-// Jacobian at the centroid.
+// Results: Hex8FullResult with the one point's stress, strain and energy density copied to all
+// eight slots (so that averaging over the slots gives the element value); min_jacobian is
+// det F V0 / 8, the Jacobian at the centroid, and the volume det F V0 (F at the centroid).
 #include "abut/element/hex8_full.hpp"
 
 namespace abut {

@@ -52,7 +52,7 @@ struct ShellNodalState {
 
 struct ShellSection {
   double thickness = 0.0;
-  int points = 5;           // Gauss points through the thickness, odd
+  int points = 5;  // Gauss points through the thickness, odd
   // Hourglass coefficient of the membrane, transverse and rotational stiffnesses. 0.01 is the
   // Radioss default for its Belytschko Q4 shells (/PROP/TYPE1 hm = hf = hr = 0.01, Ishell 1, 2, 4)
   // and the low end of the 0.01-0.05 Belytschko & Tsay recommend: the stiffness is elastic,

@@ -24,11 +24,15 @@
 namespace abut {
 
 // The history of one Gauss point: plastic strain (Voigt xx yy zz xy yz zx, engineering shears as
-// the element's strains), equivalent plastic strain, plastic work per unit volume.
+// the element's strains), equivalent plastic strain, plastic work per unit volume, and the
+// strain, stress and energy density of the last state (for the incremental energy).
 struct J2PointHistory {
   double plastic_strain[6] = {0, 0, 0, 0, 0, 0};
   double equivalent_plastic_strain = 0.0;
   double plastic_work = 0.0;
+  double strain[6] = {0, 0, 0, 0, 0, 0};
+  double stress[6] = {0, 0, 0, 0, 0, 0};
+  double energy = 0.0;
 };
 
 // One element's material points. `committed` (the last converged increment, read) and `trial`
@@ -42,7 +46,9 @@ struct J2StrainPoint {
   J2PointHistory* trial = nullptr;
 
   // Hex8MaterialPoint: stress and tangent (Voigt, engineering shears, row-major 6x6) from the
-  // strain; returns the energy density: stored elastic energy plus plastic work.
+  // strain; returns the energy density, the work of the stress integrated by the trapezoidal
+  // rule over the increments, W = W_old + (stress_old + stress) . (strain - strain_old) / 2, as
+  // CalculiX integrates its internal energy (elastic energy plus dissipation, to O(increment^2)).
   double evaluate(int point, const double strain[6], double stress[6], double d[36]) const;
 };
 

@@ -86,6 +86,8 @@ class StaticSolver {
   std::span<const double> plastic_strain() const;
   int integration_points(std::size_t hex) const;  // 8 (C3D8) or 1 (C3D8R)
   std::span<const double> element_energy() const;
+  std::span<const double> energy_density() const;  // per Gauss point (8 per hex), as stress()
+  std::span<const double> element_volume() const;  // current volume per hex
   const StaticStatistics& statistics() const;
   // The contact passes at the last converged state: for each contact of Model::contacts, in
   // order, one (surface 1's points on surface 2) or two (symmetric: also 2 on 1); contact_of(k)

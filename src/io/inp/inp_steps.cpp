@@ -31,7 +31,7 @@ const PrintKeys& keys_of(PrintRequest::Kind kind) {
                                "MF", "RFL", "PS", "PT", "V"}};
   static const PrintKeys element{{"S", "E", "ME", "PEEQ", "ENER", "ELSE", "EVOL"},
                                  {"CEEQ", "SDV", "HFL", "SVF", "ELKE"}};
-  static const PrintKeys contact{{"CDIS", "CSTR", "CELS", "CNUM"}, {}};
+  static const PrintKeys contact{{"CDIS", "CSTR", "CELS"}, {"CNUM"}};
   switch (kind) {
     case PrintRequest::Kind::Node:
       return node;

@@ -59,6 +59,8 @@ StaticElements::StaticElements(const Model& model) : model_(model) {
   strain_.resize(48 * n);
   energy_.resize(n);
   plastic_strain_.resize(8 * n);
+  energy_density_.resize(8 * n);
+  volume_.resize(n);
 }
 
 void StaticElements::evaluate(std::span<const double> u, bool nonlinear_geometry) {
@@ -106,8 +108,10 @@ void StaticElements::evaluate(std::span<const double> u, bool nonlinear_geometry
         }
         const int point = reduced_[e] ? 0 : p;
         plastic_strain_[8 * e + p] = trial_[8 * e + point].equivalent_plastic_strain;
+        energy_density_[8 * e + p] = out.energy_density[p];
       }
       energy_[e] = out.strain_energy;
+      volume_[e] = out.volume;
     }
   }
   if (inverted >= 0)

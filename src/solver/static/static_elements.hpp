@@ -39,6 +39,8 @@ class StaticElements {
   std::span<const double> stress() const { return stress_; }  // 48 per element
   std::span<const double> strain() const { return strain_; }  // 48 per element
   std::span<const double> energy() const { return energy_; }
+  std::span<const double> energy_density() const { return energy_density_; }  // 8 per element
+  std::span<const double> volume() const { return volume_; }  // current volume per element
   // Equivalent plastic strain per Gauss point (8 per element, as stress()); 0 when elastic.
   std::span<const double> plastic_strain() const { return plastic_strain_; }
 
@@ -58,6 +60,7 @@ class StaticElements {
   std::vector<double> hourglass_modulus_;          // per element: c_hg 2 G (C3D8R)
   std::vector<J2PointHistory> committed_, trial_;  // 8 per element
   std::vector<double> force_, stiffness_, stress_, strain_, energy_, plastic_strain_;
+  std::vector<double> energy_density_, volume_;
 };
 
 }  // namespace abut::detail

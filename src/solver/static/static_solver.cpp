@@ -407,6 +407,10 @@ int StaticSolver::integration_points(std::size_t hex) const {
   return impl_->elements.integration_points(hex);
 }
 std::span<const double> StaticSolver::element_energy() const { return impl_->elements.energy(); }
+std::span<const double> StaticSolver::energy_density() const {
+  return impl_->elements.energy_density();
+}
+std::span<const double> StaticSolver::element_volume() const { return impl_->elements.volume(); }
 const StaticStatistics& StaticSolver::statistics() const { return impl_->stats; }
 std::span<const StaticContact> StaticSolver::contacts() const { return impl_->contacts; }
 std::size_t StaticSolver::contact_of(std::size_t pass) const { return impl_->contact_of[pass]; }
