@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "abut/element/hex8.hpp"
+#include "abut/element/hex8_gauss.hpp"
 #include "abut/material/j2_strain_point.hpp"
 
 namespace abut {
@@ -42,42 +43,20 @@ double IsotropicElastic::evaluate(int /*point*/, const double strain[6], double 
 
 namespace {
 
-// Shape function derivatives dN_a/dxi_r at the eight Gauss points, in CalculiX's point order
-// (hex8_full.hpp): natural coordinates of point p are g * (+-1) with xi fastest.
-struct GaussTable {
-  double dn[8][8][3];  // [point][node][r]
-};
-
-constexpr double kGauss = 0.57735026918962576451;  // 1/sqrt(3)
-
-constexpr GaussTable make_gauss_table() {
-  GaussTable t{};
-  for (int p = 0; p < 8; ++p) {
-    const double xi = (p & 1) ? kGauss : -kGauss;
-    const double eta = (p & 2) ? kGauss : -kGauss;
-    const double zeta = (p & 4) ? kGauss : -kGauss;
-    for (int a = 0; a < 8; ++a) {
-      const double xa = kHex8Xi[a], ea = kHex8Eta[a], za = kHex8Zeta[a];
-      t.dn[p][a][0] = 0.125 * xa * (1.0 + ea * eta) * (1.0 + za * zeta);
-      t.dn[p][a][1] = 0.125 * ea * (1.0 + xa * xi) * (1.0 + za * zeta);
-      t.dn[p][a][2] = 0.125 * za * (1.0 + xa * xi) * (1.0 + ea * eta);
-    }
-  }
-  return t;
-}
-
-constexpr GaussTable kGaussTable = make_gauss_table();
-
 double det3(const double m[3][3]) {
   return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
          m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
          m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
 }
 
-// Gradients of the shape functions with respect to X at Gauss point p: grad[a][i] = dN_a/dX_i
-// = sum_r dN_a/dxi_r (J^-1)_ri, J_ir = dX_i/dxi_r. Returns det J.
-double reference_gradient(const double X[8][3], int p, double grad[8][3]) {
-  const auto& dn = kGaussTable.dn[p];
+// Voigt rows (xx yy zz xy yz zx) as index pairs of the symmetric tensor.
+constexpr int kVoigtI[6] = {0, 1, 2, 0, 1, 2};
+constexpr int kVoigtJ[6] = {0, 1, 2, 1, 2, 0};
+
+}  // namespace
+
+double hex8_gauss_gradient(const double X[8][3], int p, double grad[8][3]) {
+  const auto& dn = kHex8GaussTable.dn[p];
   double j[3][3] = {};
   for (int a = 0; a < 8; ++a)
     for (int i = 0; i < 3; ++i)
@@ -100,12 +79,6 @@ double reference_gradient(const double X[8][3], int p, double grad[8][3]) {
   return det;
 }
 
-// Voigt rows (xx yy zz xy yz zx) as index pairs of the symmetric tensor.
-constexpr int kVoigtI[6] = {0, 1, 2, 0, 1, 2};
-constexpr int kVoigtJ[6] = {0, 1, 2, 1, 2, 0};
-
-}  // namespace
-
 template <Hex8MaterialPoint M>
 void hex8_full_with(const Hex8FullInput& in, const M& material, Hex8FullResult& out) {
   std::fill(out.force, out.force + 24, 0.0);
@@ -117,7 +90,7 @@ void hex8_full_with(const Hex8FullInput& in, const M& material, Hex8FullResult& 
 
   for (int p = 0; p < 8; ++p) {
     double grad[8][3];
-    const double det0 = reference_gradient(in.X, p, grad);
+    const double det0 = hex8_gauss_gradient(in.X, p, grad);
     const double dv = det0;  // Gauss weight 1
 
     // Displacement gradient H_ij = du_i/dX_j; F = I + H.
