@@ -1,0 +1,43 @@
+#pragma once
+// Heat conduction over a set of hexahedra for the explicit solver: each element's conductance at
+// the current coordinates (hex8_thermal.hpp), the heat it draws between its nodes at the current
+// temperatures, gathered node by node in element order (so the sums, and the results, do not
+// depend on the number of threads), and the smallest element stable step of forward Euler.
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "abut/mesh/mesh.hpp"
+
+namespace abut {
+
+class ThermalBlock {
+ public:
+  // Per hex: conductivity k [power / (length temperature)] >= 0 and volumetric heat capacity
+  // rho c [energy / (volume temperature)] > 0 (preconditions, checked by the caller); node
+  // indices below node_count.
+  ThermalBlock(std::vector<Hex8> hexes, std::vector<double> conductivity,
+               std::vector<double> volumetric_capacity, std::size_t node_count);
+
+  std::size_t size() const { return hexes_.size(); }
+  const std::vector<Hex8>& hexes() const { return hexes_; }
+
+  // capacity[n] += the lumped heat capacity rho c V / 8 of every hex at node n, at the given
+  // coordinates (the reference ones: mass and heat capacity do not change as the body deforms).
+  void add_capacity(std::span<const double> x, std::span<const double> y, std::span<const double> z,
+                    std::span<double> capacity) const;
+
+  // heat_rate[n] += the heat flowing into node n by conduction [power], -sum_e (K_e T)_n, at the
+  // given coordinates and temperatures. Returns the smallest element stable step 2 / lambda_e.
+  double add_conduction(std::span<const double> x, std::span<const double> y,
+                        std::span<const double> z, std::span<const double> temperature,
+                        std::span<double> heat_rate);
+
+ private:
+  std::vector<Hex8> hexes_;
+  std::vector<double> conductivity_, capacity_;
+  std::vector<double> element_flow_;              // 8 per hex, of the last add_conduction
+  std::vector<std::int32_t> slot_start_, slots_;  // node -> its entries of element_flow_
+};
+
+}  // namespace abut
