@@ -17,6 +17,7 @@
 #include "abut/mesh/geometry.hpp"
 #include "abut/mesh/mesh.hpp"
 #include "abut/solver/model_static.hpp"
+#include "abut/solver/model_thermal.hpp"
 
 namespace abut {
 
@@ -39,6 +40,7 @@ struct Material {
   std::int64_t id = 0;
   MaterialParams params;
   SourceLocation where;
+  std::int64_t thermal_id = 0;  // thpid: ThermalModel::properties; 0 = no thermal properties
 };
 
 struct Part {
@@ -195,9 +197,9 @@ struct ContactSpec {
   std::optional<double> adjust_depth;
   // Where each contact keyword was given (for errors), empty when absent.
   SourceLocation normal_where, friction_where, stiffness_where, initial_where, discretisation_where;
-  GapSettings gaps;          // *CONTACT_GAP
-  ErosionSettings erosion;   // *CONTACT_EROSION
-  EdgeSettings edges;        // *CONTACT_EDGE
+  GapSettings gaps;         // *CONTACT_GAP
+  ErosionSettings erosion;  // *CONTACT_EROSION
+  EdgeSettings edges;       // *CONTACT_EDGE
   SourceLocation gap_where, erosion_where, edge_where;
   // Abaqus/CalculiX *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL (CalculiX form): the
   // pressure is p0 at zero distance and falls exponentially to 1% of p0 at the clearance c0.
@@ -244,6 +246,8 @@ struct Model {
   std::vector<StaticStep> static_steps;
   std::vector<FaceSet> face_sets;
   std::vector<LinearConstraint> equations;
+  // Heat (model_thermal.hpp): empty properties = no temperature field.
+  ThermalModel thermal;
 
   // Look-ups by user id; nullptr when absent.
   const Part* find_part(std::int64_t id) const;

@@ -1,0 +1,61 @@
+#pragma once
+// The temperature field of a model (issue 11): transient heat conduction in the hexahedra of the
+// parts whose material has thermal properties (ThermalModel), explicit in time (forward Euler with
+// the lumped heat capacity), with prescribed temperatures, heat flux and convection on faces, and
+// heat sources from the caller (plastic work, contact conduction and friction). Nodes outside the
+// thermal parts keep their initial temperature.
+//
+// One step from T^n at time t to T^{n+1} at t + dt:
+//   C_a (T_a^{n+1} - T_a^n) / dt = -(K T^n)_a + Q_a(t) + S_a,
+// K the conductance at the given (current) coordinates, Q the face loads at T^n, S the caller's
+// sources [power]; then the prescribed nodes take T(t + dt). Stable while dt is below
+// stable_step() (thermal_block.hpp), which the caller keeps by sub-cycling.
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "abut/solver/model.hpp"
+
+namespace abut {
+
+// Heat balance since the start [energy]: stored = sum C (T - T0) over the thermal nodes; in =
+// what the face loads, the prescribed temperatures and the caller's sources brought in.
+struct HeatBalance {
+  double stored = 0.0;
+  double boundary = 0.0;    // face fluxes and convection
+  double prescribed = 0.0;  // heat the prescribed temperatures put in (out: negative)
+  double sources = 0.0;     // the caller's sources
+  double error() const { return stored - boundary - prescribed - sources; }
+};
+
+class HeatSolver {
+ public:
+  // InputError (at the card) when a thermal load touches nodes outside the thermal parts, or a
+  // material's thpid has no *PROP_THERMAL.
+  explicit HeatSolver(const Model& model);
+  ~HeatSolver();
+  HeatSolver(HeatSolver&&) noexcept;
+  HeatSolver& operator=(HeatSolver&&) noexcept;
+
+  bool active() const;  // the model has thermal parts
+  std::span<const double> temperature() const;
+  std::span<const double> capacity() const;  // lumped heat capacity per node [energy/temperature]
+  // The smallest element stable step at the coordinates of the last advance (or the reference).
+  double stable_step() const;
+
+  // One step of length dt from time t, at coordinates x, y, z (3 spans over the nodes), with the
+  // caller's nodal heat sources [power] (may be empty).
+  void advance(double t, double dt, std::span<const double> x, std::span<const double> y,
+               std::span<const double> z, std::span<const double> source);
+
+  const HeatBalance& balance() const;
+  // Heat flowing into each node by conduction at the last advance [power] (for output).
+  std::span<const double> conduction_rate() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace abut

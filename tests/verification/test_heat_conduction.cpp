@@ -1,0 +1,150 @@
+// Transient heat conduction (issue 11), the heat solver alone (solver/heat.hpp) on a bar of
+// hexahedra, steel (k = 45 W/(m K), rho = 7800 kg/m^3, c = 460 J/(kg K), diffusivity
+// a = k / (rho c) = 1.254e-5 m^2/s), against closed forms:
+//  - a semi-infinite body whose surface is brought to T_s at t = 0:
+//      T(x, t) = T_s + (T_0 - T_s) erf(x / (2 sqrt(a t)))
+//    (Carslaw & Jaeger, Conduction of Heat in Solids, 2nd ed., 1959, section 2.4), 1%;
+//  - steady conduction between two held temperatures: the linear profile and Fourier's flux
+//    k (T_1 - T_2) / L, 0.1%;
+//  - a body cooling by convection with a small Biot number (lumped capacitance):
+//      T = T_inf + (T_0 - T_inf) exp(-h A t / (rho c V))
+//    (Incropera & DeWitt, Fundamentals of Heat and Mass Transfer, section 5.1), 1%;
+//  - a heat flux into an insulated bar: the stored heat equals the heat put in (round-off).
+// Each run also checks the heat balance of the solver (stored = boundary + prescribed + sources).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "abut/mesh/generators.hpp"
+#include "abut/mesh/skin.hpp"
+#include "abut/solver/heat.hpp"
+
+namespace abut {
+namespace {
+
+constexpr double kK = 45.0, kRho = 7800.0, kC = 460.0;
+constexpr double kDiffusivity = kK / (kRho * kC);
+
+// A bar [0, length] x [0, w] x [0, w] of n x 1 x 1 hexes of steel with thermal properties.
+Model bar(double length, int n, double w) {
+  Model m;
+  generate_box(m.mesh, {1, n, 1, 1, {0, 0, 0}, {length, w, w}});
+  Material mat;
+  mat.id = 1;
+  mat.params = ElasticParams{kRho, 2.1e11, 0.3};
+  mat.thermal_id = 7;
+  m.materials.push_back(mat);
+  Part p;
+  p.id = 1;
+  p.material_id = 1;
+  m.parts.push_back(p);
+  ThermalProperties t;
+  t.id = 7;
+  t.conductivity = kK;
+  t.specific_heat = kC;
+  m.thermal.properties.push_back(t);
+  return m;
+}
+
+std::vector<std::int32_t> nodes_at_x(const Model& m, double x) {
+  std::vector<std::int32_t> out;
+  for (std::size_t i = 0; i < m.mesh.nodes.size(); ++i)
+    if (std::abs(m.mesh.nodes.x[i] - x) < 1e-12) out.push_back(static_cast<std::int32_t>(i));
+  return out;
+}
+
+// Runs to `end` with 0.9 of the stable step.
+void run(HeatSolver& heat, const Model& m, double end) {
+  const Nodes& n = m.mesh.nodes;
+  double t = 0.0;
+  while (t < end * (1.0 - 1e-12)) {
+    const double dt = std::min(0.9 * heat.stable_step(), end - t);
+    heat.advance(t, dt, n.x, n.y, n.z, {});
+    t += dt;
+  }
+}
+
+double mean_at_x(const Model& m, const HeatSolver& heat, double x) {
+  double sum = 0.0;
+  const auto nodes = nodes_at_x(m, x);
+  for (const std::int32_t i : nodes) sum += heat.temperature()[static_cast<std::size_t>(i)];
+  return sum / static_cast<double>(nodes.size());
+}
+
+TEST(HeatConduction, SemiInfiniteBodyFollowsTheErfSolution) {
+  const double length = 0.2, t0 = 20.0, ts = 120.0, end = 60.0;
+  Model m = bar(length, 200, 0.001);  // 1 mm elements; 2 sqrt(a t) = 55 mm << 200 mm
+  m.thermal.initial_temperature = t0;
+  m.thermal.prescribed.push_back({nodes_at_x(m, 0.0), {}, ts, {}});
+  HeatSolver heat(m);
+  run(heat, m, end);
+  double worst = 0.0;
+  for (const double x : {0.005, 0.01, 0.02, 0.03, 0.05, 0.08}) {
+    const double exact = ts + (t0 - ts) * std::erf(x / (2.0 * std::sqrt(kDiffusivity * end)));
+    const double error = (mean_at_x(m, heat, x) - exact) / (ts - t0);
+    worst = std::max(worst, std::abs(error));
+  }
+  std::cout << "semi-infinite body: worst error " << 100 * worst << "% of the temperature step\n";
+  EXPECT_LT(worst, 0.01);
+  EXPECT_NEAR(heat.balance().error(), 0.0, 1e-9 * std::abs(heat.balance().stored));
+}
+
+TEST(HeatConduction, SteadyStateBetweenHeldTemperatures) {
+  const double length = 0.05, w = 0.01;
+  Model m = bar(length, 10, w);
+  m.thermal.initial_temperature = 20.0;
+  m.thermal.prescribed.push_back({nodes_at_x(m, 0.0), {}, 100.0, {}});
+  m.thermal.prescribed.push_back({nodes_at_x(m, length), {}, 20.0, {}});
+  HeatSolver heat(m);
+  run(heat, m, 20.0 * length * length / kDiffusivity);  // 20 diffusion times: steady
+  for (int i = 1; i < 10; ++i) {
+    const double x = length * i / 10.0;
+    EXPECT_NEAR(mean_at_x(m, heat, x), 100.0 - 80.0 * x / length, 0.001 * 80.0) << x;
+  }
+  // Fourier: the heat entering at x = 0 is k A dT / L.
+  double flow_in = 0.0;
+  for (const std::int32_t i : nodes_at_x(m, 0.0))
+    flow_in -= heat.conduction_rate()[static_cast<std::size_t>(i)];
+  EXPECT_NEAR(flow_in, kK * w * w * 80.0 / length, 0.001 * kK * w * w * 80.0 / length);
+}
+
+TEST(HeatConduction, LumpedBodyCoolsExponentially) {
+  // A 10 mm steel cube, h = 20 W/(m^2 K) on all faces: Biot h L / k = 2e-5 << 0.1.
+  const double side = 0.01, h = 20.0;
+  Model m = bar(side, 2, side);
+  m.thermal.initial_temperature = 500.0;
+  SurfaceConvection c;
+  c.coefficient = h;
+  c.ambient = 20.0;
+  for (const SkinFace& f : exterior_faces(m.mesh, false)) c.faces.push_back(f.nodes);
+  m.thermal.convection.push_back(c);
+  HeatSolver heat(m);
+  const double end = 600.0;  // tau = rho c V / (h A) = 299 s
+  run(heat, m, end);
+  const double tau = kRho * kC * side / (6.0 * h);
+  const double exact = 20.0 + 480.0 * std::exp(-end / tau);
+  EXPECT_NEAR(mean_at_x(m, heat, 0.5 * side), exact, 0.01 * 480.0);
+  EXPECT_NEAR(heat.balance().error(), 0.0, 1e-9 * std::abs(heat.balance().stored));
+}
+
+TEST(HeatConduction, FluxIntoAnInsulatedBarIsStored) {
+  const double length = 0.02, w = 0.005, q = 2.0e5;  // W/m^2
+  Model m = bar(length, 8, w);
+  SurfaceHeatFlux f;
+  f.scale = q;
+  for (const SkinFace& face : exterior_faces(m.mesh, false)) {
+    bool at_end = true;
+    for (const std::int32_t n : face.nodes) at_end = at_end && m.mesh.nodes.x[n] == 0.0;
+    if (at_end) f.faces.push_back(face.nodes);
+  }
+  ASSERT_EQ(f.faces.size(), 1u);
+  m.thermal.fluxes.push_back(f);
+  HeatSolver heat(m);
+  run(heat, m, 3.0);
+  EXPECT_NEAR(heat.balance().boundary, q * w * w * 3.0, 1e-12 * q * w * w * 3.0);
+  EXPECT_NEAR(heat.balance().stored, q * w * w * 3.0, 1e-9 * q * w * w * 3.0);
+}
+
+}  // namespace
+}  // namespace abut
