@@ -1,6 +1,7 @@
 // The end of reading: every reference is checked now that all ids are known, duplicated nodes are
 // merged (*MERGE_DUPLICATED_NODES), then the mesh is refined and smoothed (*CHANGE_P-ORDER,
-// *SMOOTH_MESH, *PART alpha_max) and the initial velocities are applied to the final nodes.
+// *SMOOTH_MESH, *PART alpha_max) and the initial velocities are applied to the final nodes;
+// last, a deck with *STATIC gets its static steps' loads (deck_finalize_static.cpp).
 #include <algorithm>
 #include <map>
 #include <set>
@@ -82,9 +83,10 @@ void merge_contact_keywords(Model& model, const std::vector<PendingContactKeywor
 }  // namespace
 
 DeckResult DeckReader::finish() {
-  if (!time_where) {
+  if (!time_where && static_step_ends.empty()) {
     throw InputError(SourceLocation{files.front(), 0, "", ""},
-                     "the deck has no *TIME: abut needs the termination time t_term");
+                     "the deck has no *TIME: abut needs the termination time t_term (or *STATIC "
+                     "steps for a static analysis)");
   }
   model.functions.resolve();
   Mesh& mesh = model.mesh;
@@ -281,6 +283,9 @@ DeckResult DeckReader::finish() {
       model.wz0[static_cast<std::size_t>(i)] = v.angular_velocity.z;
     }
   }
+
+  // *PART_SOLID; with *STATIC the loads and boundary conditions become the steps' lists.
+  finish_static_steps();
 
   for (const Part& p : model.parts) {
     if (std::find(mesh.hex_part.begin(), mesh.hex_part.end(), p.id) == mesh.hex_part.end() &&

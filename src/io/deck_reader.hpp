@@ -84,6 +84,14 @@ struct PendingPartShell {
   SourceLocation where;  // the pid field
 };
 
+// *PART_SOLID, applied once every *PART is known.
+struct PendingPartSolid {
+  std::int64_t part = 0;
+  Part::SolidIntegration integration = Part::SolidIntegration::OnePoint;
+  SourceLocation where;              // the pid field
+  SourceLocation integration_where;  // the integration field
+};
+
 struct PendingNodeSet {
   std::size_t index = 0;  // into model.node_sets
   std::vector<IdReference> nodes;
@@ -179,6 +187,10 @@ class DeckReader {
   // deck_finalize_shells.cpp: the node indices and areas of *ELEMENT_SHELL rows; before
   // merge_duplicated_nodes, which replaces nodes in every element.
   void resolve_shell_nodes();
+  // deck_finalize_static.cpp: with *STATIC, the explicit-only commands are refused and the
+  // boundary conditions and loads become the lists of each static step; without it, options
+  // that only static steps have are refused. Runs last, on the final mesh.
+  void finish_static_steps();
   // deck_finalize_merge.cpp: *MERGE_DUPLICATED_NODES, once element nodes, node sets and shell
   // nodes are resolved and before anything else stores node indices; remaps the node sets.
   void merge_duplicated_nodes();
@@ -204,6 +216,10 @@ class DeckReader {
   std::vector<ElementNodes> element_nodes;
   std::vector<ShellNodes> shell_nodes;
   std::vector<PendingPartShell> part_shells;
+  std::vector<PendingPartSolid> part_solids;
+  // *STATIC: the end time t_end of each step of model.static_steps (as given, for the checks of
+  // boundary-condition windows against step ends).
+  std::vector<double> static_step_ends;
   std::set<std::int64_t> parts_with_thickness;  // *PART rows that give h
   std::vector<MeshSource> mesh_sources;
   std::vector<PendingNodeSet> node_sets;
@@ -215,7 +231,7 @@ class DeckReader {
   std::vector<PendingMerge> merges;
   std::vector<EntityRef> entity_references;  // entities that must exist
   std::vector<PendingContactKeyword> contact_keywords;
-  std::optional<SourceLocation> time_where, units_where, title_where;
+  std::optional<SourceLocation> time_where, units_where, title_where, output_where;
 
  private:
   void read_lines(const std::vector<std::string>& lines, const std::string& name, int depth);
@@ -260,6 +276,8 @@ void read_mat_jc(DeckReader&, Block&);
 void read_prop_damage_jc(DeckReader&, Block&);
 void read_part(DeckReader&, Block&);
 void read_part_shell(DeckReader&, Block&);
+void read_part_solid(DeckReader&, Block&);  // keyword_static.cpp
+void read_static(DeckReader&, Block&);      // keyword_static.cpp
 void read_set_node(DeckReader&, Block&);
 void read_set_part(DeckReader&, Block&);
 void read_initial_velocity(DeckReader&, Block&);

@@ -103,6 +103,7 @@ void read_time(DeckReader& d, Block& b) {
 }
 
 void read_output(DeckReader& d, Block& b) {
+  if (!d.output_where) d.output_where = b.where();
   const Row r = b.row({"dt_imp", "dt_ascii", "dt_db", "fragment"});
   OutputControl& o = d.model.output;
   o.state_interval = r.number_or(0, 0.0);

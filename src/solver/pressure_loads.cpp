@@ -41,12 +41,11 @@ std::string entity_name(const EntityRef& e) {
   }
 }
 
-}  // namespace
-
-std::vector<Quad4> pressure_faces(const Model& model, const PressureLoad& load) {
+// The exterior solid faces and the shells (one flag per shell) of the entity of `load`.
+void select_faces(const Model& model, const PressureLoad& load, std::vector<SkinFace>& skin,
+                  std::vector<std::uint8_t>& shell_selected) {
   const Mesh& mesh = model.mesh;
-  std::vector<SkinFace> skin;
-  std::vector<std::uint8_t> shell_selected(mesh.shell_count(), 0);
+  shell_selected.assign(mesh.shell_count(), 0);
   if (load.entity.type == EntityType::GeometryRegion) {
     // nodes_of tests the reference coordinates against the region (and checks that it exists).
     const std::vector<std::int32_t> inside = model.nodes_of(load.entity);
@@ -67,6 +66,21 @@ std::vector<Quad4> pressure_faces(const Model& model, const PressureLoad& load) 
     for (std::size_t s = 0; s < mesh.shell_count(); ++s)
       shell_selected[s] = std::binary_search(parts.begin(), parts.end(), mesh.shell_part[s]);
   }
+}
+
+[[noreturn]] void no_faces(const PressureLoad& load) {
+  throw InputError(load.entity.where, entity_name(load.entity) +
+                                          " has no exterior face of a solid element and no "
+                                          "shell element to carry the pressure");
+}
+
+}  // namespace
+
+std::vector<Quad4> pressure_faces(const Model& model, const PressureLoad& load) {
+  const Mesh& mesh = model.mesh;
+  std::vector<SkinFace> skin;
+  std::vector<std::uint8_t> shell_selected;
+  select_faces(model, load, skin, shell_selected);
 
   std::vector<Quad4> faces;
   faces.reserve(skin.size());
@@ -76,12 +90,34 @@ std::vector<Quad4> pressure_faces(const Model& model, const PressureLoad& load) 
   }
   for (std::size_t s = 0; s < mesh.shell_count(); ++s)
     if (shell_selected[s]) faces.push_back(mesh.shells[s]);
-  if (faces.empty()) {
-    throw InputError(load.entity.where, entity_name(load.entity) +
-                                            " has no exterior face of a solid element and no "
-                                            "shell element to carry the pressure");
-  }
+  if (faces.empty()) no_faces(load);
   return faces;
+}
+
+PressureHexFaces pressure_hex_faces(const Model& model, const PressureLoad& load) {
+  const Mesh& mesh = model.mesh;
+  std::vector<SkinFace> skin;
+  std::vector<std::uint8_t> shell_selected;
+  select_faces(model, load, skin, shell_selected);
+  PressureHexFaces out;
+  for (std::size_t s = 0; s < mesh.shell_count(); ++s)
+    if (shell_selected[s]) out.shells.push_back(static_cast<std::int32_t>(s));
+  for (const SkinFace& f : skin) {
+    Quad4 q = f.nodes;
+    if (!normalise_face(q)) continue;  // no area, as in pressure_faces
+    // The skin lists a face's nodes in the order of kHexFaces: that identifies the local face.
+    const Hex8& hex = mesh.hexes[static_cast<std::size_t>(f.hex)];
+    for (std::int8_t local = 0; local < 6; ++local) {
+      bool same = true;
+      for (int a = 0; a < 4 && same; ++a) same = hex[kHexFaces[local][a]] == f.nodes[a];
+      if (same) {
+        out.faces.push_back({f.hex, local});
+        break;
+      }
+    }
+  }
+  if (out.faces.empty() && out.shells.empty()) no_faces(load);
+  return out;
 }
 
 Vec3 face_vector_area(const Quad4& face, std::span<const double> x, std::span<const double> y,

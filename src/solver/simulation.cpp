@@ -426,6 +426,31 @@ void Simulation::Impl::drift() {
   if (!finite)
     throw InstabilityError("non-finite coordinates or forces at cycle " + std::to_string(n) +
                            ", t = " + std::to_string(t));
+  advance_heat();
+}
+
+// Sub-cycling of the heat (issue 11): the temperature advances in steps of at most
+// kThermalStepScale of its own stable step. When that is longer than the mechanical step (the
+// usual case: conduction is slow), one thermal step spans several mechanical ones and is taken
+// once the next mechanical step would carry it past its limit; when it is shorter, a mechanical
+// step is split into several thermal ones. The coordinates are those at t.
+void Simulation::Impl::advance_heat() {
+  if (!heat) return;
+  constexpr double kThermalStepScale = 0.9;
+  const double limit = kThermalStepScale * heat->stable_step();
+  double pending = t - heat_time;
+  const bool last = t >= model.time.end_time * (1.0 - 1e-12);
+  if (!last && pending + dt_prev <= limit) return;
+  while (pending > 0.0) {
+    const double h = std::min(pending, kThermalStepScale * heat->stable_step());
+    heat->advance(heat_time, h, x, y, z, {});
+    heat_time = pending - h > 0.0 ? heat_time + h : t;
+    pending = t - heat_time;
+    ++heat_steps;
+  }
+  for (const double v : heat->temperature())
+    if (!std::isfinite(v))
+      throw InstabilityError("non-finite temperature at t = " + std::to_string(heat_time));
 }
 
 void Simulation::advance() {

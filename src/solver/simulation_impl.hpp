@@ -3,11 +3,13 @@
 // time loop (simulation.cpp) and its results (simulation_results.cpp).
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "abut/element/shell_block.hpp"
 #include "abut/element/solid_block.hpp"
+#include "abut/solver/heat.hpp"
 #include "abut/solver/pressure_loads.hpp"
 #include "abut/solver/simulation.hpp"
 #include "boundary_conditions.hpp"
@@ -61,7 +63,7 @@ struct Simulation::Impl {
   bool rotations() const { return !rotary_inertia.empty(); }
 
   std::unique_ptr<ContactSet> contacts;
-  std::size_t eroded_elements = 0;          // as last reported to the contacts
+  std::size_t eroded_elements = 0;           // as last reported to the contacts
   std::vector<std::uint8_t> element_eroded;  // per element, hexes then shells
   std::int64_t limiting_contact = -1;
   double contact_seconds = 0.0;  // wall time spent in contact (for the summary)
@@ -87,6 +89,11 @@ struct Simulation::Impl {
   std::vector<double> good_x, good_y, good_z;
   double good_t = 0.0;
 
+  // Heat (heat.hpp), sub-cycled: the temperature is at heat_time <= t, within one thermal step.
+  std::optional<HeatSolver> heat;
+  double heat_time = 0.0;
+  std::int64_t heat_steps = 0;
+
   explicit Impl(const Model& m) : model(m) {}
 
   void setup();
@@ -100,6 +107,7 @@ struct Simulation::Impl {
   void apply_nodal_rotation(const PrescribedMotion& p, const std::vector<std::int32_t>& nodes,
                             double* w, const double* w_old, double dt_avg);
   void build_force_slots();
+  void advance_heat();
   std::string limit_description() const;
 };
 

@@ -131,4 +131,16 @@ const std::vector<double>& Simulation::last_good_y() const { return impl_->good_
 const std::vector<double>& Simulation::last_good_z() const { return impl_->good_z; }
 double Simulation::last_good_time() const { return impl_->good_t; }
 
+std::span<const double> Simulation::temperature() const {
+  return impl_->heat ? impl_->heat->temperature() : std::span<const double>();
+}
+double Simulation::temperature_time() const { return impl_->heat_time; }
+std::int64_t Simulation::thermal_steps() const { return impl_->heat_steps; }
+double Simulation::thermal_stable_step() const {
+  return impl_->heat ? impl_->heat->stable_step() : 0.0;
+}
+HeatBalance Simulation::heat_balance() const {
+  return impl_->heat ? impl_->heat->balance() : HeatBalance{};
+}
+
 }  // namespace abut

@@ -195,6 +195,11 @@ void Simulation::Impl::setup() {
   t = model.time.start_time;
   compute_forces(0.0);
   dt_initial = std::min(model.time.step_scale * stable, model.time.max_step);
+  if (!model.thermal.properties.empty()) {
+    heat.emplace(model);
+    if (!heat->active()) heat.reset();
+    heat_time = t;
+  }
   kick();
   total0 = energy.total();
 }

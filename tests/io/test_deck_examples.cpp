@@ -3,7 +3,9 @@
 #include <gmock/gmock.h>
 
 #include <algorithm>
+#include <cmath>
 
+#include "abut/solver/static_solver.hpp"
 #include "test_deck_helpers.hpp"
 
 namespace abut {
@@ -84,6 +86,41 @@ TEST(DeckExamples, BarImpact) {
   const auto end_face = m.nodes_of(m.motions[0].entity);
   EXPECT_EQ(end_face.size(), 9u);  // 3 x 3 nodes at x = 0
   for (const auto i : end_face) EXPECT_DOUBLE_EQ(m.mesh.nodes.x[i], 0.0);
+}
+
+// A static deck (*STATIC): the punch pressed into the base and half released. It runs in well under
+// a second, so it is run here: the punch is in equilibrium (the contact force balances the
+// reaction on its top face) and the force halves with the travel (linear elastic).
+TEST(DeckExamples, StaticBlockPress) {
+  const Model m = read_deck(example("static_block_press.k"));
+  ASSERT_EQ(m.static_steps.size(), 2u);
+  EXPECT_EQ(m.static_steps[0].title, "press");
+  EXPECT_DOUBLE_EQ(m.static_steps[0].period, 1.0);
+  EXPECT_DOUBLE_EQ(m.static_steps[1].period, 1.0);
+  EXPECT_DOUBLE_EQ(m.time.end_time, 2.0);
+  for (const Part& p : m.parts) EXPECT_EQ(p.solid_integration, Part::SolidIntegration::Full);
+  ASSERT_EQ(m.contacts.size(), 1u);
+  EXPECT_TRUE(m.motions.empty());
+  // Base bottom: 9 x 9 nodes, 3 dofs; punch top: 5 x 5 nodes, 3 dofs.
+  EXPECT_EQ(m.static_steps[0].displacements.size(), 3u * 81u + 3u * 25u);
+
+  StaticSolver solver(m);
+  std::vector<double> force;  // of the base on the punch, at the end of each step
+  solver.run([&](const StaticIncrement& inc) {
+    if (!inc.step_end) return;
+    double top = 0.0;  // reaction on the punch's top face
+    for (std::size_t i = 0; i < m.mesh.nodes.size(); ++i)
+      if (m.mesh.nodes.z[i] == 20.0) top += solver.reaction()[3 * i + 2];
+    double contact = 0.0;  // force on surface 1 (the punch), both passes
+    const auto passes = solver.contacts();
+    for (std::size_t k = 0; k < passes.size(); ++k)
+      contact += (k == 0 ? 1.0 : -1.0) * passes[k].total_force().z;
+    EXPECT_NEAR(contact + top, 0.0, 1e-4 * std::abs(top));
+    force.push_back(contact);
+  });
+  ASSERT_EQ(force.size(), 2u);
+  EXPECT_NEAR(force[0], 18.07e3, 0.01e3);
+  EXPECT_NEAR(force[1] / force[0], 0.5, 0.005);
 }
 
 }  // namespace

@@ -196,17 +196,21 @@ TEST(Conformance, HueeberReadsQuicklyWithItsLoads) {
   EXPECT_LT(seconds, 10.0);
 }
 
-TEST(Conformance, ChangeSurfaceBehaviorIsNotSupportedYet) {
+// changesurfbeh.inp: a TIED pair (penalty 1e9, *FRICTION 1e-4, 1e3) becomes a LINEAR one of slope
+// 1e9 in the second step, read at line 69-71.
+TEST(Conformance, ChangeSurfaceBehaviorReadsAsAContactChangeOfTheSecondStep) {
   const Deck path("changesurfbeh");
   if (path.empty()) return;
-  try {
-    read_inp_with_notes(path.string());
-    ADD_FAILURE() << "expected an InputError";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.where().line, 69u);
-    EXPECT_NE(e.message().find("*CHANGE SURFACE BEHAVIOR is not supported yet"), std::string::npos)
-        << e.what();
-  }
+  const Model m = read_inp_with_notes(path.string()).model;
+  ASSERT_EQ(m.static_steps.size(), 2u);
+  EXPECT_TRUE(m.static_steps[0].contact_changes.empty());
+  const auto& changes = m.static_steps[1].contact_changes;
+  ASSERT_EQ(changes.size(), 1u);
+  ASSERT_TRUE(changes[0].overclosure.has_value());
+  ASSERT_TRUE(changes[0].overclosure->slope.has_value());
+  EXPECT_EQ(*changes[0].overclosure->slope, 1e9);
+  EXPECT_EQ(changes[0].friction, 1e-4);
+  EXPECT_EQ(changes[0].stick_slope, 1e3);
 }
 
 }  // namespace

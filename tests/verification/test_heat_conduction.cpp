@@ -19,6 +19,7 @@
 #include "abut/mesh/generators.hpp"
 #include "abut/mesh/skin.hpp"
 #include "abut/solver/heat.hpp"
+#include "abut/solver/simulation.hpp"
 
 namespace abut {
 namespace {
@@ -144,6 +145,42 @@ TEST(HeatConduction, FluxIntoAnInsulatedBarIsStored) {
   run(heat, m, 3.0);
   EXPECT_NEAR(heat.balance().boundary, q * w * w * 3.0, 1e-12 * q * w * w * 3.0);
   EXPECT_NEAR(heat.balance().stored, q * w * w * 3.0, 1e-9 * q * w * w * 3.0);
+}
+
+// The explicit solver carries the heat along (simulation.cpp, advance_heat): with a stiff
+// material many mechanical steps make one thermal step, with a very soft one a mechanical step is
+// split into thermal ones; either way the temperature follows the erf solution (1%), and the heat
+// balance closes.
+TEST(HeatConduction, ExplicitRunSubCyclesTheHeat) {
+  for (const double young : {2.1e5, 1e-2}) {  // mechanical step ~1/450 and ~10x the thermal one
+    const double t0 = 20.0, ts = 120.0, end = 10.0;
+    Model m = bar(0.1, 50, 0.002);  // 2 mm elements; 2 sqrt(a t) = 22 mm << 100 mm
+    std::get<ElasticParams>(m.materials[0].params).young = young;
+    m.time.end_time = end;
+    m.thermal.initial_temperature = t0;
+    m.thermal.prescribed.push_back({nodes_at_x(m, 0.0), {}, ts, {}});
+    Simulation sim(m);
+    while (!sim.finished()) sim.advance();
+    ASSERT_NEAR(sim.temperature_time(), end, 1e-9 * end);
+    double worst = 0.0;
+    for (const double x : {0.002, 0.004, 0.008, 0.012, 0.02}) {
+      double sum = 0.0;
+      const auto nodes = nodes_at_x(m, x);
+      for (const std::int32_t i : nodes) sum += sim.temperature()[static_cast<std::size_t>(i)];
+      const double exact = ts + (t0 - ts) * std::erf(x / (2.0 * std::sqrt(kDiffusivity * end)));
+      worst =
+          std::max(worst, std::abs(sum / static_cast<double>(nodes.size()) - exact) / (ts - t0));
+    }
+    std::cout << "E = " << young << ": " << sim.cycle() << " mechanical steps, "
+              << sim.thermal_steps() << " thermal steps, worst error " << 100 * worst << "%\n";
+    EXPECT_LT(worst, 0.01);
+    if (young > 1.0)
+      EXPECT_LT(sim.thermal_steps() * 10, sim.cycle());
+    else
+      EXPECT_GT(sim.thermal_steps(), sim.cycle());
+    const HeatBalance b = sim.heat_balance();
+    EXPECT_NEAR(b.error(), 0.0, 1e-9 * std::abs(b.stored));
+  }
 }
 
 }  // namespace

@@ -123,6 +123,11 @@ struct StaticStep {
   double max_increment = 0.0;       // [time]; 0: the period
   bool fixed_increments = false;    // DIRECT: no cut-back, the initial increment throughout
   int max_increments = 100;         // INC
+  // Newton controls of this step (*STATIC of a .k deck: tol_R, tol_C, n_iter); when empty, those
+  // of StaticControls (static_solver.hpp).
+  std::optional<double> force_tolerance;         // largest residual / average force
+  std::optional<double> displacement_tolerance;  // largest correction / displacement increment
+  std::optional<int> max_iterations;             // per attempt of an increment
   std::vector<StepDisplacement> displacements;
   std::vector<StepForce> forces;
   std::vector<StepPressure> pressures;

@@ -9,6 +9,7 @@
 // complete (positions, forces, the velocity v^n = (v^{n-1/2}+v^{n+1/2})/2, energies at t^n).
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "abut/element/shell_block.hpp"
 #include "abut/element/solid_block.hpp"
 #include "abut/solver/contact_report.hpp"
+#include "abut/solver/heat.hpp"
 #include "abut/solver/model.hpp"
 
 namespace abut {
@@ -79,9 +81,9 @@ class Simulation {
   // Per-hex results in Model mesh order (rigid hexes: 0).
   void von_mises_stress(std::vector<double>& out) const;
   void pressure(std::vector<double>& out) const;
-  void plastic_strain(std::vector<double>& out) const;  // equivalent plastic strain per hex
+  void plastic_strain(std::vector<double>& out) const;       // equivalent plastic strain per hex
   void plastic_strain_rate(std::vector<double>& out) const;  // of the last step, per hex
-  std::vector<std::uint8_t> eroded_hexes() const;       // 1 per eroded hex (mesh order)
+  std::vector<std::uint8_t> eroded_hexes() const;            // 1 per eroded hex (mesh order)
   // Per-shell results in Model mesh order (rigid shells: 0): the largest von Mises stress and
   // plastic strain over the element's through-thickness points.
   void shell_von_mises_stress(std::vector<double>& out) const;
@@ -101,6 +103,15 @@ class Simulation {
   const std::vector<ContactReport>& contact_reports() const;  // valid until the next advance()
   void contact_fields(std::vector<double>& force, std::vector<double>& pressure,
                       std::vector<double>& wear) const;
+
+  // Heat (heat.hpp): the nodal temperatures (empty without thermal properties), the time they
+  // are at (within one thermal step of time(): the heat is sub-cycled), the thermal steps taken,
+  // the current thermal stable step and the heat balance.
+  std::span<const double> temperature() const;
+  double temperature_time() const;
+  std::int64_t thermal_steps() const;
+  double thermal_stable_step() const;
+  HeatBalance heat_balance() const;
 
   // The state saved before the step that failed (positions and velocities), for output.
   const std::vector<double>& last_good_x() const;

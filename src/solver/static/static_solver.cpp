@@ -115,8 +115,8 @@ struct StaticSolver::Impl {
   Impl(const Model& m, StaticControls c) : model(m), controls(c), elements(m) {
     if (!m.motions.empty() || !m.gravity.empty() || !m.pressures.empty())
       throw InputError(
-          "the static solver takes its loads from the steps (*BOUNDARY, *CLOAD, *DLOAD); "
-          "*BC_MOTION, *LOAD_GRAVITY and *LOAD_PRESSURE are not supported in static steps yet");
+          "the static solver takes its loads from Model::static_steps; the model still holds "
+          "explicit motions, gravity or pressures (the deck readers turn them into step loads)");
     if (m.static_steps.empty()) throw InputError("the model has no static step");
     u.assign(3 * m.mesh.nodes.size(), 0.0);
     reaction.assign(u.size(), 0.0);
@@ -136,9 +136,14 @@ struct StaticSolver::Impl {
 
   // One attempt at an increment ending at step time tau. Returns the iterations used, or -1.
   // `base`: the hexes' equations of this step (contact elements are added per iteration).
-  int newton(const detail::StepLoads& loads, const detail::DofMap& dofs,
+  int newton(const StaticStep& step, const detail::StepLoads& loads, const detail::DofMap& dofs,
              const ElementEquations& base, double tau, bool nonlinear_geometry,
              std::vector<double>& state, double& residual_out) {
+    // The step's own Newton controls (*STATIC of a .k deck) where it gives them.
+    const double force_tolerance = step.force_tolerance.value_or(controls.force_tolerance);
+    const double displacement_tolerance =
+        step.displacement_tolerance.value_or(controls.displacement_tolerance);
+    const int max_iterations = step.max_iterations.value_or(controls.max_iterations);
     const std::vector<double> start = state;
     loads.prescribe(tau, state);
     dofs.update_dependent(state);
@@ -147,7 +152,7 @@ struct StaticSolver::Impl {
     const auto neq = static_cast<std::size_t>(dofs.equations());
     std::vector<double> f(n), external(n), applied(n), r(neq), dq(neq), element_values, csr;
     std::vector<double> x(nodes), y(nodes), z(nodes);
-    for (int it = 0; it <= controls.max_iterations; ++it) {
+    for (int it = 0; it <= max_iterations; ++it) {
       const auto t0 = Clock::now();
       try {
         elements.evaluate(state, nonlinear_geometry);
@@ -205,8 +210,8 @@ struct StaticSolver::Impl {
         for (std::size_t d = 0; d < n; ++d) dumax = std::max(dumax, std::abs(state[d] - start[d]));
       }
       const bool tiny = rmax <= 1e-8 * q || (q == 0.0 && rmax == 0.0);
-      const bool converged = tiny || (it > 0 && rmax <= controls.force_tolerance * q &&
-                                      cmax <= controls.displacement_tolerance * dumax);
+      const bool converged =
+          tiny || (it > 0 && rmax <= force_tolerance * q && cmax <= displacement_tolerance * dumax);
       if (converged) {
         converged_force_sum += q_now;
         ++converged_increments;
@@ -217,7 +222,7 @@ struct StaticSolver::Impl {
         stats.assembly_seconds += seconds_since(t0);
         return it;
       }
-      if (it == controls.max_iterations) break;
+      if (it == max_iterations) break;
       // Tangent: T^T k T of every hex and contact element, assembled.
       ElementEquations ee = base;
       for (const StaticContact& c : contacts)
@@ -342,12 +347,12 @@ struct StaticSolver::Impl {
         if (++increment > step.max_increments)
           throw StaticConvergenceError("step " + std::to_string(s + 1) + ": more than " +
                                        std::to_string(step.max_increments) +
-                                       " increments (INC of *STEP) needed");
+                                       " increments (INC of *STEP, n_inc of *STATIC) needed");
         for (int attempt = 1;; ++attempt) {
           std::vector<double> trial = u;
           double residual = 0.0;
           const int iterations =
-              newton(loads, dofs, base, tau + dtau, nonlinear_geometry, trial, residual);
+              newton(step, loads, dofs, base, tau + dtau, nonlinear_geometry, trial, residual);
           if (iterations >= 0) {
             u = std::move(trial);
             elements.commit();
