@@ -44,7 +44,7 @@ struct Plates {
     plate(upper, n, 0.003, 1e-4 + (shells ? kShellThickness : 0.0), false);
     for (auto* v : {&vx, &vy, &vz, &fx, &fy, &fz}) v->assign(x.size(), 0.0);
   }
-  abut::ContactInput input(double t) const { return {x, y, z, vx, vy, vz, t, 1e-7}; }
+  abut::ContactInput input(double t) const { return {x, y, z, vx, vy, vz, t, 1e-7, {}}; }
 };
 
 void run(benchmark::State& state, abut::Discretisation discretisation, const char* counter,
@@ -58,7 +58,7 @@ void run(benchmark::State& state, abut::Discretisation discretisation, const cha
   const std::size_t upper_first = (101 * 101);
   for (std::size_t i = upper_first; i < p.x.size(); ++i)
     p.z[i] -= 2e-4, p.vx[i] = 1.0;  // 1e-4 penetration
-  abut::ContactForces out{p.fx, p.fy, p.fz};
+  abut::ContactForces out{p.fx, p.fy, p.fz, {}, {}};
   double t = 0.0;
   for (auto _ : state) {
     for (std::size_t i = upper_first; i < p.x.size(); ++i) p.x[i] += 1e-7;

@@ -11,8 +11,8 @@
 namespace abut {
 namespace {
 
-// A point within this fraction of its element thickness counts as touching when sticking
-// contact ties it (absorbs round-off of initially coincident surfaces).
+// A point within this fraction of its element thickness counts as touching: sticking contact ties
+// it, and a thermal contact conducts as closed (absorbs round-off of coincident surfaces).
 constexpr double kTieGapFraction = 1e-6;
 
 Vec3 velocity_at(const std::array<std::int32_t, 4>& nodes, const std::array<double, 4>& shape,
@@ -149,6 +149,7 @@ double ContactInterface::spring(const Side& own, std::size_t p, double area, con
 void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactInput& in) {
   const std::int32_t last_partner = pass.hit[p] ? pass.hit_facet[p] : -1;
   pass.hit[p] = 0;
+  pass.heat_facet[p] = -1;
   const Side& own = sides_[pass.own];
   const Side& target = sides_[pass.target];
   if (pass.state[p] == kReleased) return;
@@ -258,6 +259,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     pass.damping_work[p] = c * dot(v_rel, v_rel) * in.dt;
     pass.slip_work[p] = 0.0;
     pass.penetration[p] = std::max(-dot(stretch, r.normal), 0.0);
+    conduct(pass, p, facet, pass.tie_xi[p], pass.tie_eta[p], std::max(fn, 0.0) / area, 0.0, area);
     return true;
   };
 
@@ -298,6 +300,11 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   }
   if (!(penetration > 0.0) && !bilateral && !adhesive) {
     clear_history();
+    // Open within reach of the partner: heat may still cross the gap (thermal.hpp).
+    if (s.thermal.conductance &&
+        (!node_point || facing_area(from_behind ? h.normal * -1.0 : h.normal)))
+      conduct(pass, p, h.facet, h.xi, h.eta, 0.0,
+              -penetration <= kTieGapFraction * own.point_thickness[p] ? 0.0 : -penetration, area);
     return;
   }
 
@@ -362,6 +369,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   pass.damping_work[p] = (fn - elastic) * (-v_n) * in.dt;
   pass.slip_work[p] = slip_work;
   pass.penetration[p] = penetration;
+  conduct(pass, p, h.facet, h.xi, h.eta, std::max(fn, 0.0) / area, -penetration, area);
 }
 
 }  // namespace abut

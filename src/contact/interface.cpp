@@ -185,6 +185,7 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   stats_.normal_force = stats_.tangential_force = stats_.elastic_energy = stats_.max_penetration =
       0.0;
   stats_.active_points = 0;
+  stats_.heat_flow = 0.0;
   stats_.stable_step = kInfinity;
   for (auto i : surface_nodes_) pressure_[i] = 0.0;
   if (in.time < settings_.begin_time || in.time > settings_.end_time) {
@@ -204,6 +205,7 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
     for (std::size_t p = 0; p < n; ++p) evaluate_point(pass, p, in);
   }
   scatter(in, out);
+  if (settings_.thermal.any()) scatter_heat(in, out);
   if (edges_) {
     const EdgeContactResult e =
         edges_->apply(in.x, in.y, in.z, in.vx, in.vy, in.vz, mass_, in.dt, out.fx, out.fy, out.fz);

@@ -362,6 +362,7 @@ void ContactInterface::size_pass(Pass& pass, std::size_t n) {
   for (auto* v : {&pass.state, &pass.sliding, &pass.adhered, &pass.hit}) v->resize(n, 0);
   pass.tie_facet.resize(n, -1);
   pass.hit_facet.resize(n, -1);
+  pass.heat_facet.resize(n, -1);
   for (auto* v : {&pass.offset,
                   &pass.shift,
                   &pass.htx,
@@ -385,6 +386,9 @@ void ContactInterface::size_pass(Pass& pass, std::size_t n) {
                   &pass.penetration,
                   &pass.omega2,
                   &pass.pair_gap,
+                  &pass.heat_xi,
+                  &pass.heat_eta,
+                  &pass.heat_conductance,
                   &pass.qx,
                   &pass.qy,
                   &pass.qz})

@@ -26,7 +26,7 @@ inline constexpr VariableField kVariableFields[] = {
     {"pres", &Variables::pres},   {"vtang", &Variables::vtang}, {"T", &Variables::T},
     {"epsp", &Variables::epsp},   {"sigy0", &Variables::sigy0}, {"dmg", &Variables::dmg},
     {"eint", &Variables::eint},   {"wi", &Variables::wi},       {"we", &Variables::we},
-    {"wk", &Variables::wk},
+    {"wk", &Variables::wk},       {"gap", &Variables::gap},
 };
 
 // clang-format off

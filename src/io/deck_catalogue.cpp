@@ -64,6 +64,7 @@ const std::map<std::string, KeywordReader, std::less<>>& supported() {
       {"*CONTACT_NORMAL", read_contact_normal},
       {"*CONTACT_SCALE_PENALTY", read_contact_scale_penalty},
       {"*CONTACT_STIFFNESS", read_contact_stiffness},
+      {"*CONTACT_THERMAL", read_contact_thermal},
   };
   return table;
 }

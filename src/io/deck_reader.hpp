@@ -297,6 +297,7 @@ void read_contact_normal(DeckReader&, Block&);
 void read_contact_friction(DeckReader&, Block&);
 void read_contact_adhesion(DeckReader&, Block&);
 void read_contact_stiffness(DeckReader&, Block&);
+void read_contact_thermal(DeckReader&, Block&);
 void read_contact_gap(DeckReader&, Block&);
 void read_contact_edge(DeckReader&, Block&);
 void read_contact_erosion(DeckReader&, Block&);

@@ -70,8 +70,8 @@ void read_contact(DeckReader& d, Block& b) {
                                 "no_internal", "sigma_stick", "fric_heat"})) {
     if (const auto fid = d.optional_other_id(*r4, 0)) bind(*fid, r4->where(0), &ContactSpec::wear1);
     if (const auto fid = d.optional_other_id(*r4, 1)) bind(*fid, r4->where(1), &ContactSpec::wear2);
-    r4->unsupported_unless(
-        2, 0.0, "thermal contact conductance (fid_thermal) needs a thermal solution, which");
+    if (const auto fid = d.optional_other_id(*r4, 2))
+      bind(*fid, r4->where(2), &ContactSpec::thermal);
     c.edge_angle = r4->number_or(3, c.edge_angle);
     r4->require(c.edge_angle > 0.0 && c.edge_angle < 180.0, 3,
                 "expected an angle in (0, 180) degrees");
@@ -83,11 +83,6 @@ void read_contact(DeckReader& d, Block& b) {
                   "expected a sticking failure stress > 0 (empty: no sticking)");
     }
     c.friction_heat = r4->flag(7);
-    if (c.friction_heat) {
-      r4->fail(7,
-               "converting friction work to heat needs a thermal solution, which is not supported "
-               "yet by abut");
-    }
   }
   d.entity_references.push_back(c.surface1);
   d.entity_references.push_back(c.surface2);

@@ -112,16 +112,54 @@ TangentialLaw tangential_law_of(const ContactSpec& spec, const FunctionTable* ta
   return Frictionless{};
 }
 
+// Heat through the contact: fid_thermal of *CONTACT (h of pres and gap; a *CURVE: of pres) or
+// the law of *CONTACT_THERMAL, and fric_heat with its share.
+ThermalContactSettings thermal_of(const Model& model, const ContactSpec& spec) {
+  ThermalContactSettings s;
+  if (spec.thermal.valid() && spec.conductance)
+    throw InputError(spec.thermal_where,
+                     "*CONTACT " + std::to_string(spec.id) +
+                         " has a conductance function (fid_thermal) already: give one of them");
+  const FunctionTable* table = &model.functions;
+  const double term = model.time.end_time;
+  if (spec.thermal.valid()) {
+    const FunctionRef f = spec.thermal;
+    s.conductance = FunctionConductance{[table, f, term](double pres, double gap) {
+      Variables v;
+      v.pres = pres;
+      v.gap = gap;
+      v.term = term;
+      return table->value(f, pres, v);
+    }};
+  } else if (spec.conductance) {
+    using Law = ContactSpec::Conductance::Law;
+    const ContactSpec::Conductance& c = *spec.conductance;
+    switch (c.law) {
+      case Law::Pressure:
+        s.conductance = PressureConductance{c.nominal, c.hardness, c.exponent};
+        break;
+      case Law::OpenClosed:
+        s.conductance = OpenClosedConductance{c.closed, c.open};
+        break;
+      case Law::Distance: {
+        const FunctionRef f = spec.distance_conductance;
+        s.conductance = DistanceConductance{[table, f, term](double gap) {
+          Variables v;
+          v.gap = gap;
+          v.term = term;
+          return table->value(f, gap, v);
+        }};
+        break;
+      }
+    }
+  }
+  if (spec.friction_heat) s.friction_heat = FrictionHeatSplit{spec.friction_heat_to_surface1};
+  return s;
+}
+
 ContactSettings settings_of(const Model& model, const ContactSpec& spec) {
-  if (spec.thermal.valid())
-    throw InputError(spec.where,
-                     "fid_thermal (contact heat conduction) is not supported yet: abut has "
-                     "no thermal solution yet");
-  if (spec.friction_heat)
-    throw InputError(spec.where,
-                     "fric_heat = 1 (friction work to heat) is not supported yet: abut has "
-                     "no thermal solution yet");
   ContactSettings s;
+  s.thermal = thermal_of(model, spec);
   s.accuracy_level = spec.accuracy_level;
   s.accuracy_edge = spec.accuracy_edge;
   const FunctionTable* table = &model.functions;
@@ -390,7 +428,8 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
     : model_(model) {
   const double v_max = max_initial_speed(vx0, vy0, vz0);
   const Nodes& nodes = model.mesh.nodes;
-  const ContactInput initial{nodes.x, nodes.y, nodes.z, vx0, vy0, vz0, model.time.start_time, 0.0};
+  const ContactInput initial{nodes.x, nodes.y, nodes.z, vx0, vy0, vz0, model.time.start_time,
+                             0.0,     {}};
   for (const ContactSpec& spec : model.contacts) {
     if (spec.small_sliding)
       throw InputError(
@@ -457,6 +496,12 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
   cfx_.assign(nodes.size(), 0.0);
   cfy_.assign(nodes.size(), 0.0);
   cfz_.assign(nodes.size(), 0.0);
+  for (const ContactSpec& spec : model.contacts)
+    if (spec.thermal.valid() || spec.conductance || spec.friction_heat) thermal_ = true;
+  if (thermal_) {
+    heat_.assign(nodes.size(), 0.0);
+    conductance_.assign(nodes.size(), 0.0);
+  }
 }
 
 void ContactSet::apply(const ContactInput& in, std::span<double> fx, std::span<double> fy,
@@ -465,7 +510,13 @@ void ContactSet::apply(const ContactInput& in, std::span<double> fx, std::span<d
   std::fill(cfx_.begin(), cfx_.end(), 0.0);
   std::fill(cfy_.begin(), cfy_.end(), 0.0);
   std::fill(cfz_.begin(), cfz_.end(), 0.0);
-  ContactForces forces{cfx_, cfy_, cfz_};
+  ContactForces forces{cfx_, cfy_, cfz_, {}, {}};
+  if (thermal_) {
+    std::fill(heat_.begin(), heat_.end(), 0.0);
+    std::fill(conductance_.begin(), conductance_.end(), 0.0);
+    forces.heat = heat_;
+    forces.conductance = conductance_;
+  }
   for (std::size_t c = 0; c < interfaces_.size(); ++c) {
     interfaces_[c].apply(in, forces);
     reports_[c].stats = interfaces_[c].stats();

@@ -20,24 +20,34 @@ class ContactSet {
 
   bool empty() const { return interfaces_.empty(); }
   // Adds every interface's forces for the state `in`; also keeps them per node for output.
-  void apply(const ContactInput& in, std::span<double> fx, std::span<double> fy, std::span<double> fz);
+  void apply(const ContactInput& in, std::span<double> fx, std::span<double> fy,
+             std::span<double> fz);
   // Smallest stable step of the contact springs and the interface that sets it (-1: none).
   double stable_step(std::int64_t* limiting_contact) const;
   // Element erosion (ContactInterface::erode): `eroded` per element, hexes then shells.
   void erode(std::span<const std::uint8_t> eroded);
   double elastic_and_damping_energy() const;  // "contact" column of energy.csv
   double friction_energy() const;
+  // Thermal contact (*CONTACT fid_thermal, fric_heat, *CONTACT_THERMAL): the heat into each node
+  // [power] and each node's conductance through contact [power/temperature] of the last apply();
+  // empty without thermal contact.
+  bool thermal() const { return thermal_; }
+  std::span<const double> heat() const { return heat_; }
+  std::span<const double> conductance() const { return conductance_; }
 
   // Penalties and the statistics of the last apply(), one per interface.
   const std::vector<ContactReport>& reports() const { return reports_; }
   // Nodal output fields summed over all interfaces (force interleaved x, y, z).
-  void nodal_fields(std::vector<double>& force, std::vector<double>& pressure, std::vector<double>& wear) const;
+  void nodal_fields(std::vector<double>& force, std::vector<double>& pressure,
+                    std::vector<double>& wear) const;
 
  private:
   const Model& model_;
   std::vector<ContactReport> reports_;
   std::vector<ContactInterface> interfaces_;
   std::vector<double> cfx_, cfy_, cfz_;  // contact force per node, last step
+  bool thermal_ = false;
+  std::vector<double> heat_, conductance_;  // per node, last step (thermal contact only)
 };
 
 }  // namespace abut

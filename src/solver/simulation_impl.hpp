@@ -93,6 +93,10 @@ struct Simulation::Impl {
   std::optional<HeatSolver> heat;
   double heat_time = 0.0;
   std::int64_t heat_steps = 0;
+  // Heat from the mechanics gathered since heat_time [energy per node], its rate over the next
+  // thermal step [power per node], and the largest contact conductance per heat capacity [1/time].
+  std::vector<double> heat_energy, heat_source;
+  double contact_heat_rate = 0.0;
 
   explicit Impl(const Model& m) : model(m) {}
 
@@ -108,6 +112,8 @@ struct Simulation::Impl {
                             double* w, const double* w_old, double dt_avg);
   void build_force_slots();
   void advance_heat();
+  void gather_contact_heat(double dt);
+  void check_thermal_contacts() const;
   std::string limit_description() const;
 };
 

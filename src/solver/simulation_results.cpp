@@ -134,6 +134,9 @@ double Simulation::last_good_time() const { return impl_->good_t; }
 std::span<const double> Simulation::temperature() const {
   return impl_->heat ? impl_->heat->temperature() : std::span<const double>();
 }
+std::span<const double> Simulation::heat_capacity() const {
+  return impl_->heat ? impl_->heat->capacity() : std::span<const double>();
+}
 double Simulation::temperature_time() const { return impl_->heat_time; }
 std::int64_t Simulation::thermal_steps() const { return impl_->heat_steps; }
 double Simulation::thermal_stable_step() const {

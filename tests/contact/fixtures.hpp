@@ -20,9 +20,9 @@ struct World {
     return static_cast<std::int32_t>(x.size() - 1);
   }
   ContactInput input(double time = 0.0, double dt = 0.0) const {
-    return {x, y, z, vx, vy, vz, time, dt};
+    return {x, y, z, vx, vy, vz, time, dt, {}};
   }
-  ContactForces forces() { return {fx, fy, fz}; }
+  ContactForces forces() { return {fx, fy, fz, {}, {}}; }
   void clear_forces() {
     for (auto* v : {&fx, &fy, &fz}) std::fill(v->begin(), v->end(), 0.0);
   }

@@ -32,7 +32,7 @@ struct NodeOnFacet {
     s.depth = 0.5;
     s.search_distance = 0.5;
     const std::vector<std::int32_t> nodes{4};
-    return StaticContact(s, secondary, main, nodes, {self.x, self.y, self.z, {}, {}, {}, 0, 0});
+    return StaticContact(s, secondary, main, nodes, {self.x, self.y, self.z, {}, {}, {}, 0, 0, {}});
   }
   NodeOnFacet(const StaticContactSettings& s, double z0) : contact(make(s, z0, *this)) {}
 
@@ -40,7 +40,7 @@ struct NodeOnFacet {
   const StaticContactPoint& at(double z_now, double dx = 0.0) {
     for (int n = 4; n < 8; ++n) z[n] = z_now;
     x[4] = dx;
-    contact.evaluate({x, y, z, {}, {}, {}, 0, 0});
+    contact.evaluate({x, y, z, {}, {}, {}, 0, 0, {}});
     return contact.points()[0];
   }
 };

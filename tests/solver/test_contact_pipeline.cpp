@@ -30,12 +30,12 @@ TEST(ContactPipeline, HexBlocksPressedTogether) {
   std::vector<double> x = mesh.nodes.x, y = mesh.nodes.y, z = mesh.nodes.z;
   ContactSettings s;
   s.damping = 0.0;
-  ContactInterface contact(s, lower, upper, mass, {x, y, z, vx, vy, vz, 0.0, 0.0});
+  ContactInterface contact(s, lower, upper, mass, {x, y, z, vx, vy, vz, 0.0, 0.0, {}});
   const double d = 0.002;
   for (std::size_t i = 0; i < n; ++i)
     if (mesh.nodes.z[i] > 0.01) z[i] -= 0.05 + d;
-  ContactForces out{fx, fy, fz};
-  contact.apply({x, y, z, vx, vy, vz, 0.0, 1e-6}, out);
+  ContactForces out{fx, fy, fz, {}, {}};
+  contact.apply({x, y, z, vx, vy, vz, 0.0, 1e-6, {}}, out);
   const double expected = 2.5e9 * 0.36 * d;
   EXPECT_NEAR(contact.stats().force.z, -expected, 1e-9 * expected);  // surface 1 = lower block
   double upper_fz = 0.0;

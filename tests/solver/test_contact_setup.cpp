@@ -54,12 +54,14 @@ TEST(ContactSetup, GivenPenaltyNeedsNoUnitSystem) {
   EXPECT_EQ(message_of(two_blocks("", "P, 1, P, 2, 0.0, 1.0e13\n")), "");
 }
 
-TEST(ContactSetup, ThermalOptionsAreNotSupportedYet) {
+// Thermal contact (fid_thermal, fric_heat) needs a temperature field: without thermal properties
+// the run is refused at the *CONTACT, not run without heat.
+TEST(ContactSetup, ThermalOptionsNeedThermalProperties) {
   const std::string units = "*UNIT_SYSTEM\nSI\n*FUNCTION\n5\n1.0\n";
-  EXPECT_NE(message_of(two_blocks(units, "P, 1, P, 2\n0\n0, 0, 5\n")).find("not supported yet"),
+  EXPECT_NE(message_of(two_blocks(units, "P, 1, P, 2\n0\n0, 0, 5\n")).find("thpid"),
             std::string::npos);
   EXPECT_NE(message_of(two_blocks(units, "P, 1, P, 2\n0\n0, 0, , 20.0, 0, 0, , 1\n"))
-                .find("not supported yet"),
+                .find("fric_heat needs a temperature field"),
             std::string::npos);
 }
 

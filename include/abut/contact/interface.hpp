@@ -32,11 +32,16 @@ struct ContactInput {
   std::span<const double> vx, vy, vz;  // current nodal velocities (may be empty at construction)
   double time = 0.0;
   double dt = 0.0;  // step over which friction, damping work and wear are integrated
+  std::span<const double> temperature;  // nodal temperatures; empty: no heat exchange
 };
 
 // Nodal force arrays owned by the caller; the contact forces are added to them.
+// With thermal contact (ContactSettings::thermal) also the heat flowing into each node [power]
+// and each node's conductance to the other surface [power / temperature] (sum over its points of
+// N_a h A), from which the caller bounds its thermal step; empty spans: not wanted.
 struct ContactForces {
   std::span<double> fx, fy, fz;
+  std::span<double> heat, conductance;
 };
 
 struct ContactStats {
@@ -46,7 +51,10 @@ struct ContactStats {
   double elastic_energy = 0.0;    // energy stored in the penalty springs now
   double damping_energy = 0.0;    // work of the contact damping so far
   double friction_energy = 0.0;   // energy dissipated by friction so far
-  double max_penetration = 0.0;   // largest penetration beyond the initial offsets
+  // Thermal contact: heat conducted from surface 1 to surface 2 now [power] and so far [energy],
+  // and friction work turned into heat so far (both surfaces) [energy].
+  double heat_flow = 0.0, conducted_heat = 0.0, friction_heat = 0.0;
+  double max_penetration = 0.0;  // largest penetration beyond the initial offsets
   // Range of the gaps (gap.hpp) of the point-facet pairs found in contact so far; 0, 0 if none.
   double gap_min = 0.0, gap_max = 0.0;
   std::size_t active_points = 0;
@@ -158,6 +166,10 @@ class ContactInterface {
     std::vector<double> fx, fy, fz;  // force on the point (before `weight`)
     std::vector<double> area, pressure, slip_speed, normal_force, tangential_force;
     std::vector<double> energy, damping_work, slip_work, penetration, omega2, pair_gap;
+    // Thermal contact: the partner the point exchanges heat with (-1: none; open points within
+    // the search distance too) and the conductance h A of the point [power / temperature].
+    std::vector<std::int32_t> heat_facet;
+    std::vector<double> heat_xi, heat_eta, heat_conductance;
   };
 
   // Where a contact point is now.
@@ -196,6 +208,11 @@ class ContactInterface {
                 std::int32_t f) const;
   void evaluate_point(Pass& pass, std::size_t p, const ContactInput& in);
   void scatter(const ContactInput& in, ContactForces& out);
+  // Thermal contact (heat_exchange.cpp): the conductance of point p with its partner, and the
+  // heat of every pass to the nodes, serially in point order.
+  void conduct(Pass& pass, std::size_t p, std::int32_t facet, double xi, double eta,
+               double pressure, double gap, double area);
+  void scatter_heat(const ContactInput& in, ContactForces& out);
   void update_moving_region(const ContactInput& in);
   void initial_state(const ContactInput& in);
 

@@ -14,6 +14,7 @@
 #include "abut/contact/laws/adhesion.hpp"
 #include "abut/contact/laws/normal.hpp"
 #include "abut/contact/laws/tangential.hpp"
+#include "abut/contact/laws/thermal.hpp"
 #include "abut/contact/stiffness_rule.hpp"
 
 namespace abut {
@@ -71,6 +72,18 @@ struct ErosionSettings {
   bool keep_free_nodes = true;
 };
 
+// Heat through the contact (issue 11; laws/thermal.hpp). Acts when the caller passes nodal
+// temperatures and a heat array (ContactInput::temperature, ContactForces::heat).
+struct ThermalContactSettings {
+  // Conduction between the surfaces: q = h (T_point - T_partner) per unit area, h from the contact
+  // pressure and the gap. Points within the search distance of a partner conduct while open when
+  // the law gives h > 0 there (OptiStruct open conductance, Radioss distance law).
+  std::optional<ConductanceLaw> conductance;
+  // Friction work turned into heat, shared between the surfaces (IMPETUS fric_heat, Radioss Fheat).
+  std::optional<FrictionHeatSplit> friction_heat;
+  bool any() const { return conductance.has_value() || friction_heat.has_value(); }
+};
+
 struct ContactSettings {
   Discretisation discretisation = Discretisation::SurfaceToSurface;
   int accuracy_level = 2;      // S2S: 1 centre point, 2: 2x2 Gauss, >2: 3x3 Gauss per facet
@@ -111,6 +124,7 @@ struct ContactSettings {
   double edge_tolerance = 0.0;        // delta_edge: accepted overshoot beyond sharp edges
   double edge_angle = 20.0;           // alpha_edge [degrees]
   WearRateFunction wear_rate1, wear_rate2;
+  ThermalContactSettings thermal;
   std::optional<double>
       search_margin;  // broad-phase margin; default: half the smallest detection depth
 };

@@ -36,6 +36,7 @@ struct Variables {
   double vx = 0.0, vy = 0.0, vz = 0.0;
   double xnorm = 0.0, ynorm = 0.0, znorm = 0.0;  // surface normal
   double pres = 0.0;   // contact pressure
+  double gap = 0.0;    // contact gap (open > 0, penetrating < 0)
   double vtang = 0.0;  // tangential sliding speed
   double T = 0.0;      // temperature
   double epsp = 0.0, sigy0 = 0.0, dmg = 0.0, eint = 0.0;

@@ -153,6 +153,18 @@ struct ContactSpec {
   bool friction_heat = false;
   SourceLocation where;
 
+  // *CONTACT_THERMAL (abut's own): a conductance law other than fid_thermal's function, and how
+  // the friction heat is shared (laws/thermal.hpp).
+  struct Conductance {
+    enum class Law { Pressure, OpenClosed, Distance } law = Law::Pressure;
+    double nominal = 0.0, hardness = 1.0, exponent = 1.0;  // Pressure: h_c0 (p / H_v)^w (Metafor)
+    double closed = 0.0, open = 0.0;                       // OpenClosed (OptiStruct)
+  };
+  std::optional<Conductance> conductance;
+  FunctionRef distance_conductance;        // Distance: h(gap) (Radioss)
+  double friction_heat_to_surface1 = 0.5;  // share of the friction heat going to surface 1
+  SourceLocation thermal_where;            // *CONTACT_THERMAL, empty when absent
+
   // *CONTACT_DISCRETIZATION
   Discretisation discretisation = Discretisation::SurfaceToSurface;
   std::optional<bool> symmetric;  // empty: symmetric unless one_way (node groups: one-way)

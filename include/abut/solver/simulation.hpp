@@ -108,6 +108,7 @@ class Simulation {
   // are at (within one thermal step of time(): the heat is sub-cycled), the thermal steps taken,
   // the current thermal stable step and the heat balance.
   std::span<const double> temperature() const;
+  std::span<const double> heat_capacity() const;  // lumped, per node [energy / temperature]
   double temperature_time() const;
   std::int64_t thermal_steps() const;
   double thermal_stable_step() const;

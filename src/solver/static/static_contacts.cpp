@@ -132,7 +132,7 @@ StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side&
   s.initial_max = spec.initial_max.value_or(kDefaultInitialMaxFraction * mean_thickness(own.faces));
   const auto no_penalty = [](const SkinFace&) { return 0.0; };
   const Nodes& nodes = mesh.nodes;
-  const ContactInput initial{nodes.x, nodes.y, nodes.z, {}, {}, {}, 0.0, 0.0};
+  const ContactInput initial{nodes.x, nodes.y, nodes.z, {}, {}, {}, 0.0, 0.0, {}};
   return StaticContact(s, contact_surface(mesh, own.faces, no_penalty),
                        contact_surface(mesh, target.faces, no_penalty), own.nodes, initial);
 }

@@ -173,7 +173,7 @@ struct StaticSolver::Impl {
       }
       bool symmetric = true;
       for (StaticContact& c : contacts) {
-        c.evaluate({x, y, z, {}, {}, {}, tau, 0.0});
+        c.evaluate({x, y, z, {}, {}, {}, tau, 0.0, {}});
         symmetric = symmetric && c.symmetric();
         for (const StaticContactElement& e : c.elements())
           for (int a = 0; a < e.count; ++a)
