@@ -147,6 +147,48 @@ TEST(HeatConduction, FluxIntoAnInsulatedBarIsStored) {
   EXPECT_NEAR(heat.balance().stored, q * w * w * 3.0, 1e-9 * q * w * w * 3.0);
 }
 
+// A strip of shells (2 mm thick, in a plane tilted about the x axis) whose end is brought to T_s:
+// conduction in the mid-surface follows the same erf solution (Carslaw & Jaeger, section 2.4).
+TEST(HeatConduction, ShellStripFollowsTheErfSolution) {
+  const double length = 0.1, w = 0.002, t0 = 20.0, ts = 120.0, end = 10.0;
+  const int n = 100;
+  Model m;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j < 2; ++j)
+      m.mesh.nodes.add(2 * i + j + 1, {length * i / n, 0.6 * w * j, 0.8 * w * j});
+  for (int i = 0; i < n; ++i) m.mesh.add_shell(i + 1, 1, {2 * i, 2 * i + 2, 2 * i + 3, 2 * i + 1});
+  Material mat;
+  mat.id = 1;
+  mat.params = ElasticParams{kRho, 2.1e11, 0.3};
+  mat.thermal_id = 7;
+  m.materials.push_back(mat);
+  Part p;
+  p.id = 1;
+  p.material_id = 1;
+  p.thickness = 0.002;
+  m.parts.push_back(p);
+  ThermalProperties t;
+  t.id = 7;
+  t.conductivity = kK;
+  t.specific_heat = kC;
+  m.thermal.properties.push_back(t);
+  m.thermal.initial_temperature = t0;
+  m.thermal.prescribed.push_back({nodes_at_x(m, 0.0), {}, ts, {}});
+  HeatSolver heat(m);
+  run(heat, m, end);
+  double worst = 0.0;
+  for (const double x : {0.002, 0.004, 0.008, 0.012, 0.02}) {
+    const double exact = ts + (t0 - ts) * std::erf(x / (2.0 * std::sqrt(kDiffusivity * end)));
+    worst = std::max(worst, std::abs(mean_at_x(m, heat, x) - exact) / (ts - t0));
+  }
+  std::cout << "shell strip: worst error " << 100 * worst << "% of the temperature step\n";
+  EXPECT_LT(worst, 0.01);
+  EXPECT_NEAR(heat.balance().error(), 0.0, 1e-9 * std::abs(heat.balance().stored));
+  double capacity = 0.0;
+  for (const double c : heat.capacity()) capacity += c;
+  EXPECT_NEAR(capacity, kRho * kC * length * w * 0.002, 1e-12 * capacity);
+}
+
 // The explicit solver carries the heat along (simulation.cpp, advance_heat): with a stiff
 // material many mechanical steps make one thermal step, with a very soft one a mechanical step is
 // split into thermal ones; either way the temperature follows the erf solution (1%), and the heat

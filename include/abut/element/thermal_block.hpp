@@ -1,8 +1,9 @@
 #pragma once
-// Heat conduction over a set of hexahedra for the explicit solver: each element's conductance at
-// the current coordinates (hex8_thermal.hpp), the heat it draws between its nodes at the current
-// temperatures, gathered node by node in element order (so the sums, and the results, do not
-// depend on the number of threads), and the smallest element stable step of forward Euler.
+// Heat conduction over a set of hexahedra and shells for the explicit solver: each element's
+// conductance at the current coordinates (hex8_thermal.hpp, shell4_thermal.hpp), the heat it draws
+// between its nodes at the current temperatures, gathered node by node in element order (so the
+// sums, and the results, do not depend on the number of threads), and the smallest element stable
+// step of forward Euler.
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -11,15 +12,22 @@
 
 namespace abut {
 
+// A shell of the block: its nodes (a triangle repeats its third), thickness and properties.
+struct ThermalShell {
+  Quad4 nodes;
+  double thickness = 0.0, conductivity = 0.0, volumetric_capacity = 0.0;
+};
+
 class ThermalBlock {
  public:
   // Per hex: conductivity k [power / (length temperature)] >= 0 and volumetric heat capacity
   // rho c [energy / (volume temperature)] > 0 (preconditions, checked by the caller); node
-  // indices below node_count.
+  // indices below node_count. Shells likewise, with a thickness > 0.
   ThermalBlock(std::vector<Hex8> hexes, std::vector<double> conductivity,
-               std::vector<double> volumetric_capacity, std::size_t node_count);
+               std::vector<double> volumetric_capacity, std::size_t node_count,
+               std::vector<ThermalShell> shells = {});
 
-  std::size_t size() const { return hexes_.size(); }
+  std::size_t size() const { return hexes_.size() + shells_.size(); }
   const std::vector<Hex8>& hexes() const { return hexes_; }
 
   // capacity[n] += the lumped heat capacity rho c V / 8 of every hex at node n, at the given
@@ -36,7 +44,8 @@ class ThermalBlock {
  private:
   std::vector<Hex8> hexes_;
   std::vector<double> conductivity_, capacity_;
-  std::vector<double> element_flow_;              // 8 per hex, of the last add_conduction
+  std::vector<ThermalShell> shells_;
+  std::vector<double> element_flow_;  // 8 per hex, then 4 per shell, of the last add_conduction
   std::vector<std::int32_t> slot_start_, slots_;  // node -> its entries of element_flow_
 };
 

@@ -1,9 +1,10 @@
 #pragma once
-// The temperature field of a model (issue 11): transient heat conduction in the hexahedra of the
-// parts whose material has thermal properties (ThermalModel), explicit in time (forward Euler with
-// the lumped heat capacity), with prescribed temperatures, heat flux and convection on faces, and
-// heat sources from the caller (plastic work, contact conduction and friction). Nodes outside the
-// thermal parts keep their initial temperature.
+// The temperature field of a model (issue 11): transient heat conduction in the hexahedra and
+// shells (conduction in the mid-surface, shell4_thermal.hpp) of the parts whose material has
+// thermal properties (ThermalModel), explicit in time (forward Euler with the lumped heat
+// capacity), with prescribed temperatures, heat flux and convection on faces, and heat sources from
+// the caller (plastic work, contact conduction and friction). Nodes outside the thermal parts keep
+// their initial temperature.
 //
 // One step from T^n at time t to T^{n+1} at t + dt:
 //   C_a (T_a^{n+1} - T_a^n) / dt = -(K T^n)_a + Q_a(t) + S_a,

@@ -64,15 +64,19 @@ struct HeatSolver::Impl {
       k.push_back(p->conductivity);
       rho_c.push_back(density_of(m.material_of_part(mesh.hex_part[h])) * p->specific_heat);
     }
-    for (std::size_t s = 0; s < mesh.shell_count(); ++s)
-      if (properties_of_part(mesh.shell_part[s]))
-        throw InputError(m.find_part(mesh.shell_part[s])->where,
-                         "heat conduction in shells is not supported yet: part " +
-                             std::to_string(mesh.shell_part[s]) + " has thermal properties");
+    // Shells: conduction in the mid-surface through the part's thickness (shell4_thermal.hpp).
+    std::vector<ThermalShell> shells;
+    for (std::size_t s = 0; s < mesh.shell_count(); ++s) {
+      const ThermalProperties* p = properties_of_part(mesh.shell_part[s]);
+      if (!p) continue;
+      const Part* part = m.find_part(mesh.shell_part[s]);
+      shells.push_back({mesh.shells[s], part->thickness, p->conductivity,
+                        density_of(m.material_of_part(part->id)) * p->specific_heat});
+    }
     for (const InitialTemperature& i : m.thermal.initial)
       for (const std::int32_t node : i.nodes) t[static_cast<std::size_t>(node)] = i.value;
-    if (!hexes.empty()) {
-      block.emplace(std::move(hexes), std::move(k), std::move(rho_c), n);
+    if (!hexes.empty() || !shells.empty()) {
+      block.emplace(std::move(hexes), std::move(k), std::move(rho_c), n, std::move(shells));
       const Nodes& x = mesh.nodes;
       block->add_capacity(x.x, x.y, x.z, capacity);
       stable = block->add_conduction(x.x, x.y, x.z, t, conduction);
