@@ -444,7 +444,9 @@ void Simulation::Impl::drift() {
 // temperatures of the last thermal step, is then explicit over the thermal step: its conductance
 // G_a per node adds 2 G_a / C_a to the bound of the largest eigenvalue (Gershgorin's theorem on
 // C^-1 K, the element bound giving 2 / stable_step), so the step is at most
-// 1 / (1 / stable_step + max_a G_a / C_a).
+// 1 / (1 / stable_step + max_a G_a / C_a). (When a mechanical step is longer than that, the
+// contact's heat of the step is still evaluated once per mechanical step; such runs are rare:
+// the mechanical step of a solid is far below its thermal one.)
 void Simulation::Impl::advance_heat() {
   if (!heat) return;
   constexpr double kThermalStepScale = 0.9;
@@ -454,7 +456,7 @@ void Simulation::Impl::advance_heat() {
   double pending = t - heat_time;
   const bool last = t >= model.time.end_time * (1.0 - 1e-12);
   if (!last && pending + dt_prev <= thermal_limit()) return;
-  if (!heat_energy.empty())
+  if (!heat_energy.empty() && pending > 0.0)
     for (std::size_t i = 0; i < heat_energy.size(); ++i) heat_source[i] = heat_energy[i] / pending;
   while (pending > 0.0) {
     const double h = std::min(pending, thermal_limit());
