@@ -144,16 +144,27 @@ class StateWriter {
 
 class HistoryWriter {
  public:
-  HistoryWriter(const fs::path& dir, bool with_contact)
-      : energy_(dir / "energy.csv", {"kinetic", "internal", "hourglass", "contact", "friction",
+  HistoryWriter(const fs::path& dir, bool with_contact, bool with_contact_heat)
+      : contact_heat_(with_contact_heat),
+        energy_(dir / "energy.csv", {"kinetic", "internal", "hourglass", "contact", "friction",
                                      "eroded", "external_work", "total", "balance_error"}),
         parts_(dir / "parts.csv",
                {"part", "mass", "x", "y", "z", "vx", "vy", "vz", "kinetic", "internal"}) {
-    if (with_contact)
-      contact_.emplace(dir / "contact.csv",
-                       std::vector<std::string>{"contact", "fx", "fy", "fz", "normal_force",
-                                                "tangential_force", "energy", "friction_energy",
-                                                "max_penetration", "active_points"});
+    std::vector<std::string> columns{"contact",
+                                     "fx",
+                                     "fy",
+                                     "fz",
+                                     "normal_force",
+                                     "tangential_force",
+                                     "energy",
+                                     "friction_energy",
+                                     "max_penetration",
+                                     "active_points"};
+    // Thermal contact: the heat flowing from surface 1 to surface 2 now, conducted so far and
+    // made by friction so far.
+    if (contact_heat_)
+      columns.insert(columns.end(), {"heat_flow", "conducted_heat", "friction_heat"});
+    if (with_contact) contact_.emplace(dir / "contact.csv", columns);
   }
 
   void write(const Simulation& sim) {
@@ -172,16 +183,25 @@ class HistoryWriter {
     if (contact_) {
       for (const ContactReport& c : sim.contact_reports()) {
         const ContactStats& st = c.stats;
-        contact_->write_row(
-            sim.time(),
-            {static_cast<std::int64_t>(c.id), st.force.x, st.force.y, st.force.z, st.normal_force,
-             st.tangential_force, st.elastic_energy + st.damping_energy, st.friction_energy,
-             st.max_penetration, static_cast<std::int64_t>(st.active_points)});
+        std::vector<CsvHistory::Value> row{static_cast<std::int64_t>(c.id),
+                                           st.force.x,
+                                           st.force.y,
+                                           st.force.z,
+                                           st.normal_force,
+                                           st.tangential_force,
+                                           st.elastic_energy + st.damping_energy,
+                                           st.friction_energy,
+                                           st.max_penetration,
+                                           static_cast<std::int64_t>(st.active_points)};
+        if (contact_heat_)
+          row.insert(row.end(), {st.heat_flow, st.conducted_heat, st.friction_heat});
+        contact_->write_row(sim.time(), row);
       }
     }
   }
 
  private:
+  bool contact_heat_ = false;
   CsvHistory energy_, parts_;
   std::optional<CsvHistory> contact_;
   bool written_ = false;
@@ -312,7 +332,9 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
   log << "abut: writing results to " << options.output_dir.string() << "\n";
 
   StateWriter states(options.output_dir, model);
-  HistoryWriter histories(options.output_dir, sim.has_contact());
+  bool contact_heat = false;
+  for (const ContactSpec& c : model.contacts) contact_heat = contact_heat || c.exchanges_heat();
+  HistoryWriter histories(options.output_dir, sim.has_contact(), contact_heat);
   Schedule state_schedule(model.time.start_time, state_interval);
   Schedule history_schedule(model.time.start_time, history_interval);
   ProgressReporter progress = ProgressReporter::to_stderr(model.time.start_time, t_end);

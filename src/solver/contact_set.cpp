@@ -497,7 +497,7 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
   cfy_.assign(nodes.size(), 0.0);
   cfz_.assign(nodes.size(), 0.0);
   for (const ContactSpec& spec : model.contacts)
-    if (spec.thermal.valid() || spec.conductance || spec.friction_heat) thermal_ = true;
+    if (spec.exchanges_heat()) thermal_ = true;
   if (thermal_) {
     heat_.assign(nodes.size(), 0.0);
     conductance_.assign(nodes.size(), 0.0);

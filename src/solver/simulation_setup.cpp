@@ -208,7 +208,7 @@ void Simulation::Impl::setup() {
 // A contact that exchanges heat needs a temperature on both its surfaces.
 void Simulation::Impl::check_thermal_contacts() const {
   for (const ContactSpec& spec : model.contacts) {
-    if (!spec.thermal.valid() && !spec.conductance && !spec.friction_heat) continue;
+    if (!spec.exchanges_heat()) continue;
     const char* what = spec.friction_heat ? "fric_heat" : "the contact conductance";
     if (!heat)
       throw InputError(spec.where, std::string(what) +

@@ -12,8 +12,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 
+#include "abut/io/run.hpp"
 #include "run_to.hpp"
 
 namespace abut {
@@ -187,6 +191,34 @@ TEST(ContactHeat, FrictionHeatEqualsTheFrictionWorkSharedAsSpecified) {
   EXPECT_NEAR(block, share * work, 1e-6 * work);
   EXPECT_NEAR(plane, (1.0 - share) * work, 1e-6 * work);
   EXPECT_NEAR(sim.contact_reports().at(0).stats.friction_heat, work, 1e-12 * work);
+}
+
+// contact.csv of a thermal contact carries heat_flow, conducted_heat and friction_heat; at the end
+// the friction heat equals the friction energy of the same row.
+TEST(ContactHeat, ContactHistoryHasTheHeatColumns) {
+  Model model = read_deck_string(kSliding, "sliding_block_heat.k");
+  for (Material& m : model.materials) m.thermal_id = 1;
+  model.thermal.properties = {thermal(1, 45.0, 460.0)};
+  model.contacts[0].friction_heat = true;
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "abut_test_contact_heat_history";
+  std::filesystem::remove_all(dir);
+  std::ostringstream log;
+  run_simulation(model, {dir, 1, false}, log);
+  std::ifstream csv(dir / "contact.csv");
+  std::string header, line, last;
+  std::getline(csv, header);
+  EXPECT_EQ(header,
+            "time,contact,fx,fy,fz,normal_force,tangential_force,energy,friction_energy,"
+            "max_penetration,active_points,heat_flow,conducted_heat,friction_heat");
+  while (std::getline(csv, line)) last = line;
+  std::vector<double> values;
+  std::stringstream row(last);
+  for (std::string cell; std::getline(row, cell, ',');) values.push_back(std::stod(cell));
+  ASSERT_EQ(values.size(), 14u);
+  EXPECT_GT(values[8], 0.7);  // friction energy [J]
+  EXPECT_NEAR(values[13], values[8], 1e-9 * values[8]);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

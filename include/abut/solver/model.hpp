@@ -164,6 +164,7 @@ struct ContactSpec {
   FunctionRef distance_conductance;        // Distance: h(gap) (Radioss)
   double friction_heat_to_surface1 = 0.5;  // share of the friction heat going to surface 1
   SourceLocation thermal_where;            // *CONTACT_THERMAL, empty when absent
+  bool exchanges_heat() const { return thermal.valid() || conductance || friction_heat; }
 
   // *CONTACT_DISCRETIZATION
   Discretisation discretisation = Discretisation::SurfaceToSurface;
