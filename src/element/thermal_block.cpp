@@ -79,6 +79,33 @@ void ThermalBlock::add_capacity(std::span<const double> x, std::span<const doubl
   }
 }
 
+void ThermalBlock::conductance_matrices(std::span<const double> x, std::span<const double> y,
+                                        std::span<const double> z,
+                                        std::vector<double>& values) const {
+  values.assign(64 * hexes_.size() + 16 * shells_.size(), 0.0);
+  const auto nh = static_cast<std::int64_t>(hexes_.size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t e = 0; e < nh; ++e) {
+    const auto k = static_cast<std::size_t>(e);
+    double X[8][3];
+    element_coordinates(hexes_[k], x, y, z, X);
+    Hex8Conduction r;
+    hex8_conduction(X, conductivity_[k], capacity_[k], r);
+    std::copy(r.conductance, r.conductance + 64, values.begin() + 64 * e);
+  }
+  const std::size_t base = 64 * hexes_.size();
+  for (std::size_t e = 0; e < shells_.size(); ++e) {
+    const ThermalShell& s = shells_[e];
+    double X[4][3];
+    shell_coordinates(s.nodes, x, y, z, X);
+    Shell4Conduction r;
+    shell4_conduction(X, is_triangle(s.nodes), s.thickness, s.conductivity, s.volumetric_capacity,
+                      r);
+    std::copy(r.conductance, r.conductance + 16,
+              values.begin() + static_cast<std::ptrdiff_t>(base + 16 * e));
+  }
+}
+
 double ThermalBlock::add_conduction(std::span<const double> x, std::span<const double> y,
                                     std::span<const double> z, std::span<const double> temperature,
                                     std::span<double> heat_rate) {

@@ -147,6 +147,47 @@ TEST(HeatConduction, FluxIntoAnInsulatedBarIsStored) {
   EXPECT_NEAR(heat.balance().stored, q * w * w * 3.0, 1e-9 * q * w * w * 3.0);
 }
 
+// Steady state solved directly (HeatSolver::solve_steady): the bar between held temperatures is
+// linear to round-off (linear elements reproduce the linear solution exactly), and a bar held at
+// T_1 at x = 0 and convecting to T_inf at x = L has the Robin solution T(L) = T_inf + (T_1 - T_inf)
+// / (1 + h L / k) (Incropera & DeWitt, section 3.1; exact at the nodes for the same reason).
+TEST(HeatConduction, SteadyStateSolvedDirectly) {
+  const double length = 0.2, w = 0.01, t1 = 100.0, t2 = 20.0;
+  {
+    Model m = bar(length, 20, w);
+    m.thermal.prescribed.push_back({nodes_at_x(m, 0.0), {}, t1, {}});
+    m.thermal.prescribed.push_back({nodes_at_x(m, length), {}, t2, {}});
+    HeatSolver heat(m);
+    const Nodes& n = m.mesh.nodes;
+    heat.solve_steady(0.0, n.x, n.y, n.z, {});
+    for (std::size_t i = 0; i < n.size(); ++i)
+      EXPECT_NEAR(heat.temperature()[i], t1 + (t2 - t1) * n.x[i] / length, 1e-10 * t1);
+  }
+  {
+    Model m = bar(length, 20, w);
+    const double h = 500.0, t_inf = 20.0;
+    m.thermal.prescribed.push_back({nodes_at_x(m, 0.0), {}, t1, {}});
+    SurfaceConvection c;
+    c.coefficient = h;
+    c.ambient = t_inf;
+    const auto end = nodes_at_x(m, length);  // the end face's 4 nodes, outward +x
+    ASSERT_EQ(end.size(), 4u);
+    c.faces.push_back({end[0], end[1], end[3], end[2]});
+    m.thermal.convection.push_back(c);
+    HeatSolver heat(m);
+    const Nodes& n = m.mesh.nodes;
+    heat.solve_steady(0.0, n.x, n.y, n.z, {});
+    const double exact = t_inf + (t1 - t_inf) / (1.0 + h * length / kK);
+    EXPECT_NEAR(mean_at_x(m, heat, length), exact, 1e-10 * t1);
+  }
+  {  // nothing held: an input error rather than an arbitrary level
+    Model m = bar(length, 4, w);
+    HeatSolver heat(m);
+    const Nodes& n = m.mesh.nodes;
+    EXPECT_THROW(heat.solve_steady(0.0, n.x, n.y, n.z, {}), InputError);
+  }
+}
+
 // A strip of shells (2 mm thick, in a plane tilted about the x axis) whose end is brought to T_s:
 // conduction in the mid-surface follows the same erf solution (Carslaw & Jaeger, section 2.4).
 TEST(HeatConduction, ShellStripFollowsTheErfSolution) {

@@ -35,6 +35,13 @@ class ThermalBlock {
   void add_capacity(std::span<const double> x, std::span<const double> y, std::span<const double> z,
                     std::span<double> capacity) const;
 
+  // The element conductance matrices at the given coordinates, for assembly (steady state):
+  // 64 values per hex (row-major over its 8 nodes), then 16 per shell (its 4 node slots; a
+  // triangle's fourth row and column are 0), in element order; and the matching node lists.
+  void conductance_matrices(std::span<const double> x, std::span<const double> y,
+                            std::span<const double> z, std::vector<double>& values) const;
+  const std::vector<ThermalShell>& shells() const { return shells_; }
+
   // heat_rate[n] += the heat flowing into node n by conduction [power], -sum_e (K_e T)_n, at the
   // given coordinates and temperatures. Returns the smallest element stable step 2 / lambda_e.
   double add_conduction(std::span<const double> x, std::span<const double> y,

@@ -50,6 +50,14 @@ class HeatSolver {
   void advance(double t, double dt, std::span<const double> x, std::span<const double> y,
                std::span<const double> z, std::span<const double> source);
 
+  // Steady state at time t (issue 11, for static steps): K T = Q + S with the prescribed
+  // temperatures held, face fluxes and convection at t, the caller's sources S [power] (may be
+  // empty), at coordinates x, y, z; solved directly (CHOLMOD). Replaces the temperatures; the
+  // heat balance is not advanced (nothing is stored in a steady state). InputError when no
+  // temperature is held and no face convects (the temperature level is then undetermined).
+  void solve_steady(double t, std::span<const double> x, std::span<const double> y,
+                    std::span<const double> z, std::span<const double> source);
+
   const HeatBalance& balance() const;
   // Heat flowing into each node by conduction at the last advance [power] (for output).
   std::span<const double> conduction_rate() const;
