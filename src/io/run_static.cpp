@@ -17,6 +17,7 @@
 #include "abut/io/json_writer.hpp"
 #include "abut/io/run.hpp"
 #include "abut/io/vtu_writer.hpp"
+#include "abut/solver/heat.hpp"
 #include "abut/solver/static_solver.hpp"
 #include "io/static_print.hpp"
 
@@ -29,8 +30,10 @@ namespace fs = std::filesystem;
 // One ParaView state: displacement and nodal force (loads and reactions) at the nodes; per hex
 // the mean over its Gauss points of the stress tensor and of the von Mises stress, the largest
 // equivalent plastic strain of its points, and its strain energy.
+// With thermal properties also the steady temperature field of the state's loads at its time
+// on the deformed shape (HeatSolver::solve_steady; the heat does not act back on the mechanics).
 void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
-                 const StaticSolver& solver, double time) {
+                 const StaticSolver& solver, double time, HeatSolver* heat) {
   const Mesh& mesh = model.mesh;
   const std::size_t n = mesh.nodes.size(), nh = mesh.hex_count();
   std::vector<double> x(n), y(n), z(n), part(nh), stress(6 * nh, 0.0), mises(nh, 0.0),
@@ -56,7 +59,11 @@ void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
     }
   }
   std::vector<double> energy(solver.element_energy().begin(), solver.element_energy().end());
-  const std::vector<FieldView> points{{"displacement", 3, u}, {"force", 3, solver.nodal_force()}};
+  std::vector<FieldView> points{{"displacement", 3, u}, {"force", 3, solver.nodal_force()}};
+  if (heat) {
+    heat->solve_steady(time, x, y, z, {});
+    points.push_back({"temperature", 1, heat->temperature()});
+  }
   const std::vector<FieldView> cells{{"part_id", 1, part},
                                      {"stress", 6, stress},
                                      {"von_mises_stress", 1, mises},
@@ -121,8 +128,21 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
                      model.mesh.nodes.size(), model.mesh.hex_count(), model.parts.size(),
                      model.contacts.size(), model.static_steps.size());
   log << "abut: writing results to " << dir.string() << "\n";
+  std::optional<HeatSolver> heat;
+  if (!model.thermal.properties.empty()) {
+    for (const ThermalProperties& p : model.thermal.properties)
+      if (p.expansion != 0.0)
+        throw InputError(p.where,
+                         "thermal expansion in static steps is not supported yet (the steady "
+                         "temperature of a static analysis does not act on the mechanics): give "
+                         "alpha = 0");
+    heat.emplace(model);
+    if (!heat->active()) heat.reset();
+    if (heat) log << "abut: steady heat conduction at every state (temperature in the states)\n";
+  }
+  HeatSolver* heat_field = heat ? &*heat : nullptr;
   PvdSeries series(dir / "results.pvd");
-  write_state(dir, series, model, solver, 0.0);
+  write_state(dir, series, model, solver, 0.0, heat_field);
   CsvHistory increments(dir / "increments.csv",
                         {"step", "increment", "attempts", "iterations", "step_time", "residual"});
   CsvHistory energy(dir / "energy.csv", {"internal", "contact", "friction"});
@@ -143,7 +163,7 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
           {static_cast<std::int64_t>(inc.step + 1), static_cast<std::int64_t>(inc.increment),
            static_cast<std::int64_t>(inc.attempts), static_cast<std::int64_t>(inc.iterations),
            inc.step_time, inc.residual});
-      write_state(dir, series, model, solver, inc.total_time);
+      write_state(dir, series, model, solver, inc.total_time, heat_field);
       write_energy_row(energy, solver, inc.total_time);
       if (contact) write_contact_rows(*contact, model, solver, inc.total_time);
       print_static_results(printed, model, model.static_steps[inc.step], solver, inc);

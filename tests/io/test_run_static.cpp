@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -108,6 +109,36 @@ TEST(RunStatic, EnergyAndContactHistories) {
   const double u_top = kPressure / 1000.0 * 2.0 + contact[1][9];
   EXPECT_NEAR(energy[1][1] + energy[1][2], 0.5 * kPressure * u_top, 1e-9);
   EXPECT_EQ(energy[1][3], 0.0);
+  std::filesystem::remove_all(dir);
+}
+
+// With thermal properties each state carries the steady temperature of its loads: the lower
+// cube held at 100 at its base (nodes 1-4), the upper one at 0 on its top (15-18); the contact
+// does not conduct in static steps, so each cube takes its held temperature (and the deck needs
+// no density: a steady state stores no heat).
+TEST(RunStatic, SteadyTemperatureInEveryState) {
+  Model model = read_inp_string_with_notes(kDeck, "t.inp").model;
+  ThermalProperties p;
+  p.id = 1;
+  p.conductivity = 50.0;
+  p.specific_heat = 400.0;
+  model.thermal.properties.push_back(p);
+  for (Material& m : model.materials) m.thermal_id = 1;
+  model.thermal.prescribed.push_back({{0, 1, 2, 3}, {}, 100.0, {}});
+  model.thermal.prescribed.push_back({{12, 13, 14, 15}, {}, 0.0, {}});
+  const auto dir = std::filesystem::temp_directory_path() / "abut_test_run_static_heat";
+  std::filesystem::remove_all(dir);
+  std::ostringstream log;
+  const RunReport report = run_static_analysis(model, {dir, 1, false}, log);
+  ASSERT_TRUE(report.stable) << log.str();
+  std::ifstream vtu(dir / "states" / "state_0002.vtu");
+  const std::string text((std::istreambuf_iterator<char>(vtu)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("Name=\"temperature\""), std::string::npos);
+  EXPECT_NE(log.str().find("steady heat conduction"), std::string::npos);
+
+  p.expansion = 1e-5;  // not coupled in static steps: refused rather than ignored
+  model.thermal.properties = {p};
+  EXPECT_THROW(run_static_analysis(model, {dir, 1, false}, log), InputError);
   std::filesystem::remove_all(dir);
 }
 

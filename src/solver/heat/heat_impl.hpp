@@ -47,6 +47,7 @@ struct HeatSolver::Impl {
   std::optional<ThermalBlock> block;
   std::vector<double> t, t0, capacity, rate, conduction;
   std::vector<std::uint8_t> prescribed;
+  std::vector<std::uint8_t> thermal;  // per node: of a thermal hex or shell
   HeatBalance balance;
   double stable = std::numeric_limits<double>::infinity();
 
@@ -79,6 +80,11 @@ struct HeatSolver::Impl {
     }
     for (const InitialTemperature& i : m.thermal.initial)
       for (const std::int32_t node : i.nodes) t[static_cast<std::size_t>(node)] = i.value;
+    thermal.assign(n, 0);
+    for (const Hex8& h : hexes)
+      for (const std::int32_t node : h) thermal[static_cast<std::size_t>(node)] = 1;
+    for (const ThermalShell& sh : shells)
+      for (const std::int32_t node : sh.nodes) thermal[static_cast<std::size_t>(node)] = 1;
     if (!hexes.empty() || !shells.empty()) {
       block.emplace(std::move(hexes), std::move(k), std::move(rho_c), n, std::move(shells));
       const Nodes& x = mesh.nodes;
@@ -87,7 +93,7 @@ struct HeatSolver::Impl {
     }
     auto check_nodes = [&](std::span<const std::int32_t> nodes, const SourceLocation& where) {
       for (const std::int32_t node : nodes)
-        if (capacity[static_cast<std::size_t>(node)] <= 0.0)
+        if (!thermal[static_cast<std::size_t>(node)])
           throw InputError(where, "node " + std::to_string(mesh.nodes.id[node]) +
                                       " is not in a part with thermal properties (thpid)");
     };

@@ -27,7 +27,7 @@ void HeatSolver::solve_steady(double time, std::span<const double> x, std::span<
   std::vector<std::int32_t> equation(n, -1);
   std::int32_t equations = 0;
   for (std::size_t i = 0; i < n; ++i)
-    if (s.capacity[i] > 0.0 && !s.prescribed[i]) equation[i] = equations++;
+    if (s.thermal[i] && !s.prescribed[i]) equation[i] = equations++;  // no density needed
   if (equations == 0) return;
 
   // Right side: -K_fp T_p (the conduction drawn by the held nodes alone), fluxes, convection to
