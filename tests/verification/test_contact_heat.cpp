@@ -131,6 +131,49 @@ TEST(ContactHeat, SteadyFluxThroughAContactResistance) {
   EXPECT_NEAR(b.error(), 0.0, 1e-9 * std::abs(b.prescribed));
 }
 
+// Metafor's pressure-dependent conductance h = h_c0 (p / H_v)^w (seed 002) in a run: the blocks of
+// kBlocks overlapping by d (a linear penalty 1e9 Pa/m gives p = 1e9 d), at 100 and 0 degrees; the
+// heat crossing at the first cycle is h A (T_1 - T_2), and doubling the overlap, hence the
+// pressure, multiplies it by 2^w.
+TEST(ContactHeat, DoublingThePressureMultipliesTheConductedHeatByTwoToTheW) {
+  const double h0 = 1e4, hardness = 1e6, w = 0.7, area = 0.02 * 0.02;
+  double flow[2] = {0.0, 0.0};
+  for (const int k : {1, 2}) {
+    const double d = 1e-4 * k;  // below delta0_max = 4% of the 10 mm element thickness
+    Model model = read_deck_string(kBlocks, "pressed_blocks.k");
+    std::vector<std::uint8_t> moved(model.mesh.nodes.size(), 0);  // block 2's nodes, once each
+    for (std::size_t e = 0; e < model.mesh.hex_count(); ++e)
+      if (model.mesh.hex_part[e] == 2)
+        for (const std::int32_t i : model.mesh.hexes[e]) moved[static_cast<std::size_t>(i)] = 1;
+    for (std::size_t i = 0; i < moved.size(); ++i)
+      if (moved[i]) model.mesh.nodes.x[i] -= d;
+    model.materials[0].thermal_id = model.materials[1].thermal_id = 1;
+    model.thermal.properties = {thermal(1, 100.0, 10.0)};
+    std::vector<std::int32_t> hot;
+    for (std::size_t e = 0; e < model.mesh.hex_count(); ++e)
+      if (model.mesh.hex_part[e] == 1)
+        for (const std::int32_t i : model.mesh.hexes[e]) hot.push_back(i);
+    model.thermal.initial_temperature = 0.0;
+    model.thermal.initial.push_back({hot, 100.0, {}});
+    model.contacts[0].penalty = 1e9;
+    ContactSpec::Conductance c;
+    c.law = ContactSpec::Conductance::Law::Pressure;
+    c.nominal = h0;
+    c.hardness = hardness;
+    c.exponent = w;
+    model.contacts[0].conductance = c;
+    Simulation sim(model);
+    sim.advance();
+    flow[k - 1] = sim.contact_reports().at(0).stats.heat_flow;
+    const double p = 1e9 * d;
+    const double expected = h0 * std::pow(p / hardness, w) * area * 100.0;
+    std::cout << "overlap " << d << " m: heat flow " << flow[k - 1]
+              << " W, h_c0 (p/H_v)^w A dT = " << expected << " W\n";
+    EXPECT_NEAR(flow[k - 1], expected, 0.01 * expected);
+  }
+  EXPECT_NEAR(flow[1] / flow[0], std::pow(2.0, w), 0.01 * std::pow(2.0, w));
+}
+
 // The block of test_contact_sliding_block.cpp (1 m/s, mu = 0.5, both bodies rigid steel) with
 // fric_heat: 30% of the heat to the block (surface 1), 70% to the plane.
 const char* kSliding = R"(
