@@ -25,6 +25,12 @@ void Simulation::Impl::couple_heat() {
     const bool softens = metal != nullptr && metal->softens();
     const ThermalProperties* props =
         material.thermal_id != 0 ? model.thermal.find(material.thermal_id) : nullptr;
+    // Shells before the temperature field: a model of shells alone has none (heat.hpp).
+    if (info.shell_block >= 0 && (softens || (props != nullptr && props->expansion != 0.0)))
+      throw InputError(material.where, material_name(material) + " of part " +
+                                           std::to_string(info.part_id) +
+                                           ": thermal expansion and softening of shells are not "
+                                           "supported yet");
     if (!heat || props == nullptr) {
       if (softens)
         throw InputError(material.where,
@@ -33,11 +39,6 @@ void Simulation::Impl::couple_heat() {
                              "material thermal properties (thpid)");
       continue;
     }
-    if (info.shell_block >= 0 && (softens || props->expansion != 0.0))
-      throw InputError(material.where, material_name(material) + " of part " +
-                                           std::to_string(info.part_id) +
-                                           ": thermal expansion and softening of shells are not "
-                                           "supported yet");
     if (info.block < 0) continue;
     SolidBlock& block = blocks[static_cast<std::size_t>(info.block)];
     try {

@@ -9,7 +9,8 @@
 //    times the plastic work sum q d epsp V of the run to 1e-6;
 //  - thermal softening: a perfectly plastic Johnson-Cook element (B = 0) held at T* = 0.5 flows
 //    at A (1 - 0.5^m) (Johnson & Cook 1983, Proc. 7th Int. Symp. Ballistics, p. 541), 1%;
-//  - a softening metal without thermal properties is an input error at the material;
+//  - a softening metal without thermal properties is an input error at the material, and so are
+//    the couplings not supported yet (shells, expansion of Mooney-Rivlin);
 //  - a coupled run (expansion, plastic heat, softening) is bitwise identical on 1 and 2 threads.
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -18,6 +19,7 @@
 #include <cstdio>
 #include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "run_to.hpp"
@@ -142,6 +144,53 @@ TEST(HeatCoupling, SofteningNeedsThermalProperties) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("thermal softening"), std::string::npos) << e.what();
     EXPECT_GT(e.where().line, 0u);
+  }
+}
+
+// Not supported yet, so errors rather than silently uncoupled: shells with thermal properties (the
+// heat solver refuses them; softening shells without them are refused by the coupling),
+// expansion of Mooney-Rivlin.
+TEST(HeatCoupling, UnsupportedCouplingsAreErrors) {
+  const std::string shells = R"(
+*TIME
+1.0e-3
+*COMPONENT_SHELL_TUBE
+1, 1, 4, 4, SQUARE
+0.0, 0.0, 0.0, 0.0, 0.0, 0.2
+0.025
+*MAT_JC
+1, 7800.0, 210.0e9, 0.3
+300e6, 500e6, 0.5
+*PART
+"tube"
+1, 1, , 0.0015
+*END
+)";
+  const std::string rubber = R"(
+*TIME
+1.0e-3
+*COMPONENT_BOX
+1, 1, 2, 2, 2
+0.0, 0.0, 0.0, 0.01, 0.01, 0.01
+*MAT_MOONEY_RIVLIN
+1, 1500.0, 3.0e9
+1.0e6, 0, 1.0e2
+*PART
+"rubber"
+1, 1
+*END
+)";
+  for (const auto& [deck, expected] :
+       {std::pair{shells, "not supported yet"},
+        std::pair{rubber, "*MAT_MOONEY_RIVLIN is not supported yet"}}) {
+    Model model = read_deck_string(deck, "unsupported.k");
+    add_thermal(model, 0.9, 1.2e-5, 20.0);
+    try {
+      Simulation sim(model);
+      FAIL() << "expected an InputError: " << expected;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
   }
 }
 
