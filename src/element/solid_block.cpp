@@ -11,6 +11,8 @@
 //       MooneyRivlinParams: elastic stress from F = sum_a x_a (x) B0_a with the mean gradient B0
 //       of the reference configuration (total Lagrangian at the centroid), plus the rotated and
 //       recursively updated viscous stresses (mooney_rivlin.hpp).
+//     Coupled to the temperature (ThermalCoupling, issue 11), the hypoelastic laws take the
+//     mechanical increment D dt - alpha dT I and flow at the element temperature.
 //  3. Internal energy increment V_mid (sigma_rot + sigma_new)/2 : D dt (trapezoidal rule).
 //  4. Hourglass (FB81 stiffness form): generalized hourglass rates qdot_alpha = sum_a v_a
 //     gamma_alpha(a) with the gamma vectors at x^n, generalized forces updated incrementally,
@@ -185,9 +187,18 @@ struct SolidBlock::Impl {
   double internal_energy = 0.0;
   double hourglass_energy = 0.0;
 
-  template <class Law>
+  // Coupling to the temperature (issue 11; solid_block.hpp): off unless set_thermal made it on.
+  ThermalCoupling coupling;
+  bool coupled = false;
+  bool temperature_started = false;          // element_temperature holds the last temperatures
+  std::vector<double> element_temperature;   // at the last update, 1 per element (coupled)
+  std::vector<double> element_plastic_work;  // of the last step (coupling.plastic_work)
+
+  // kThermal: the block is coupled (decided once per block and step, so that the uncoupled
+  // kernel is unchanged).
+  template <class Law, bool kThermal>
   void element(std::size_t e, const NodalState& s, double dt, const Law& law);
-  template <class Law>
+  template <class Law, bool kThermal = false>
   BlockStep step(const NodalState& s, double dt, const Law& law);
   void erode(BlockStep& out);
   std::string element_name(std::size_t e) const;
@@ -215,13 +226,14 @@ std::string SolidBlock::Impl::element_name(std::size_t e) const {
   return name;
 }
 
-template <class Law>
+template <class Law, bool kThermal>
 void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, const Law& law) {
   // Gather the nodal data once and go to the modal form (hex8.hpp): every per-node sum below
   // (velocity gradients, F, hourglass rates, b:b) becomes a sum over the six modes with G_k != 0.
   if (!eroded.empty() && eroded[e]) {
     std::fill_n(&forces[24 * e], 24, 0.0);
     internal_work[e] = hourglass_work[e] = 0.0;
+    if (!element_plastic_work.empty()) element_plastic_work[e] = 0.0;
     stable[e] = std::numeric_limits<double>::infinity();
     failure[e] = kOk;
     return;
@@ -288,7 +300,30 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
   const Sym3 old{{stored[0], stored[1], stored[2], stored[3], stored[4], stored[5]}};
   const Sym3 rotated = dt > 0.0 ? rotate(rotation, old) : old;
   Sym3 now;
-  if constexpr (!std::is_same_v<Law, RubberLaw>) {  // hypoelastic point laws (point_law.hpp)
+  if constexpr (kThermal) {  // hypoelastic point laws coupled to the temperature
+    // The element temperature, and the thermal strain increment alpha dT I of its change since
+    // the last update taken out of the total increment (the mechanical strain drives the law).
+    double temperature = 0.0;
+    for (int a = 0; a < 8; ++a) temperature += s.temperature[static_cast<std::size_t>(hex[a])];
+    temperature *= 0.125;
+    double& last = element_temperature[e];
+    const double change = temperature_started ? temperature - last : 0.0;
+    last = temperature;
+    now = old;
+    if (!element_plastic_work.empty()) element_plastic_work[e] = 0.0;
+    if (dt > 0.0) {
+      Sym3 mechanical = strain_increment;
+      for (int i = 0; i < 3; ++i) mechanical[i] -= coupling.expansion * change;
+      PointHistory none;
+      PointHistory& h = history.empty() ? none : history[e];
+      const double before = h.plastic_strain;
+      now = law.at_temperature(temperature).update(rotated, mechanical, dt, h);
+      // J2 flow: d eps_p = dp (3/2) s / q, so sigma : d eps_p = q dp with q the von Mises stress
+      // after the return (the flow stress).
+      if (!element_plastic_work.empty())
+        element_plastic_work[e] = von_mises(now) * (h.plastic_strain - before) * mid_volume;
+    }
+  } else if constexpr (!std::is_same_v<Law, RubberLaw>) {  // hypoelastic laws (point_law.hpp)
     now = old;
     if (dt > 0.0) {
       PointHistory none;
@@ -430,11 +465,13 @@ void SolidBlock::Impl::element(std::size_t e, const NodalState& s, double dt, co
   }
 }
 
-template <class Law>
+template <class Law, bool kThermal>
 BlockStep SolidBlock::Impl::step(const NodalState& s, double dt, const Law& law) {
   const auto n = static_cast<std::int64_t>(hexes.size());
 #pragma omp parallel for schedule(static) if (n >= kParallelMinimum / 8)
-  for (std::int64_t e = 0; e < n; ++e) element(static_cast<std::size_t>(e), s, dt, law);
+  for (std::int64_t e = 0; e < n; ++e)
+    element<Law, kThermal>(static_cast<std::size_t>(e), s, dt, law);
+  if constexpr (kThermal) temperature_started = true;
 
   // Serial pass in element order: the first failure decides the message, sums are in a fixed
   // order, so the result does not depend on the number of threads.
@@ -593,12 +630,16 @@ BlockStep SolidBlock::update(const NodalState& state, double dt) {
     throw InstabilityError(input_prefix(impl_->part_id) + "time step must be finite and >= 0");
   }
   Impl& m = *impl_;
+  if (m.coupled && state.temperature == nullptr)
+    throw InputError(input_prefix(m.part_id) + "coupled to the temperature, but none was given");
   if (const auto* e = std::get_if<ElasticParams>(&m.material)) {
-    return m.step(state, dt, ElasticPoint{lame_constants(*e)});
+    const ElasticPoint law{lame_constants(*e)};
+    return m.coupled ? m.step<ElasticPoint, true>(state, dt, law) : m.step(state, dt, law);
   }
   if (const auto* metal = std::get_if<MetalParams>(&m.material)) {
     const LameConstants lame{m.lame_lambda, m.lame_mu};
-    return m.step(state, dt, MetalPoint{lame, FlowStress(*metal, m.functions), metal->failure});
+    const MetalPoint law{lame, FlowStress(*metal, m.functions), metal->failure};
+    return m.coupled ? m.step<MetalPoint, true>(state, dt, law) : m.step(state, dt, law);
   }
   const auto& rubber = std::get<MooneyRivlinParams>(m.material);
   return m.step(state, dt, RubberLaw{&rubber, dt > 0.0 ? viscous_step(rubber, dt) : ViscousStep{}});
@@ -676,6 +717,27 @@ void SolidBlock::set_bulk_viscosity(double quadratic, double linear) {
   impl_->bulk_viscosity_quadratic = quadratic;
   impl_->bulk_viscosity_linear = linear;
 }
+
+void SolidBlock::set_thermal(const ThermalCoupling& coupling) {
+  Impl& m = *impl_;
+  const auto* metal = std::get_if<MetalParams>(&m.material);
+  const bool plastic = metal != nullptr && coupling.plastic_work;
+  const bool softens = metal != nullptr && metal->softens();
+  if (coupling.expansion != 0.0 && std::holds_alternative<MooneyRivlinParams>(m.material))
+    throw InputError(input_prefix(m.part_id) +
+                     "thermal expansion of *MAT_MOONEY_RIVLIN is not supported yet");
+  if (!std::isfinite(coupling.expansion))
+    throw InputError(input_prefix(m.part_id) + "thermal expansion must be finite");
+  m.coupling = coupling;
+  m.coupled = coupling.expansion != 0.0 || plastic || softens;
+  m.temperature_started = false;
+  m.element_temperature.assign(m.coupled ? m.hexes.size() : 0, 0.0);
+  m.element_plastic_work.assign(plastic ? m.hexes.size() : 0, 0.0);
+}
+
+bool SolidBlock::thermal() const { return impl_->coupled; }
+
+const std::vector<double>& SolidBlock::plastic_work() const { return impl_->element_plastic_work; }
 
 void SolidBlock::set_element_ids(std::vector<std::int64_t> ids) {
   if (ids.size() != size()) {

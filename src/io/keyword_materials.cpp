@@ -168,11 +168,18 @@ MetalParams metal_elasticity(DeckReader& d, const Row& r) {
   return p;
 }
 
-// Thermal softening needs a temperature field (the heat issue).
-void no_thermal_softening(const Row& r, std::size_t m, std::size_t t0, std::size_t tm) {
-  r.unsupported_unless(m, 0.0, "thermal softening (m): abut has no temperature field yet, and");
-  r.unsupported_unless(t0, 0.0, "thermal softening (T0): abut has no temperature field yet, and");
-  r.unsupported_unless(tm, 0.0, "thermal softening (Tm): abut has no temperature field yet, and");
+// Thermal softening 1 - T*^m (metal.hpp): m = 0 (the default) is none; with m > 0 the melting
+// temperature must lie above the reference one. Whether the material has a temperature field is
+// the Simulation's check (it knows the thermal properties).
+void thermal_softening(const Row& r, std::size_t m, std::size_t t0, std::size_t tm,
+                       MetalParams& p) {
+  p.softening_m = r.number_or(m, 0.0);
+  r.require(p.softening_m >= 0.0, m, "expected a softening exponent m >= 0");
+  p.room_temperature = r.number_or(t0, 0.0);
+  p.melting_temperature = r.number_or(tm, 0.0);
+  if (p.softens())
+    r.require(p.melting_temperature > p.room_temperature, tm,
+              "expected a melting temperature Tm above T0 (thermal softening, m > 0)");
 }
 
 }  // namespace
@@ -185,7 +192,7 @@ void read_mat_metal(DeckReader& d, Block& b) {
   r2.unsupported_unless(2, 0.0, "a yield surface other than von Mises (yield)");
   r2.unsupported_unless(3, 0.0, "rate hardening of *MAT_METAL (c; *MAT_JC has it)");
   if (r2.given(4)) r2.require(r2.number(4) > 0.0, 4, "expected a reference strain rate > 0");
-  no_thermal_softening(r2, 5, 6, 7);
+  thermal_softening(r2, 5, 6, 7, p);
   if (auto r3 = b.optional_row({"s0", "s1", "eps_d", "mu"})) {
     for (std::size_t i = 0; i < 4; ++i)
       r3->unsupported_unless(i, 0.0, "the fields of line 3 (damage and friction)");
@@ -210,7 +217,7 @@ void read_mat_jc(DeckReader& d, Block& b) {
   r2.require(p.n > 0.0, 2, "expected a hardening exponent n > 0");
   p.c = r2.number_or(3, 0.0);
   r2.require(p.c >= 0.0, 3, "expected a rate coefficient C >= 0");
-  no_thermal_softening(r2, 4, 5, 6);
+  thermal_softening(r2, 4, 5, 6, p);
   p.rate0 = r2.number_or(7, 1.0);
   r2.require(p.rate0 > 0.0, 7, "expected a reference strain rate > 0");
   if (auto r3 = b.optional_row({"-", "-", "d", "e"})) {
@@ -236,8 +243,9 @@ void read_prop_damage_jc(DeckReader& d, Block& b) {
     r.require(f.d1 + f.d2 > 0.0, 1,
               "expected a failure strain d1 + d2 > 0 at zero triaxiality (d1 alone: a constant "
               "plastic failure strain)");
-    r.unsupported_unless(5, 0.0, "thermal softening of the failure strain (d5): abut has no "
-                                 "temperature field yet, and");
+    r.unsupported_unless(5, 0.0,
+                         "thermal softening of the failure strain (d5): abut has no "
+                         "temperature field yet, and");
     f.rate0 = r.number_or(6, 1.0);
     r.require(f.rate0 > 0.0, 6, "expected a reference strain rate > 0");
     d.damage_properties[id] = f;

@@ -1,23 +1,30 @@
 #include "abut/material/metal.hpp"
 
-#include "abut/material/point_law.hpp"
-
 #include <algorithm>
 #include <cmath>
 
+#include "abut/material/point_law.hpp"
+
 namespace abut {
+
+double thermal_softening(const MetalParams& p, double temperature) {
+  if (!p.softens()) return 1.0;
+  const double homologous = std::clamp(
+      (temperature - p.room_temperature) / (p.melting_temperature - p.room_temperature), 0.0, 1.0);
+  return 1.0 - std::pow(homologous, p.softening_m);
+}
 
 double FlowStress::operator()(double plastic_strain, double plastic_strain_rate) const {
   const MetalParams& p = *p_;
   if (!p.johnson_cook) {
     Variables v;
     v.epsp = plastic_strain;
-    return table_->value(p.flow_curve, plastic_strain, v);
+    return thermal_factor_ * table_->value(p.flow_curve, plastic_strain, v);
   }
   // Johnson & Cook (1983): the rate factor only strengthens, from the reference rate on.
   const double hardening = p.a + (plastic_strain > 0.0 ? p.b * std::pow(plastic_strain, p.n) : 0.0);
   const double ratio = plastic_strain_rate / p.rate0;
-  return hardening * (ratio > 1.0 ? 1.0 + p.c * std::log(ratio) : 1.0);
+  return thermal_factor_ * hardening * (ratio > 1.0 ? 1.0 + p.c * std::log(ratio) : 1.0);
 }
 
 PlasticUpdate radial_return(const Sym3& trial, double shear_modulus, double plastic_strain,

@@ -34,7 +34,13 @@ Vec3 Simulation::Impl::gravity_at(double time) const {
 }
 
 void Simulation::Impl::compute_forces(double dt) {
-  const NodalState state{x.data(), y.data(), z.data(), vhx.data(), vhy.data(), vhz.data()};
+  const NodalState state{x.data(),
+                         y.data(),
+                         z.data(),
+                         vhx.data(),
+                         vhy.data(),
+                         vhz.data(),
+                         heat ? heat->temperature().data() : nullptr};
   stable = std::numeric_limits<double>::infinity();
   limiting_block = -1;
   limiting_shell_block = -1;
@@ -45,6 +51,7 @@ void Simulation::Impl::compute_forces(double dt) {
       limiting_block = static_cast<std::int32_t>(b);
     }
   }
+  if (!taylor_quinney.empty()) gather_plastic_heat();
   if (!shell_blocks.empty()) {
     const ShellNodalState shell_state{x.data(),   y.data(),   z.data(),   vhx.data(), vhy.data(),
                                       vhz.data(), whx.data(), why.data(), whz.data()};

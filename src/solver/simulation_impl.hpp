@@ -97,6 +97,9 @@ struct Simulation::Impl {
   // thermal step [power per node], and the largest contact conductance per heat capacity [1/time].
   std::vector<double> heat_energy, heat_source;
   double contact_heat_rate = 0.0;
+  // Coupling of the mechanics to the heat (simulation_coupling.cpp): the Taylor-Quinney share of
+  // each block's plastic work that becomes heat (0: none).
+  std::vector<double> taylor_quinney;
 
   explicit Impl(const Model& m) : model(m) {}
 
@@ -114,6 +117,8 @@ struct Simulation::Impl {
   void advance_heat();
   void gather_contact_heat(double dt);
   void check_thermal_contacts() const;
+  void couple_heat();
+  void gather_plastic_heat();
   std::string limit_description() const;
 };
 

@@ -199,6 +199,7 @@ void Simulation::Impl::setup() {
     heat_time = t;
   }
   check_thermal_contacts();
+  couple_heat();
   compute_forces(0.0);
   dt_initial = std::min(model.time.step_scale * stable, model.time.max_step);
   kick();

@@ -38,6 +38,24 @@ TEST(DeckMetals, MetalReadsItsFlowCurve) {
   EXPECT_NEAR(m.functions.value(p.flow_curve, 0.1, v), 167e6 + 415e6 * std::pow(0.1, 0.3), 1e-3);
 }
 
+// m, T0, Tm of both keywords (thermal softening, metal.hpp; the Simulation checks that the
+// material has a temperature field).
+TEST(DeckMetals, ThermalSofteningFields) {
+  const Model jc = model_of(
+      kMesh + "*MAT_JC\n1, 8960.0, 124.0e9, 0.34\n90e6, 292e6, 0.31, 0.025, 1.09, 298, 1356\n");
+  const auto& p = std::get<MetalParams>(jc.materials.at(0).params);
+  EXPECT_DOUBLE_EQ(p.softening_m, 1.09);
+  EXPECT_DOUBLE_EQ(p.room_temperature, 298.0);
+  EXPECT_DOUBLE_EQ(p.melting_temperature, 1356.0);
+  const Model metal = model_of(kMesh +
+                               "*MAT_METAL\n1, 7800.0, 210.0e9, 0.3\n7, 0, 0, 0, 1, 0.5, 20, 1500\n"
+                               "*CURVE\n7\n0, 1e8\n1, 2e8\n");
+  const auto& q = std::get<MetalParams>(metal.materials.at(0).params);
+  EXPECT_DOUBLE_EQ(q.softening_m, 0.5);
+  EXPECT_DOUBLE_EQ(q.room_temperature, 20.0);
+  EXPECT_DOUBLE_EQ(q.melting_temperature, 1500.0);
+}
+
 TEST(DeckMetals, JohnsonCookFieldsAndDefaults) {
   const Model m = model_of(kMesh + "*MAT_JC\n1, 8960.0, 124.0e9, 0.34\n90e6, 292e6, 0.31, 0.025\n");
   const auto& p = std::get<MetalParams>(m.materials.at(0).params);
@@ -66,10 +84,15 @@ TEST(DeckMetals, UnsupportedOptionsAreErrorsAtTheirField) {
           .where()
           .field,
       "c");
+  // Thermal softening with m > 0 needs Tm above T0.
   const InputError thermal =
       error_of(kMesh + "*MAT_JC\n1, 8960.0, 124.0e9, 0.34\n90e6, 292e6, 0.31, 0.025, 1.09\n");
-  EXPECT_EQ(thermal.where().field, "m");
+  EXPECT_EQ(thermal.where().field, "Tm");
   EXPECT_EQ(thermal.where().line, 13u);
+  EXPECT_EQ(error_of(kMesh + "*MAT_JC\n1, 8960.0, 124.0e9, 0.34\n90e6, 292e6, 0.31, 0, -1\n")
+                .where()
+                .field,
+            "m");
   EXPECT_EQ(error_of(kMesh + "*MAT_JC\n1, 8960.0, 124.0e9, 0.34\n0, 292e6\n").where().field, "A");
   EXPECT_EQ(error_of(kMesh + "*MAT_METAL\n1, 7800.0, 210.0e9, 0.3\n9\n").where().field,
             "cid");  // no curve 9

@@ -27,6 +27,21 @@ struct NodalState {
   const double* vx;  // velocities v^{n-1/2}
   const double* vy;
   const double* vz;
+  // Nodal temperatures at the last thermal step (issue 11); null without a temperature field.
+  // Read only by blocks with a ThermalCoupling.
+  const double* temperature = nullptr;
+};
+
+// Coupling of a block to the temperature field (issue 11), from its material's thermal
+// properties. The element temperature is the mean of its 8 nodal temperatures.
+//  - expansion alpha: the mechanical strain increment is the total one minus alpha dT I, dT the
+//    change of the element temperature since its last update (hypoelastic rate form, so the
+//    increments sum to alpha (T - T_initial) exactly, whatever the sub-cycling of the heat);
+//  - plastic_work: record each element's plastic work of the step (for the Taylor-Quinney heat);
+//  - a metal with thermal softening (MetalParams::softens) yields at its element temperature.
+struct ThermalCoupling {
+  double expansion = 0.0;
+  bool plastic_work = false;
 };
 
 // When an element is removed (*PART erosion fields, IMPETUS): its critical step falls below
@@ -72,6 +87,7 @@ class SolidBlock {
   // One step, see the contract above. dt == 0 (the first call) computes forces without
   // advancing the stress. Throws InstabilityError naming the element id source index when an
   // element inverts (volume <= 0) or produces a non-finite value.
+  // With a ThermalCoupling, state.temperature must be given (else InputError).
   BlockStep update(const NodalState& state, double dt);
   const std::vector<double>& element_forces() const;
 
@@ -99,6 +115,12 @@ class SolidBlock {
   void set_bulk_viscosity(double quadratic, double linear);
   void set_hourglass_coefficient(double coefficient);  // >= 0, else InputError
   double hourglass_coefficient() const;
+  // InputError for Mooney-Rivlin with thermal expansion (not supported yet). A coupling that
+  // changes nothing (no expansion, no plastic work, no softening) leaves the block uncoupled.
+  void set_thermal(const ThermalCoupling& coupling);
+  bool thermal() const;  // coupled: update() needs the temperatures
+  // sigma : d eps_p V of each element over the last step [energy]; empty unless plastic_work.
+  const std::vector<double>& plastic_work() const;
   // User element ids (one per hex) so that an InstabilityError names the element as the user
   // knows it; without them the message gives the index in the block.
   void set_element_ids(std::vector<std::int64_t> ids);

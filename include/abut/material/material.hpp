@@ -57,6 +57,10 @@ struct MetalParams {
   FunctionRef flow_curve;                                  // *MAT_METAL cid
   double a = 0.0, b = 0.0, n = 1.0, c = 0.0, rate0 = 1.0;  // *MAT_JC
   DuctileFailure failure;                                  // did: *PROP_DAMAGE_JC
+  // Thermal softening (m, T0, Tm of both keywords; metal.hpp): the flow stress times 1 - T*^m.
+  // m = 0 switches it off; it needs a temperature field (the material's thermal properties).
+  double softening_m = 0.0, room_temperature = 0.0, melting_temperature = 0.0;
+  bool softens() const { return softening_m > 0.0; }
 };
 
 using MaterialParams = std::variant<ElasticParams, MooneyRivlinParams, RigidParams, MetalParams>;

@@ -13,15 +13,29 @@
 
 namespace abut {
 
-// sigma_y(epsp, epsp_rate) of a metal; the table evaluates *MAT_METAL's curve.
+// Thermal softening factor of Johnson & Cook (1983, Proc. 7th Int. Symp. Ballistics, p. 541):
+//   1 - T*^m,  T* = (T - T0) / (Tm - T0) clamped to [0, 1],
+// so the flow stress is unchanged at and below T0 and vanishes at the melting temperature Tm.
+// 1 when the material does not soften (m = 0).
+double thermal_softening(const MetalParams& params, double temperature);
+
+// sigma_y(epsp, epsp_rate) of a metal; the table evaluates *MAT_METAL's curve. The same factor
+// 1 - T*^m multiplies *MAT_METAL's curve and Johnson-Cook's product (at_temperature).
 class FlowStress {
  public:
   FlowStress(const MetalParams& params, const FunctionTable* table) : p_(&params), table_(table) {}
   double operator()(double plastic_strain, double plastic_strain_rate) const;
+  // The flow stress of the same metal at a temperature (softened when the metal softens).
+  FlowStress at_temperature(double temperature) const {
+    FlowStress f = *this;
+    f.thermal_factor_ = thermal_softening(*p_, temperature);
+    return f;
+  }
 
  private:
   const MetalParams* p_;
   const FunctionTable* table_;
+  double thermal_factor_ = 1.0;
 };
 
 struct PlasticUpdate {

@@ -4,7 +4,7 @@
 // history (plastic strain, damage); the law returns the new stress and advances the history.
 // Hexahedra call `update` as it is (3-D); shells call plane_stress_update, which finds the
 // thickness strain that makes the normal stress vanish. A new hypoelastic law is one value type
-// with `update`.
+// with `update` and `at_temperature` (the law at an element temperature, for the coupling to heat).
 #include <cmath>
 
 #include "abut/material/elastic.hpp"
@@ -30,6 +30,8 @@ struct ElasticPoint {
               PointHistory& /*history*/) const {
     return add(rotated, hooke(lame, increment));
   }
+  // The law at an element temperature (issue 11): Hooke's law does not depend on it.
+  ElasticPoint at_temperature(double /*temperature*/) const { return *this; }
 };
 
 // *MAT_METAL, *MAT_JC: elastic trial and radial return (metal.hpp), then the damage.
@@ -53,6 +55,12 @@ struct MetalPoint {
       if (h.failed()) return Sym3{};
     }
     return u.stress;
+  }
+  // The law at an element temperature (issue 11): the thermally softened flow stress.
+  MetalPoint at_temperature(double temperature) const {
+    MetalPoint p = *this;
+    p.flow = flow.at_temperature(temperature);
+    return p;
   }
 };
 

@@ -40,7 +40,10 @@ inline std::array<double, 4> nodal_areas(const std::array<std::int32_t, 4>& face
 struct HeatSolver::Impl {
   // scale x curve(t), or scale alone without a curve.
   double amplitude(FunctionRef curve, double scale, double time) const {
-    return curve.valid() ? scale * model.functions.value(curve, time, Variables{}) : scale;
+    if (!curve.valid()) return scale;
+    Variables v;  // a *FUNCTION reads the time as t (a curve takes it as its abscissa)
+    v.t = time;
+    return scale * model.functions.value(curve, time, v);
   }
 
   const Model& model;
