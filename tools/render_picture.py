@@ -3,11 +3,14 @@
 
     xvfb-run -a /usr/bin/python3 tools/render_picture.py RESULTS.pvd OUT.png [TIME ...]
         [--stress-max PA] [--view DX,DY,DZ] [--half]
+        [--field NAME --range MIN,MAX --title TEXT] [--seconds]
 
 Uses Debian's python3-vtk9; without a display run it under xvfb-run (package xvfb).
 Each panel shows the exterior of the model at the state nearest to the time asked for
 (default: the first and the last state), coloured by von Mises stress from 0 to --stress-max
-(default 2e7 Pa). Without --view the camera is the rubber-sphere picture's; with it the camera
+(default 2e7 Pa), or by another field of the states (--field, a point or cell array, e.g.
+temperature, over --range, labelled --title). The time label is in ms, or in s with --seconds.
+Without --view the camera is the rubber-sphere picture's; with it the camera
 looks along (DX, DY, DZ) and frames the first panel's model, the same framing for every panel.
 --half keeps the cells with centres at y <= 0 so that folds inside a tube show in section.
 """
@@ -23,7 +26,8 @@ def states(pvd):
     return [(float(d.get("timestep")), Path(pvd).parent / d.get("file")) for d in root.iter("DataSet")]
 
 
-def panel(vtu, time, viewport, window, stress_range, half):
+def panel(vtu, time, viewport, window, colour, half, seconds):
+    field, value_range, title = colour
     reader = vtk.vtkXMLUnstructuredGridReader()
     reader.SetFileName(str(vtu))
     source = reader
@@ -41,9 +45,13 @@ def panel(vtu, time, viewport, window, stress_range, half):
     surface.SetInputConnection(source.GetOutputPort())
     mapper = vtk.vtkDataSetMapper()
     mapper.SetInputConnection(surface.GetOutputPort())
-    mapper.SetScalarModeToUseCellFieldData()
-    mapper.SelectColorArray("von_mises_stress")
-    mapper.SetScalarRange(*stress_range)
+    reader.Update()
+    if reader.GetOutput().GetPointData().HasArray(field):
+        mapper.SetScalarModeToUsePointFieldData()
+    else:
+        mapper.SetScalarModeToUseCellFieldData()
+    mapper.SelectColorArray(field)
+    mapper.SetScalarRange(*value_range)
     lut = vtk.vtkLookupTable()
     lut.SetHueRange(0.66, 0.0)
     lut.Build()
@@ -58,7 +66,7 @@ def panel(vtu, time, viewport, window, stress_range, half):
     renderer.SetBackground(1.0, 1.0, 1.0)
     renderer.AddActor(actor)
     label = vtk.vtkTextActor()
-    label.SetInput(f"t = {time * 1e3:.2f} ms")
+    label.SetInput(f"t = {time:.3g} s" if seconds else f"t = {time * 1e3:.2f} ms")
     label.GetTextProperty().SetColor(0.0, 0.0, 0.0)
     label.GetTextProperty().SetFontSize(22)
     label.SetPosition(12, 12)
@@ -66,7 +74,7 @@ def panel(vtu, time, viewport, window, stress_range, half):
     if viewport[0] == 0.0:
         bar = vtk.vtkScalarBarActor()
         bar.SetLookupTable(lut)
-        bar.SetTitle("von Mises [Pa]")
+        bar.SetTitle(title)
         bar.SetNumberOfLabels(3)
         bar.SetOrientationToHorizontal()
         bar.SetPosition(0.05, 0.84)
@@ -95,6 +103,10 @@ def main():
     parser.add_argument("--stress-max", type=float, default=2.0e7)
     parser.add_argument("--view", type=lambda v: [float(c) for c in v.split(",")])
     parser.add_argument("--half", action="store_true")
+    parser.add_argument("--field", default="von_mises_stress")
+    parser.add_argument("--range", type=lambda v: [float(c) for c in v.split(",")])
+    parser.add_argument("--title")
+    parser.add_argument("--seconds", action="store_true")
     args = parser.parse_args()
     series = states(args.pvd)
     wanted = args.times or [series[0][0], series[-1][0]]
@@ -103,9 +115,11 @@ def main():
     window.SetOffScreenRendering(1)
     width = 520
     window.SetSize(width * len(chosen), 520)
+    colour = (args.field, args.range or (0.0, args.stress_max),
+              args.title or ("von Mises [Pa]" if args.field == "von_mises_stress" else args.field))
     renderers = [
-        panel(vtu, time, (i / len(chosen), 0.0, (i + 1) / len(chosen), 1.0), window,
-              (0.0, args.stress_max), args.half)
+        panel(vtu, time, (i / len(chosen), 0.0, (i + 1) / len(chosen), 1.0), window, colour,
+              args.half, args.seconds)
         for i, (time, vtu) in enumerate(chosen)
     ]
     if args.view:
