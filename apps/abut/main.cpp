@@ -65,6 +65,12 @@ void print_info(const abut::Model& model, std::ostream& out) {
   out << fmt::format("time:       end {:.6g}, step scale {}, initial stable step {:.4g} ({})\n",
                      model.time.end_time, model.time.step_scale, sim.initial_time_step(),
                      sim.time_step_limit());
+  if (!sim.temperature().empty())
+    out << fmt::format(
+        "heat:       {} *PROP_THERMAL, thermal stable step {:.4g} ({:.3g} x the mechanical "
+        "step; the heat is sub-cycled)\n",
+        model.thermal.properties.size(), sim.thermal_stable_step(),
+        sim.thermal_stable_step() / sim.initial_time_step());
   out << "parts:\n";
   for (const abut::PartState& p : sim.part_states())
     out << fmt::format("  {:>6}  {:<20} {:>8} elements  mass {:.6g}{}\n", p.part_id,

@@ -1,7 +1,8 @@
 // The end of reading: every reference is checked now that all ids are known, duplicated nodes are
 // merged (*MERGE_DUPLICATED_NODES), then the mesh is refined and smoothed (*CHANGE_P-ORDER,
-// *SMOOTH_MESH, *PART alpha_max) and the initial velocities are applied to the final nodes;
-// last, a deck with *STATIC gets its static steps' loads (deck_finalize_static.cpp).
+// *SMOOTH_MESH, *PART alpha_max) and the initial velocities are applied to the final nodes; the
+// thermal keywords get their nodes and faces (deck_finalize_thermal.cpp); last, a deck with
+// *STATIC gets its static steps' loads (deck_finalize_static.cpp).
 #include <algorithm>
 #include <map>
 #include <set>
@@ -284,6 +285,8 @@ DeckResult DeckReader::finish() {
     }
   }
 
+  // Heat: thpid references, thermal nodes and faces (deck_finalize_thermal.cpp).
+  finish_thermal();
   // *PART_SOLID; with *STATIC the loads and boundary conditions become the steps' lists.
   finish_static_steps();
 

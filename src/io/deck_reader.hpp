@@ -46,6 +46,21 @@ struct DamageBinding {
   std::size_t material = 0;  // index into Model::materials
 };
 
+// A material's thpid: its *PROP_THERMAL, checked once the whole deck is read.
+struct ThermalBinding {
+  std::int64_t id = 0;
+  SourceLocation where;  // the thpid field
+};
+
+// A row of *INITIAL_TEMPERATURE, *BC_TEMPERATURE, *LOAD_THERMAL_SURFACE or
+// *LOAD_THERMAL_CONVECTION: its entity becomes nodes or faces on the final mesh
+// (deck_finalize_thermal.cpp), in the entry `index` of the ThermalModel list of its keyword.
+struct PendingThermal {
+  enum class Kind { Initial, Prescribed, Flux, Convection } kind = Kind::Initial;
+  EntityRef entity;
+  std::size_t index = 0;
+};
+
 struct IdReference {
   std::int64_t id = 0;
   SourceLocation where;
@@ -191,6 +206,10 @@ class DeckReader {
   // boundary conditions and loads become the lists of each static step; without it, options
   // that only static steps have are refused. Runs last, on the final mesh.
   void finish_static_steps();
+  // deck_finalize_thermal.cpp: thpid references, the nodes and faces of the thermal keywords,
+  // and the checks that need the whole deck (a thermal keyword without a thermal material, heat
+  // in static steps). On the final mesh, before finish_static_steps.
+  void finish_thermal();
   // deck_finalize_merge.cpp: *MERGE_DUPLICATED_NODES, once element nodes, node sets and shell
   // nodes are resolved and before anything else stores node indices; remaps the node sets.
   void merge_duplicated_nodes();
@@ -212,6 +231,9 @@ class DeckReader {
   std::vector<FunctionBinding> function_bindings;
   std::map<std::int64_t, DuctileFailure> damage_properties;  // *PROP_DAMAGE_JC by did
   std::vector<DamageBinding> damage_bindings;
+  std::vector<ThermalBinding> thermal_bindings;  // thpid fields of the materials
+  std::vector<PendingThermal> thermal_entities;
+  std::vector<SourceLocation> thermal_keywords;  // the first line of each thermal keyword block
   std::vector<IdReference> geometry_references;  // gids that must exist
   std::vector<ElementNodes> element_nodes;
   std::vector<ShellNodes> shell_nodes;
@@ -274,6 +296,15 @@ void read_mat_rigid(DeckReader&, Block&);
 void read_mat_metal(DeckReader&, Block&);
 void read_mat_jc(DeckReader&, Block&);
 void read_prop_damage_jc(DeckReader&, Block&);
+// keyword_thermal.cpp
+void read_prop_thermal(DeckReader&, Block&);
+void read_initial_temperature(DeckReader&, Block&);
+void read_bc_temperature(DeckReader&, Block&);
+void read_load_thermal_surface(DeckReader&, Block&);
+void read_load_thermal_convection(DeckReader&, Block&);
+// A material's thpid field (0 or empty: none): sets Material::thermal_id of the material about
+// to be added and records the reference, checked once the deck is in.
+std::int64_t thermal_property_id(DeckReader& d, const Row& r, std::size_t i);
 void read_part(DeckReader&, Block&);
 void read_part_shell(DeckReader&, Block&);
 void read_part_solid(DeckReader&, Block&);  // keyword_static.cpp

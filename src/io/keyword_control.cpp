@@ -65,7 +65,10 @@ void read_unit_system(DeckReader& d, Block& b) {
     r.fail(0, "expected SI, MMTONS, CMGUS, IPS, MMKGMS, CMGS, MMGMS or MMMGMS, got '" + r.text(0) +
                   "'");
   d.model.units = units;
-  // The temperature unit matters only to thermal solutions, which abut does not have.
+  // The temperature unit is checked and not stored: the heat solver uses temperature differences
+  // only (conduction, convection, expansion), so the deck's temperatures, its thermal properties
+  // and its initial and prescribed temperatures must simply use the same unit. K and C share
+  // the size of a degree; with F, c_p, k, alpha and h must be given per degree F.
   if (r.given(1)) {
     const std::string t = r.word(1);
     r.require(t == "K" || t == "C" || t == "F", 1, "expected K, C or F");

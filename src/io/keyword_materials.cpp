@@ -1,13 +1,18 @@
 // *MAT_ELASTIC, *MAT_MOONEY_RIVLIN, *MAT_RIGID, *MAT_METAL, *MAT_JC, *PART, *PART_SHELL.
+#include <optional>
+
 #include "deck_reader.hpp"
 
 namespace abut::deck {
 namespace {
 
-void add_material(DeckReader& d, const Row& r, MaterialParams params) {
+// `thpid`: the field of the thermal property id on r, if the material has one.
+void add_material(DeckReader& d, const Row& r, MaterialParams params,
+                  std::optional<std::size_t> thpid = std::nullopt) {
   const std::int64_t id = d.material_id(r, 0);
   d.claim_id("material", id, r.where(0));
-  d.model.materials.push_back({id, params, r.where()});
+  const std::int64_t thermal_id = thpid ? thermal_property_id(d, r, *thpid) : 0;
+  d.model.materials.push_back({id, params, r.where(), thermal_id});
 }
 
 double density(const Row& r, std::size_t i) {
@@ -21,12 +26,13 @@ void unused_field(const Row& r, std::size_t i) {
             "this field is unused: leave it empty");
 }
 
+// Rigid bodies have no temperature field yet (the heat solver conducts in deformable hexahedra).
 void no_thermal(const Row& r, std::size_t thpid) {
-  r.unsupported_unless(thpid, 0.0, "a thermal property (thpid)");
+  r.unsupported_unless(thpid, 0.0, "a thermal property (thpid) on a rigid material");
 }
 
-// mid, rho, E, nu, did, thpid of *MAT_ELASTIC, *MAT_METAL and *MAT_JC (the metals read did
-// themselves).
+// mid, rho, E, nu, did of *MAT_ELASTIC, *MAT_METAL and *MAT_JC (the metals read did
+// themselves; thpid, field 5, is read by add_material).
 template <class Params>
 Params isotropic_elasticity(const Row& r, bool damage = false) {
   Params p;
@@ -36,7 +42,6 @@ Params isotropic_elasticity(const Row& r, bool damage = false) {
   p.poisson = r.number_or(3, 0.0);
   r.require(p.poisson >= 0.0 && p.poisson < 0.5, 3, "poisson must be in [0, 0.5)");
   if (!damage) r.unsupported_unless(4, 0.0, "a damage property (did) on this material");
-  no_thermal(r, 5);
   return p;
 }
 
@@ -51,7 +56,7 @@ void read_mat_elastic(DeckReader& d, Block& b) {
     r2->unsupported_unless(2, 0.0, "material damping (c)");
     r2->unsupported_unless(3, 0.0, "material damping (c_dec)");
   }
-  add_material(d, r, p);
+  add_material(d, r, p, 5);
 }
 
 void read_mat_mooney_rivlin(DeckReader& d, Block& b) {
@@ -63,7 +68,6 @@ void read_mat_mooney_rivlin(DeckReader& d, Block& b) {
   r1.require(p.bulk > 0.0, 2, "expected a bulk modulus K > 0");
   unused_field(r1, 3);
   unused_field(r1, 4);
-  no_thermal(r1, 5);
   p.c1 = r2.number(0);
   p.c2 = r2.number_or(1, 0.0);
   r2.require(p.c1 + p.c2 > 0.0, 1,
@@ -80,7 +84,7 @@ void read_mat_mooney_rivlin(DeckReader& d, Block& b) {
     p.beta[3] = r3->number_or(1, 0.0);
     r3->require(p.beta[3] >= 0.0, 1, "expected a relaxation time beta >= 0");
   }
-  add_material(d, r1, p);
+  add_material(d, r1, p, 5);
 }
 
 void read_mat_rigid(DeckReader& d, Block& b) {
@@ -201,7 +205,7 @@ void read_mat_metal(DeckReader& d, Block& b) {
   d.bind_function(d.other_id(r2, 0), r2.where(0), [index](Model& model, FunctionRef f) {
     std::get<MetalParams>(model.materials[index].params).flow_curve = f;
   });
-  add_material(d, r1, p);
+  add_material(d, r1, p, 5);
 }
 
 void read_mat_jc(DeckReader& d, Block& b) {
@@ -223,7 +227,7 @@ void read_mat_jc(DeckReader& d, Block& b) {
   if (auto r3 = b.optional_row({"-", "-", "d", "e"})) {
     for (std::size_t i = 0; i < 4; ++i) r3->unsupported_unless(i, 0.0, "the fields of line 3");
   }
-  add_material(d, r1, p);
+  add_material(d, r1, p, 5);
 }
 
 // *PROP_DAMAGE_JC: did, d1, d2, d3, d4, d5, eps_dot0 (material.hpp, DuctileFailure).

@@ -15,6 +15,7 @@
 #include "abut/io/progress.hpp"
 #include "abut/io/vtu_writer.hpp"
 #include "abut/solver/simulation.hpp"
+#include "run_thermal.hpp"
 
 namespace abut {
 
@@ -69,6 +70,10 @@ class StateWriter {
       point_fields.push_back({"contact_force", 3, contact_force_});
       point_fields.push_back({"contact_pressure", 1, contact_pressure_});
       point_fields.push_back({"wear", 1, wear_});
+    }
+    if (thermal_output::active(sim)) {
+      point_fields.push_back({"temperature", 1, sim.temperature()});
+      point_fields.push_back({"heat_flow", 1, sim.heat_flow()});
     }
     if (!failed) {
       sim.von_mises_stress(von_mises_);
@@ -144,10 +149,12 @@ class StateWriter {
 
 class HistoryWriter {
  public:
-  HistoryWriter(const fs::path& dir, bool with_contact, bool with_contact_heat)
-      : contact_heat_(with_contact_heat),
-        energy_(dir / "energy.csv", {"kinetic", "internal", "hourglass", "contact", "friction",
-                                     "eroded", "external_work", "total", "balance_error"}),
+  // With `thermal`, energy.csv gets the heat balance columns (thermal_output::energy_columns);
+  // with `contact_heat`, contact.csv the heat of the thermal contacts.
+  HistoryWriter(const fs::path& dir, bool with_contact, bool thermal, bool contact_heat)
+      : contact_heat_(contact_heat),
+        energy_(dir / "energy.csv", energy_columns(thermal)),
+        thermal_(thermal),
         parts_(dir / "parts.csv",
                {"part", "mass", "x", "y", "z", "vx", "vy", "vz", "kinetic", "internal"}) {
     std::vector<std::string> columns{"contact",
@@ -172,9 +179,11 @@ class HistoryWriter {
     written_ = true;
     last_time_ = sim.time();
     const Energies e = sim.energies();
-    energy_.write_row(sim.time(),
-                      {e.kinetic, e.internal, e.hourglass, e.contact, e.friction, e.eroded,
-                       e.external_work, e.total(), sim.energy_balance_error()});
+    energy_values_ = {e.kinetic,       e.internal, e.hourglass,
+                      e.contact,       e.friction, e.eroded,
+                      e.external_work, e.total(),  sim.energy_balance_error()};
+    if (thermal_) thermal_output::append_energy_values(sim, energy_values_);
+    energy_.write_row(sim.time(), energy_values_);
     for (const PartState& p : sim.part_states())
       parts_.write_row(
           sim.time(),
@@ -202,7 +211,19 @@ class HistoryWriter {
 
  private:
   bool contact_heat_ = false;
-  CsvHistory energy_, parts_;
+  static std::vector<std::string> energy_columns(bool thermal) {
+    std::vector<std::string> columns{"kinetic",       "internal", "hourglass",
+                                     "contact",       "friction", "eroded",
+                                     "external_work", "total",    "balance_error"};
+    if (thermal)
+      for (std::string& c : thermal_output::energy_columns()) columns.push_back(std::move(c));
+    return columns;
+  }
+
+  CsvHistory energy_;
+  bool thermal_;
+  std::vector<CsvHistory::Value> energy_values_;
+  CsvHistory parts_;
   std::optional<CsvHistory> contact_;
   bool written_ = false;
   double last_time_ = 0.0;
@@ -295,6 +316,7 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
     json.end_object();
   }
   json.end_array();
+  if (thermal_output::active(sim)) thermal_output::write_summary(json, sim, report.cycles);
   json.end_object();
   json.write_file(path);
 }
@@ -329,12 +351,14 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
     log << fmt::format(", {} contact points ({}; {}; {}; {})\n", c.points, c.discretisation,
                        c.normal_law, c.tangential_law, c.stiffness_rule);
   }
+  if (thermal_output::active(sim)) log << thermal_output::start_line(sim);
   log << "abut: writing results to " << options.output_dir.string() << "\n";
 
   StateWriter states(options.output_dir, model);
   bool contact_heat = false;
   for (const ContactSpec& c : model.contacts) contact_heat = contact_heat || c.exchanges_heat();
-  HistoryWriter histories(options.output_dir, sim.has_contact(), contact_heat);
+  HistoryWriter histories(options.output_dir, sim.has_contact(), thermal_output::active(sim),
+                          contact_heat);
   Schedule state_schedule(model.time.start_time, state_interval);
   Schedule history_schedule(model.time.start_time, history_interval);
   ProgressReporter progress = ProgressReporter::to_stderr(model.time.start_time, t_end);
@@ -376,6 +400,7 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
         "threads)\n",
         report.cycles, report.end_time, report.wall_seconds, report.ns_per_element_cycle, threads);
     log << fmt::format("abut: energy balance error {:.3f}%\n", 100.0 * report.energy_balance_error);
+    if (thermal_output::active(sim)) log << thermal_output::end_line(sim, report.cycles);
     if (sim.has_contact())
       log << fmt::format("abut: contact took {:.0f}% of the wall time\n",
                          100.0 * sim.contact_seconds() / report.wall_seconds);

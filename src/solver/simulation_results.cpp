@@ -145,5 +145,8 @@ double Simulation::thermal_stable_step() const {
 HeatBalance Simulation::heat_balance() const {
   return impl_->heat ? impl_->heat->balance() : HeatBalance{};
 }
+std::span<const double> Simulation::heat_flow() const {
+  return impl_->heat ? impl_->heat->conduction_rate() : std::span<const double>();
+}
 
 }  // namespace abut

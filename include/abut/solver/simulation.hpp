@@ -113,6 +113,9 @@ class Simulation {
   std::int64_t thermal_steps() const;
   double thermal_stable_step() const;
   HeatBalance heat_balance() const;
+  // Heat flowing into each node by conduction at the last thermal step [power] (empty without
+  // thermal properties).
+  std::span<const double> heat_flow() const;
 
   // The state saved before the step that failed (positions and velocities), for output.
   const std::vector<double>& last_good_x() const;

@@ -1,0 +1,77 @@
+// Thermal output of an explicit run: see run_thermal.hpp.
+#include "run_thermal.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace abut::thermal_output {
+namespace {
+
+// Mechanical cycles per thermal step over the run (0 before the first thermal step).
+double steps_per_thermal_step(const Simulation& sim, std::int64_t cycles) {
+  return sim.thermal_steps() > 0
+             ? static_cast<double>(cycles) / static_cast<double>(sim.thermal_steps())
+             : 0.0;
+}
+
+// The balance error relative to the largest heat term, for the log (0 when nothing moved).
+double relative_error(const HeatBalance& b) {
+  const double scale = std::max(
+      {std::abs(b.stored), std::abs(b.boundary), std::abs(b.prescribed), std::abs(b.sources)});
+  return scale > 0.0 ? b.error() / scale : 0.0;
+}
+
+}  // namespace
+
+std::vector<std::string> energy_columns() {
+  return {"heat_stored", "heat_boundary", "heat_prescribed", "heat_sources", "heat_balance_error"};
+}
+
+void append_energy_values(const Simulation& sim, std::vector<CsvHistory::Value>& values) {
+  const HeatBalance b = sim.heat_balance();
+  for (const double v : {b.stored, b.boundary, b.prescribed, b.sources, b.error()})
+    values.emplace_back(v);
+}
+
+void write_summary(JsonWriter& json, const Simulation& sim, std::int64_t cycles) {
+  const HeatBalance b = sim.heat_balance();
+  json.key("thermal").begin_object();
+  json.member("thermal_steps", sim.thermal_steps());
+  json.member("thermal_stable_step", sim.thermal_stable_step());
+  json.member("mechanical_steps_per_thermal_step", steps_per_thermal_step(sim, cycles));
+  json.key("heat_balance").begin_object();
+  json.member("stored", b.stored).member("boundary", b.boundary);
+  json.member("prescribed", b.prescribed).member("sources", b.sources);
+  json.member("error", b.error());
+  json.end_object();
+  json.end_object();
+}
+
+// Simulation takes thermal steps of 0.9 of the thermal stable step (simulation.cpp).
+std::string start_line(const Simulation& sim) {
+  const double thermal = sim.thermal_stable_step();
+  const double mechanical = sim.initial_time_step();
+  if (thermal >= mechanical) {
+    return fmt::format(
+        "abut: heat: thermal stable step {:.4g} = {:.3g} x the mechanical step; the heat is "
+        "sub-cycled: one thermal step per {:.0f} mechanical steps or so\n",
+        thermal, thermal / mechanical, std::floor(0.9 * thermal / mechanical));
+  }
+  return fmt::format(
+      "abut: heat: thermal stable step {:.4g} = {:.3g} x the mechanical step; the heat is "
+      "sub-cycled: {:.0f} thermal steps per mechanical step or so\n",
+      thermal, thermal / mechanical, std::ceil(mechanical / (0.9 * thermal)));
+}
+
+std::string end_line(const Simulation& sim, std::int64_t cycles) {
+  const HeatBalance b = sim.heat_balance();
+  return fmt::format(
+      "abut: heat: {} thermal steps ({:.3g} mechanical steps per thermal step), heat stored "
+      "{:.6g}, heat balance error {:.3g} ({:.3f}%)\n",
+      sim.thermal_steps(), steps_per_thermal_step(sim, cycles), b.stored, b.error(),
+      100.0 * relative_error(b));
+}
+
+}  // namespace abut::thermal_output
