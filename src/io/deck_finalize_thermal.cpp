@@ -5,13 +5,16 @@
 // here, at the keyword, rather than silently run without heat.
 //
 // Which nodes and faces a thermal entity means: a part (P, PS) must have thermal properties (the
-// heat solver holds a temperature only in the hexahedra of such parts); ALL and a region (G) mean
+// heat solver holds a temperature only in the hexahedra and shells of such parts, heat.hpp:
+// thermal_node_flags); ALL and a region (G) mean
 // the nodes and faces of the thermal parts among them, and are an error when there are none.
 #include <algorithm>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "abut/solver/entity_name.hpp"
+#include "abut/solver/heat.hpp"
 #include "abut/solver/pressure_loads.hpp"
 #include "deck_reader.hpp"
 
@@ -20,38 +23,14 @@ namespace {
 
 std::string at(const SourceLocation& w) { return w.file + ":" + std::to_string(w.line); }
 
-std::string entity_text(const EntityRef& e) {
-  switch (e.type) {
-    case EntityType::Node:
-      return "node " + std::to_string(e.id);
-    case EntityType::NodeSet:
-      return "node set " + std::to_string(e.id);
-    case EntityType::Part:
-      return "part " + std::to_string(e.id);
-    case EntityType::PartSet:
-      return "part set " + std::to_string(e.id);
-    case EntityType::GeometryRegion:
-      return "the region of geometry " + std::to_string(e.id);
-    default:
-      return "the model";
-  }
-}
-
-// The thermal parts and their nodes (the nodes of their hexahedra).
+// The thermal parts and the nodes that carry a temperature (heat.hpp: hexahedra and shells).
 struct ThermalMesh {
   std::set<std::int64_t> parts;
-  std::vector<std::uint8_t> node;  // 1: in a hexahedron of a thermal part
+  std::vector<std::uint8_t> node;
 
-  explicit ThermalMesh(const Model& model) {
-    for (const Part& p : model.parts) {
-      const Material* m = model.find_material(p.material_id);
-      if (m && m->thermal_id != 0) parts.insert(p.id);
-    }
-    const Mesh& mesh = model.mesh;
-    node.assign(mesh.nodes.size(), 0);
-    for (std::size_t h = 0; h < mesh.hex_count(); ++h)
-      if (parts.count(mesh.hex_part[h]))
-        for (const std::int32_t n : mesh.hexes[h]) node[static_cast<std::size_t>(n)] = 1;
+  explicit ThermalMesh(const Model& model) : node(thermal_node_flags(model)) {
+    for (const Part& p : model.parts)
+      if (is_thermal_part(model, p.id)) parts.insert(p.id);
   }
   bool has(std::int32_t n) const { return node[static_cast<std::size_t>(n)] != 0; }
 };
@@ -78,12 +57,11 @@ std::vector<std::int32_t> thermal_nodes(const Model& model, const ThermalMesh& t
       if (!thermal.has(n))
         throw InputError(
             e.where, "node " + std::to_string(model.mesh.nodes.id[static_cast<std::size_t>(n)]) +
-                         " is not in a hexahedron of a part with thermal properties "
-                         "(thpid)");
+                         " is not in a part with thermal properties (thpid)");
   }
   std::erase_if(nodes, [&](std::int32_t n) { return !thermal.has(n); });
   if (nodes.empty())
-    throw InputError(e.where, entity_text(e) + " has no node in a part with thermal properties");
+    throw InputError(e.where, entity_name(e) + " has no node in a part with thermal properties");
   return nodes;
 }
 
@@ -98,15 +76,14 @@ std::vector<Quad4> thermal_faces(const Model& model, const ThermalMesh& thermal,
   } catch (const InputError&) {
     faces.clear();  // no face at all: the message below says what is missing
   }
-  // Solid faces come first, then the shells, which conduct no heat (yet).
-  if (!faces.empty()) faces.resize(pressure_hex_faces(model, selection).faces.size());
+  // Solid faces, then shells: a shell's face is its mid-surface, loaded once (one side).
   std::erase_if(faces, [&](const Quad4& q) {
     return !std::all_of(q.begin(), q.end(), [&](std::int32_t n) { return thermal.has(n); });
   });
   if (faces.empty())
-    throw InputError(e.where, entity_text(e) +
-                                  " has no exterior face of a hexahedron with thermal properties "
-                                  "to carry the heat load");
+    throw InputError(e.where, entity_name(e) +
+                                  " has no exterior face of a solid and no shell with thermal "
+                                  "properties to carry the heat load");
   return faces;
 }
 
@@ -133,11 +110,12 @@ void DeckReader::finish_thermal() {
                                     joined(ids) + ")");
     used.insert(b.id);
   }
-  if (!static_step_ends.empty()) {
-    throw InputError(thermal_bindings.front().where,
-                     "heat in static steps is not supported yet: remove the thpid of the "
-                     "materials and the thermal keywords (the deck has *STATIC at " +
-                         at(model.static_steps.front().where) + ")");
+  for (const Material& m : model.materials) {
+    const ThermalProperties* p = m.thermal_id != 0 ? thermal.find(m.thermal_id) : nullptr;
+    if (p && p->expansion != 0.0 && is_rigid(m.params))
+      notes.push_back("rigid material " + std::to_string(m.id) + " at " + at(m.where) +
+                      " conducts heat but does not expand (alpha of *PROP_THERMAL " +
+                      std::to_string(p->id) + " acts on deformable parts only)");
   }
   for (const ThermalProperties& p : thermal.properties)
     if (!used.count(p.id))

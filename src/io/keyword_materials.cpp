@@ -26,11 +26,6 @@ void unused_field(const Row& r, std::size_t i) {
             "this field is unused: leave it empty");
 }
 
-// Rigid bodies have no temperature field yet (the heat solver conducts in deformable hexahedra).
-void no_thermal(const Row& r, std::size_t thpid) {
-  r.unsupported_unless(thpid, 0.0, "a thermal property (thpid) on a rigid material");
-}
-
 // mid, rho, E, nu, did of *MAT_ELASTIC, *MAT_METAL and *MAT_JC (the metals read did
 // themselves; thpid, field 5, is read by add_material).
 template <class Params>
@@ -92,8 +87,7 @@ void read_mat_rigid(DeckReader& d, Block& b) {
   RigidParams p;
   p.density = density(r, 1);
   for (std::size_t i : {2, 3, 4}) unused_field(r, i);
-  no_thermal(r, 5);
-  add_material(d, r, p);
+  add_material(d, r, p, 5);  // a rigid body conducts heat (a hot tool) but does not expand
 }
 
 void read_part(DeckReader& d, Block& b) {

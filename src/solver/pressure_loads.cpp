@@ -5,6 +5,7 @@
 
 #include "abut/core/error.hpp"
 #include "abut/mesh/skin.hpp"
+#include "abut/solver/entity_name.hpp"
 
 namespace abut {
 namespace {
@@ -26,19 +27,6 @@ bool normalise_face(Quad4& q) {
     }
   }
   return false;  // q1 == q3 or q2 == q4: a quad folded onto its diagonal
-}
-
-std::string entity_name(const EntityRef& e) {
-  switch (e.type) {
-    case EntityType::Part:
-      return "part " + std::to_string(e.id);
-    case EntityType::PartSet:
-      return "part set " + std::to_string(e.id);
-    case EntityType::GeometryRegion:
-      return "the region of geometry " + std::to_string(e.id);
-    default:
-      return "the model";
-  }
 }
 
 // The exterior solid faces and the shells (one flag per shell) of the entity of `load`.

@@ -98,10 +98,20 @@ TEST(DeckThermal, UnknownOrUnsupportedThpid) {
   EXPECT_EQ(e.where().field, "thpid");
   EXPECT_THAT(e.message(), HasSubstr("thermal property 9 does not exist"));
   EXPECT_THAT(e.message(), HasSubstr("defined thermal properties: 7"));
-  e = error_of(with("*MAT_RIGID\n2, 7800.0, , , , 7\n"));
-  EXPECT_EQ(e.where().line, 16u);
-  EXPECT_EQ(e.where().field, "thpid");
-  EXPECT_THAT(e.message(), HasSubstr("rigid"));
+}
+
+// A rigid body conducts (a hot tool) but cannot expand: its alpha is reported, not applied.
+TEST(DeckThermal, RigidMaterialConductsButDoesNotExpand) {
+  std::string deck = kThermalBox;
+  deck.replace(deck.find("*MAT_ELASTIC\n1, 7800.0, 210.0e9, 0.3, 0, 7"),
+               std::string("*MAT_ELASTIC\n1, 7800.0, 210.0e9, 0.3, 0, 7").size(),
+               "*MAT_RIGID\n1, 7800.0, , , , 7");
+  const DeckResult r = testing::read(deck + "*BC_TEMPERATURE\nP, 1, 0, 300.0\n");
+  ASSERT_EQ(r.model.materials.size(), 1u);
+  EXPECT_EQ(r.model.materials[0].thermal_id, 7);
+  EXPECT_EQ(r.model.thermal.prescribed.at(0).nodes.size(), 18u);
+  EXPECT_THAT(r.notes, ::testing::Contains(HasSubstr("rigid material 1 at t.k:9 conducts heat but "
+                                                     "does not expand")));
 }
 
 TEST(DeckThermal, ThermalKeywordWithoutThermalMaterial) {
@@ -112,12 +122,47 @@ TEST(DeckThermal, ThermalKeywordWithoutThermalMaterial) {
   EXPECT_THAT(e.message(), HasSubstr("thpid"));
 }
 
-TEST(DeckThermal, HeatInStaticStepsIsRefused) {
+// Shells of a thermal part carry a temperature (heat.hpp, thermal_node_flags): the conditions
+// reach their nodes, the face loads their mid-surfaces.
+TEST(DeckThermal, ShellNodesAndFaces) {
+  const Model m = model_of(R"(*UNIT_SYSTEM
+SI, C
+*TIME
+1.0e-3
+*MAT_ELASTIC
+1, 7800.0, 210.0e9, 0.3, 0, 7
+*PROP_THERMAL
+7, 460.0, 45.0
+*PART
+1, 1, , 0.002
+*NODE
+1, 0.0, 0.0, 0.0
+2, 1.0, 0.0, 0.0
+3, 1.0, 1.0, 0.0
+4, 0.0, 1.0, 0.0
+5, 2.0, 0.0, 0.0
+*ELEMENT_SHELL
+1, 1, 1, 2, 3, 4
+2, 1, 2, 5, 3, 3
+*BC_TEMPERATURE
+N, 5, 0, 80.0
+*LOAD_THERMAL_CONVECTION
+1, P, 1, 10.0, 20.0
+)");
+  ASSERT_EQ(m.thermal.prescribed.size(), 1u);
+  EXPECT_EQ(m.thermal.prescribed[0].nodes.size(), 1u);
+  ASSERT_EQ(m.thermal.convection.size(), 1u);
+  EXPECT_EQ(m.thermal.convection[0].faces.size(), 2u);  // the quad and the triangle
+}
+
+// Static steps solve the steady temperature of each state (run_static.cpp): the deck keeps its
+// heat.
+TEST(DeckThermal, HeatInStaticSteps) {
   std::string deck = kThermalBox;
   deck.erase(deck.find("*TIME"), std::string("*TIME\n1.0e-3\n").size());
-  const InputError e = error_of(deck + "*STATIC\n2.0\n");
-  EXPECT_EQ(e.where().field, "thpid");
-  EXPECT_THAT(e.message(), HasSubstr("heat in static steps is not supported yet"));
+  const Model m = model_of(deck + "*STATIC\n2.0\n*BC_TEMPERATURE\nP, 1, 0, 80.0\n");
+  ASSERT_EQ(m.static_steps.size(), 1u);
+  EXPECT_EQ(m.thermal.prescribed.at(0).nodes.size(), 18u);
 }
 
 TEST(DeckThermal, InitialTemperature) {

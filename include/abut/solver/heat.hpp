@@ -20,6 +20,12 @@
 
 namespace abut {
 
+// Whether part `part_id` carries a temperature: its material has thermal properties (a thpid).
+bool is_thermal_part(const Model& model, std::int64_t part_id);
+// Per node, 1 when it carries a temperature: a node of a hexahedron or shell of a thermal part.
+// The one definition of the thermal nodes, for the heat solver and for the deck's conditions.
+std::vector<std::uint8_t> thermal_node_flags(const Model& model);
+
 // Heat balance since the start [energy]: stored = sum C (T - T0) over the thermal nodes; in =
 // what the face loads, the prescribed temperatures and the caller's sources brought in.
 struct HeatBalance {

@@ -83,11 +83,7 @@ struct HeatSolver::Impl {
     }
     for (const InitialTemperature& i : m.thermal.initial)
       for (const std::int32_t node : i.nodes) t[static_cast<std::size_t>(node)] = i.value;
-    thermal.assign(n, 0);
-    for (const Hex8& h : hexes)
-      for (const std::int32_t node : h) thermal[static_cast<std::size_t>(node)] = 1;
-    for (const ThermalShell& sh : shells)
-      for (const std::int32_t node : sh.nodes) thermal[static_cast<std::size_t>(node)] = 1;
+    thermal = thermal_node_flags(m);  // the nodes of `hexes` and `shells`
     if (!hexes.empty() || !shells.empty()) {
       block.emplace(std::move(hexes), std::move(k), std::move(rho_c), n, std::move(shells));
       const Nodes& x = mesh.nodes;
