@@ -1,7 +1,8 @@
 // Runs the static steps of a model and writes what a user opens afterwards:
 //   results.pvd + states/state_NNNN.vtu   one state per converged increment
 //   increments.csv                        step, increment, attempts, iterations, times, residual
-//   energy.csv, contact.csv               energies; per contact forces, energy, penetration
+//   energy.csv, contact.csv               energies; per contact forces, energy, penetration (and
+//                                         the heat flow with thermal contact)
 //   results.dat                           the *NODE/*EL/*CONTACT PRINT blocks (CalculiX layout)
 //   summary.json                          equations, increments, iterations, solve times
 #include <fmt/format.h>
@@ -17,7 +18,7 @@
 #include "abut/io/json_writer.hpp"
 #include "abut/io/run.hpp"
 #include "abut/io/vtu_writer.hpp"
-#include "abut/solver/heat.hpp"
+#include "abut/solver/static_heat.hpp"
 #include "abut/solver/static_solver.hpp"
 #include "io/static_print.hpp"
 
@@ -30,10 +31,9 @@ namespace fs = std::filesystem;
 // One ParaView state: displacement and nodal force (loads and reactions) at the nodes; per hex
 // the mean over its Gauss points of the stress tensor and of the von Mises stress, the largest
 // equivalent plastic strain of its points, and its strain energy.
-// With thermal properties also the steady temperature field of the state's loads at its time
-// on the deformed shape (HeatSolver::solve_steady; the heat does not act back on the mechanics).
+// With thermal properties also the steady temperature field of the state (static_heat.hpp).
 void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
-                 const StaticSolver& solver, double time, HeatSolver* heat) {
+                 const StaticSolver& solver, double time, const StaticHeat& heat) {
   const Mesh& mesh = model.mesh;
   const std::size_t n = mesh.nodes.size(), nh = mesh.hex_count();
   std::vector<double> x(n), y(n), z(n), part(nh), stress(6 * nh, 0.0), mises(nh, 0.0),
@@ -60,10 +60,7 @@ void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
   }
   std::vector<double> energy(solver.element_energy().begin(), solver.element_energy().end());
   std::vector<FieldView> points{{"displacement", 3, u}, {"force", 3, solver.nodal_force()}};
-  if (heat) {
-    heat->solve_steady(time, x, y, z, {});
-    points.push_back({"temperature", 1, heat->temperature()});
-  }
+  if (heat.active()) points.push_back({"temperature", 1, heat.temperature()});
   const std::vector<FieldView> cells{{"part_id", 1, part},
                                      {"stress", 6, stress},
                                      {"von_mises_stress", 1, mises},
@@ -76,8 +73,9 @@ void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
 
 // One contact.csv row per contact of the model (the explicit run's columns), summed over its
 // passes; a symmetric contact's second pass acts on surface 2, so its force counts negated.
+// With thermal contact, the heat flow of the state's steady temperature follows.
 void write_contact_rows(CsvHistory& csv, const Model& model, const StaticSolver& solver,
-                        double time) {
+                        const StaticHeat& heat, bool heat_column, double time) {
   const auto passes = solver.contacts();
   for (std::size_t i = 0; i < model.contacts.size(); ++i) {
     Vec3 force{};
@@ -99,8 +97,11 @@ void write_contact_rows(CsvHistory& csv, const Model& model, const StaticSolver&
         penetration = std::max(penetration, -p.gap);
       }
     }
-    csv.write_row(time, {model.contacts[i].id, force.x, force.y, force.z, normal, tangential,
-                         energy, friction, penetration, active});
+    std::vector<CsvHistory::Value> row{
+        model.contacts[i].id, force.x, force.y,  force.z,     normal,
+        tangential,           energy,  friction, penetration, active};
+    if (heat_column) row.emplace_back(heat.contact_heat_flow()[i]);
+    csv.write_row(time, row);
   }
 }
 
@@ -128,30 +129,38 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
                      model.mesh.nodes.size(), model.mesh.hex_count(), model.parts.size(),
                      model.contacts.size(), model.static_steps.size());
   log << "abut: writing results to " << dir.string() << "\n";
-  std::optional<HeatSolver> heat;
-  if (!model.thermal.properties.empty()) {
-    for (const ThermalProperties& p : model.thermal.properties)
-      if (p.expansion != 0.0)
-        throw InputError(p.where,
-                         "thermal expansion in static steps is not supported yet (the steady "
-                         "temperature of a static analysis does not act on the mechanics): give "
-                         "alpha = 0");
-    heat.emplace(model);
-    if (!heat->active()) heat.reset();
-    if (heat) log << "abut: steady heat conduction at every state (temperature in the states)\n";
-  }
-  HeatSolver* heat_field = heat ? &*heat : nullptr;
+  StaticHeat heat(model);
+  if (heat.active())
+    log << "abut: steady heat conduction at every state (temperature in the states)\n";
+  bool contact_heat = false;
+  for (const ContactSpec& c : model.contacts) contact_heat = contact_heat || c.exchanges_heat();
   PvdSeries series(dir / "results.pvd");
-  write_state(dir, series, model, solver, 0.0, heat_field);
+  // The reference state has no contact evaluated yet: a body that only contact would hold at a
+  // temperature has no steady one there and shows its initial temperature.
+  try {
+    heat.solve(solver, 0.0);
+  } catch (const InputError& e) {
+    log << "abut: the first state keeps the initial temperature (" << e.what() << ")\n";
+  }
+  write_state(dir, series, model, solver, 0.0, heat);
   CsvHistory increments(dir / "increments.csv",
                         {"step", "increment", "attempts", "iterations", "step_time", "residual"});
   CsvHistory energy(dir / "energy.csv", {"internal", "contact", "friction"});
   std::optional<CsvHistory> contact;
-  if (!model.contacts.empty())
-    contact.emplace(
-        dir / "contact.csv",
-        std::vector<std::string>{"contact", "fx", "fy", "fz", "normal_force", "tangential_force",
-                                 "energy", "friction_energy", "max_penetration", "active_points"});
+  if (!model.contacts.empty()) {
+    std::vector<std::string> columns{"contact",
+                                     "fx",
+                                     "fy",
+                                     "fz",
+                                     "normal_force",
+                                     "tangential_force",
+                                     "energy",
+                                     "friction_energy",
+                                     "max_penetration",
+                                     "active_points"};
+    if (contact_heat) columns.emplace_back("heat_flow");
+    contact.emplace(dir / "contact.csv", columns);
+  }
   std::ofstream printed(dir / "results.dat");
   RunReport report;
   const auto start = std::chrono::steady_clock::now();
@@ -163,9 +172,10 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
           {static_cast<std::int64_t>(inc.step + 1), static_cast<std::int64_t>(inc.increment),
            static_cast<std::int64_t>(inc.attempts), static_cast<std::int64_t>(inc.iterations),
            inc.step_time, inc.residual});
-      write_state(dir, series, model, solver, inc.total_time, heat_field);
+      heat.solve(solver, inc.total_time);
+      write_state(dir, series, model, solver, inc.total_time, heat);
       write_energy_row(energy, solver, inc.total_time);
-      if (contact) write_contact_rows(*contact, model, solver, inc.total_time);
+      if (contact) write_contact_rows(*contact, model, solver, heat, contact_heat, inc.total_time);
       print_static_results(printed, model, model.static_steps[inc.step], solver, inc);
       printed.flush();
       last_time = inc.total_time;
