@@ -79,6 +79,7 @@ void DeckReader::read_lines(const std::vector<std::string>& lines, const std::st
     const std::string text = trim(lines[i]);
     const std::size_t number = i + 1;
     if (text.empty() || text.front() == '#' || text.front() == '$') continue;
+    if (depth == 0) end_line = number;
     const SourceLocation here{name, number, keyword.value_or(""), ""};
     if (text.front() == '~') {
       throw InputError(here,
