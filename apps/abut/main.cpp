@@ -79,6 +79,8 @@ void print_info(const abut::Model& model, std::ostream& out) {
   out << fmt::format("contacts:   {}\n", model.contacts.size());
   for (const abut::ContactSpec& c : model.contacts)
     out << fmt::format("  {:>6}  {}\n", c.id, c.title.empty() ? "-" : c.title);
+  for (const abut::ContactReport& c : sim.contact_reports())
+    for (const std::string& w : c.warnings) out << "warning: " << w << "\n";
   out << fmt::format("boundary motions: {}, gravity loads: {}\n", model.motions.size(),
                      model.gravity.size());
 }
@@ -128,6 +130,8 @@ int main(int argc, char** argv) {
     }
     if (*check) {
       const abut::Simulation sim(model);
+      for (const abut::ContactReport& c : sim.contact_reports())
+        for (const std::string& w : c.warnings) std::cerr << "warning: " << w << "\n";
       std::cout << fmt::format(
           "{}: OK ({} nodes, {} hexahedra, {} shells, {} parts, initial stable step {:.4g})\n",
           deck, model.mesh.nodes.size(), model.mesh.hex_count(), model.mesh.shell_count(),

@@ -290,6 +290,9 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
     json.member("edge_contact", c.edge_rule);
     json.member("contact_points", static_cast<std::int64_t>(c.points));
     json.member("released_points", static_cast<std::int64_t>(c.released_points));
+    json.key("warnings").begin_array();
+    for (const std::string& w : c.warnings) json.value(w);
+    json.end_array();
     json.key("penalty_per_part").begin_array();
     for (const PartPenalty& p : c.parts) {
       json.begin_object()
@@ -350,6 +353,7 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
                          p.automatic ? " (automatic)" : "");
     log << fmt::format(", {} contact points ({}; {}; {}; {})\n", c.points, c.discretisation,
                        c.normal_law, c.tangential_law, c.stiffness_rule);
+    for (const std::string& w : c.warnings) log << "warning: " << w << "\n";
   }
   if (thermal_output::active(sim)) log << thermal_output::start_line(sim);
   log << "abut: writing results to " << options.output_dir.string() << "\n";

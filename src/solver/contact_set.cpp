@@ -15,6 +15,7 @@
 #include "abut/element/stable_step.hpp"
 #include "abut/mesh/skin.hpp"
 #include "abut/solver/contact_surfaces.hpp"
+#include "contact_checks.hpp"
 
 namespace abut {
 
@@ -491,6 +492,7 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
     report.pairs = interfaces_.back().pair_stiffness();
     report.points = interfaces_.back().point_count();
     report.released_points = interfaces_.back().released_points();
+    report.warnings = penalty_warnings(model, report);
     reports_.push_back(std::move(report));
   }
   cfx_.assign(nodes.size(), 0.0);
