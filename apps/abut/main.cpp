@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <filesystem>
 #include <iostream>
 #include <new>
@@ -174,9 +175,11 @@ int main(int argc, char** argv) {
     options.stop_requested = [] { return abut::interrupt::received() != 0; };
     const abut::RunReport report = abut::run_simulation(model, options, std::cout);
     if (report.interrupted) {
-      std::cerr << "abut: interrupted by signal " << abut::interrupt::received()
+      const int signal = abut::interrupt::received();
+      std::cerr << "abut: interrupted by "
+                << (signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal")
                 << "; the final state and summary.json are written\n";
-      return 128 + abut::interrupt::received();
+      return 128 + signal;
     }
     return report.stable ? 0 : 3;
   } catch (const abut::InputError& e) {
