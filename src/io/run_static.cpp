@@ -16,6 +16,7 @@
 
 #include "abut/io/csv_history.hpp"
 #include "abut/io/json_writer.hpp"
+#include "abut/io/output_directory.hpp"
 #include "abut/io/run.hpp"
 #include "abut/io/vtu_writer.hpp"
 #include "abut/solver/static_heat.hpp"
@@ -27,6 +28,9 @@ namespace abut {
 namespace {
 
 namespace fs = std::filesystem;
+
+// Thrown from the increment callback to leave StaticSolver::run when a stop is requested.
+struct StopRequested {};
 
 // One ParaView state: displacement and nodal force (loads and reactions) at the nodes; per hex
 // the mean over its Gauss points of the stress tensor and of the von Mises stress, the largest
@@ -123,13 +127,14 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
   if (options.threads > 0) omp_set_num_threads(options.threads);
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   const fs::path& dir = options.output_dir;
-  fs::create_directories(dir / "states");
   StaticSolver solver(model);
+  StaticHeat heat(model);  // input errors before the output directory is touched
+  const OutputDirectory output(dir);
+  fs::create_directories(dir / "states");
   log << fmt::format("abut: {} nodes, {} hexahedra, {} parts, {} contacts; {} static steps\n",
                      model.mesh.nodes.size(), model.mesh.hex_count(), model.parts.size(),
                      model.contacts.size(), model.static_steps.size());
-  log << "abut: writing results to " << dir.string() << "\n";
-  StaticHeat heat(model);
+  log << "abut: writing results to " << dir.string() << "\n" << std::flush;
   if (heat.active())
     log << "abut: steady heat conduction at every state (temperature in the states)\n";
   bool contact_heat = false;
@@ -184,7 +189,10 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
             "abut: step {} increment {} (t = {:.6g}): {} iterations{}\n", inc.step + 1,
             inc.increment, inc.total_time, inc.iterations,
             inc.attempts > 1 ? fmt::format(", {} cut-backs", inc.attempts - 1) : std::string());
+      if (options.stop_requested && options.stop_requested()) throw StopRequested{};
     });
+  } catch (const StopRequested&) {
+    report.interrupted = true;
   } catch (const InstabilityError& e) {
     report.stable = false;
     report.message = e.what();
@@ -199,7 +207,9 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
   json.begin_object();
   json.member("deck", model.deck_path);
   json.member("procedure", "static");
-  json.member("status", report.stable ? "completed" : "did not converge");
+  json.member("status", report.interrupted ? "interrupted"
+                        : report.stable    ? "completed"
+                                           : "did not converge");
   if (!report.stable) json.member("message", report.message);
   json.member("end_time", report.end_time).member("wall_seconds", report.wall_seconds);
   json.member("threads", threads);
@@ -211,7 +221,12 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
   json.member("linear_solver", st.linear_solver);
   json.end_object();
   json.write_file(dir / "summary.json");
-  if (report.stable) {
+  if (report.interrupted) {
+    log << fmt::format(
+        "abut: INTERRUPTED after {} increments at t = {:.6g} ({:.2f} s); that state is the last "
+        "of the ParaView series\n",
+        st.increments, last_time, report.wall_seconds);
+  } else if (report.stable) {
     log << fmt::format(
         "abut: completed {} steps in {} increments, {} iterations ({:.2f} per increment), "
         "{:.2f} s ({:.2f} s solving {} equations with {})\n",
@@ -225,7 +240,8 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
                        last_time);
   }
   log << "abut: ParaView series: " << report.pvd.string() << " (" << series.size()
-      << " states); printed results: " << (dir / "results.dat").string() << "\n";
+      << " states); printed results: " << (dir / "results.dat").string() << "\n"
+      << std::flush;
   return report;
 }
 
