@@ -9,7 +9,10 @@
 //   deck_fuzz [--seconds S] [--runs N] [--seed R] [--timeout T] [--memory-mb M] [--out DIR]
 //             CORPUS...      (files or folders; .inp files are read as Abaqus/CalculiX input)
 //
-// Exit code 0 when every mutant was accepted or rejected with file:line, 1 otherwise.
+// Exit code 0 when every mutant was accepted, rejected with file:line, too large for the memory
+// limit or slower than the time limit; 1 on any other finding. A timeout is listed with its input
+// but does not fail the run: a mutant that asks for millions of elements (a sphere's density
+// 3 -> 30) is slow by request, and a hang shows in the list as well.
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -333,7 +336,6 @@ int main(int argc, char** argv) {
     std::printf("finding (%ld x, first in %s): %s\n", f.first, f.second.c_str(), kind.c_str());
   const bool clean = counts[static_cast<int>(Result::unlocated)] == 0 &&
                      counts[static_cast<int>(Result::unexpected)] == 0 &&
-                     counts[static_cast<int>(Result::crash)] == 0 &&
-                     counts[static_cast<int>(Result::timeout)] == 0;
+                     counts[static_cast<int>(Result::crash)] == 0;
   return clean ? 0 : 1;
 }
