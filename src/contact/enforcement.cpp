@@ -67,22 +67,23 @@ ContactInterface::PointFrame ContactInterface::frame(const Side& side, std::size
   return r;
 }
 
-Partner ContactInterface::partner_of(const Pass& pass, std::size_t p, const PointFrame& f,
-                                     const ContactInput& in, std::int32_t previous) const {
-  const Side& own = sides_[pass.own];
-  const Side& target = sides_[pass.target];
-  const TargetFacets facets{target.surface.facets,
-                            target.sharp,
-                            target.active,
-                            target.depth,
-                            target.surface.twin,
-                            target.free_edges,
-                            target.facet_gap,
-                            target.facet_min_edge,
-                            in.x,
-                            in.y,
-                            in.z};
-  PartnerRules rules;  // the regular search: within the facets' own detection depth
+TargetFacets ContactInterface::target_facets(const Side& target, std::span<const double> depth,
+                                             const ContactInput& in) const {
+  return {target.surface.facets,
+          target.sharp,
+          target.active,
+          depth,
+          target.surface.twin,
+          target.free_edges,
+          target.facet_gap,
+          target.facet_min_edge,
+          in.x,
+          in.y,
+          in.z};
+}
+
+PartnerRules ContactInterface::partner_rules(const Side& own, std::size_t p) const {
+  PartnerRules rules;
   rules.depth_above = settings_.adhesion ? settings_.adhesion->zone() : 0.0;
   rules.point_gap = own.point_gap[p];
   rules.point_min_edge = own.point_min_edge[p];
@@ -100,6 +101,16 @@ Partner ContactInterface::partner_of(const Pass& pass, std::size_t p, const Poin
   rules.from_behind = settings_.sense == ContactSense::Negative;
   rules.edge_tolerance = settings_.edge_tolerance;
   rules.smooth_reach = smooth_reach_;
+  return rules;
+}
+
+Partner ContactInterface::partner_of(const Pass& pass, std::size_t p, const PointFrame& f,
+                                     const ContactInput& in, std::int32_t previous) const {
+  const Side& own = sides_[pass.own];
+  const Side& target = sides_[pass.target];
+  // The regular search: within the facets' own detection depth.
+  const TargetFacets facets = target_facets(target, target.depth, in);
+  PartnerRules rules = partner_rules(own, p);
   const auto first = pass.candidates.offsets[p], last = pass.candidates.offsets[p + 1];
   const Partner h = find_partner(facets, {pass.candidates.facets.data() + first, last - first},
                                  f.nodes, f.x, f.normal, rules);

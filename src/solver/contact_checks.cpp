@@ -46,4 +46,19 @@ std::vector<std::string> penalty_warnings(const Model& model, const ContactRepor
   return out;
 }
 
+std::vector<std::string> deep_start_warnings(std::int64_t contact_id,
+                                             std::span<const DeepStart> deep) {
+  std::vector<std::string> out;
+  for (const DeepStart& d : deep)
+    out.push_back(fmt::format(
+        "contact {}: {} contact point{} of part {} start{} inside part {}, up to {:.3g} deep, "
+        "below the detection depth {:.3g}: the contact search does not reach {}, so nothing "
+        "pushes {} out. Move the parts apart, or give a larger detection depth (depth of "
+        "*CONTACT_NORMAL)",
+        contact_id, d.points, d.points == 1 ? "" : "s", d.part, d.points == 1 ? "s" : "",
+        d.other_part, d.deepest, d.detection_depth, d.points == 1 ? "it" : "them",
+        d.points == 1 ? "it" : "them"));
+  return out;
+}
+
 }  // namespace abut

@@ -493,6 +493,9 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
     report.points = interfaces_.back().point_count();
     report.released_points = interfaces_.back().released_points();
     report.warnings = penalty_warnings(model, report);
+    for (std::string& w :
+         deep_start_warnings(spec.id, interfaces_.back().deep_initial_points(initial)))
+      report.warnings.push_back(std::move(w));
     reports_.push_back(std::move(report));
   }
   cfx_.assign(nodes.size(), 0.0);

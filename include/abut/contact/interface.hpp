@@ -70,6 +70,17 @@ struct PairStiffness {
   double penalty_min = 0.0, penalty_max = 0.0;
 };
 
+// Contact points that start deeper inside the other surface than the detection depth of their
+// pair: the search never finds them, so nothing pushes them out (a start-up check, issue 13).
+// One entry per (part of the points, part they are inside).
+struct DeepStart {
+  std::int64_t part = 0;
+  std::int64_t other_part = 0;
+  std::size_t points = 0;
+  double deepest = 0.0;          // the deepest of them [length]
+  double detection_depth = 0.0;  // the largest detection depth of their pairs [length]
+};
+
 class ContactInterface {
  public:
   // `node_mass` and the coordinates of `initial` are indexed by node like the facets' nodes.
@@ -102,7 +113,11 @@ class ContactInterface {
   bool self_contact() const { return sides_.size() == 1; }
   std::size_t point_count() const;
   std::size_t released_points() const;  // initially deeper than delta0_max
-  std::size_t tied_points() const;      // currently tied (sticking or freeze)
+  // Points of `initial` (the configuration the interface was built with) lying inside the other
+  // surface's first layer of elements, deeper than the detection depth (initial_check.cpp).
+  // Empty for self contact, where a point faces its own body's far side within that layer.
+  std::vector<DeepStart> deep_initial_points(const ContactInput& initial) const;
+  std::size_t tied_points() const;  // currently tied (sticking or freeze)
   std::size_t broad_phase_builds() const { return builds_; }
   std::size_t contact_edges() const { return edges_ ? edges_->edge_count() : 0; }
   double search_margin() const { return margin_; }
@@ -200,6 +215,11 @@ class ContactInterface {
   void rebuild_broad_phase(const ContactInput& in);
   bool needs_rebuild(const ContactInput& in) const;
   PointFrame frame(const Side& side, std::size_t p, const ContactInput& in) const;
+  // The narrow phase's view of a side's facets with a detection depth per facet, and its rules for
+  // point p (enforcement.cpp).
+  TargetFacets target_facets(const Side& target, std::span<const double> depth,
+                             const ContactInput& in) const;
+  PartnerRules partner_rules(const Side& own, std::size_t p) const;
   // The partner among the broad-phase candidates; failing that, near `previous` (last step's
   // partner, or -1).
   Partner partner_of(const Pass& pass, std::size_t p, const PointFrame& f, const ContactInput& in,
