@@ -176,6 +176,7 @@ DeckResult DeckReader::finish() {
   // adjustment and initial velocities take them up.
   resolve_shell_nodes();
   merge_duplicated_nodes();
+  check_element_volumes();
   resolve_shells();
 
   // Rotations are degrees of freedom of rigid parts and of shell nodes.

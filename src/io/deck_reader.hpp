@@ -213,6 +213,10 @@ class DeckReader {
   // deck_finalize_merge.cpp: *MERGE_DUPLICATED_NODES, once element nodes, node sets and shell
   // nodes are resolved and before anything else stores node indices; remaps the node sets.
   void merge_duplicated_nodes();
+  // deck_finalize_elements.cpp: every hex has a positive initial volume, else an InputError at
+  // its *ELEMENT_SOLID row or generator keyword naming the element and node ids. After the merge
+  // (which may flatten a hex) and before refinement (which needs sound hexes).
+  void check_element_volumes() const;
   // Records an id of a kind (e.g. "component"); a second use is an error naming the first.
   void claim_id(const std::string& kind, std::int64_t id, const SourceLocation& where);
   // Index of a node id, or -1.

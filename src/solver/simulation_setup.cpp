@@ -68,9 +68,15 @@ void Simulation::Impl::setup() {
     } else {
       if (!part_hexes.empty()) {
         std::vector<Hex8> hexes;
+        std::vector<std::int64_t> ids;  // messages name the user's element ids
         hexes.reserve(part_hexes.size());
-        for (const std::int32_t e : part_hexes) hexes.push_back(mesh.hexes[e]);
+        ids.reserve(part_hexes.size());
+        for (const std::int32_t e : part_hexes) {
+          hexes.push_back(mesh.hexes[e]);
+          ids.push_back(mesh.hex_id[e]);
+        }
         blocks.emplace_back(part.id, material, std::move(hexes), mesh.nodes, &model.functions);
+        blocks.back().set_element_ids(std::move(ids));
         blocks.back().set_erosion(part.erosion);
         blocks.back().add_lumped_mass(part_mass);
         block_hex_index.push_back(part_hexes);

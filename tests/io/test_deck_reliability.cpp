@@ -1,0 +1,60 @@
+// Decks that used to run to a silent wrong result or fail without a location (issue 13): each is
+// now an InputError at the file and line that causes it.
+#include <gmock/gmock.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "test_deck_helpers.hpp"
+
+namespace abut {
+namespace {
+
+using testing::error_of;
+using ::testing::HasSubstr;
+using testing::kBoxModel;
+using testing::read;
+
+// One hex whose top face (nodes 5-8) lies below its bottom face: inside out. Line 13 is the
+// *ELEMENT_SOLID row.
+std::string inverted_hex(const char* material) {
+  return std::string(
+             "*TIME\n1\n*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 1, 1, 0\n4, 0, 1, 0\n"
+             "5, 0, 0, -1\n6, 1, 0, -1\n7, 1, 1, -1\n8, 0, 1, -1\n*ELEMENT_SOLID\n"
+             "12, 1, 1, 2, 3, 4, 5, 6, 7, 8\n") +
+         material + "*PART\n1, 1\n";
+}
+
+TEST(DeckReliability, InvertedHexOfARigidPartIsLocated) {
+  const InputError e = error_of(inverted_hex("*MAT_RIGID\n1, 7800\n"));
+  EXPECT_EQ(e.where().file, "t.k");
+  EXPECT_EQ(e.where().line, 13u);
+  EXPECT_EQ(e.where().keyword, "*ELEMENT_SOLID");
+  EXPECT_THAT(e.message(), HasSubstr("element 12 (nodes 1, 2, 3, 4, 5, 6, 7, 8)"));
+  EXPECT_THAT(e.message(), HasSubstr("inverted"));
+  EXPECT_THAT(e.message(), HasSubstr("n1-n4"));
+}
+
+TEST(DeckReliability, InvertedHexOfADeformablePartNamesTheUsersIds) {
+  const InputError e = error_of(inverted_hex("*MAT_ELASTIC\n1, 7800, 2e11, 0.3\n"));
+  EXPECT_EQ(e.where().line, 13u);
+  EXPECT_THAT(e.message(), HasSubstr("element 12 (nodes 1, 2, 3, 4, 5, 6, 7, 8)"));
+  EXPECT_THAT(e.message(), ::testing::Not(HasSubstr("index")));
+}
+
+TEST(DeckReliability, FlatHexIsLocated) {
+  // Nodes 5-8 on top of 1-4: no volume.
+  const std::string deck =
+      "*TIME\n1\n*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 1, 1, 0\n4, 0, 1, 0\n"
+      "5, 0, 0, 0\n6, 1, 0, 0\n7, 1, 1, 0\n8, 0, 1, 0\n*ELEMENT_SOLID\n"
+      "3, 1, 1, 2, 3, 4, 5, 6, 7, 8\n*MAT_RIGID\n1, 7800\n*PART\n1, 1\n";
+  const InputError e = error_of(deck);
+  EXPECT_EQ(e.where().line, 13u);
+  EXPECT_THAT(e.message(), HasSubstr("element 3"));
+  EXPECT_THAT(e.message(), HasSubstr("degenerate"));
+}
+
+}  // namespace
+}  // namespace abut
