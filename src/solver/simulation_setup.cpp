@@ -1,4 +1,7 @@
+#include <fmt/format.h>
+
 #include <array>
+#include <cmath>
 #include <map>
 #include <string>
 
@@ -103,6 +106,7 @@ void Simulation::Impl::setup() {
         info.shell_block = static_cast<std::int32_t>(shell_blocks.size() - 1);
       }
     }
+    check_part_mass(part, part_mass, info.rigid);
     for (std::size_t i = 0; i < n_nodes; ++i) {
       if (part_mass[i] > 0.0) {
         info.nodes.push_back(static_cast<std::int32_t>(i));
@@ -208,8 +212,35 @@ void Simulation::Impl::setup() {
   couple_heat();
   compute_forces(0.0);
   dt_initial = std::min(model.time.step_scale * stable, model.time.max_step);
+  // A step of 0 or NaN would end the run at once with "completed 0 cycles": the input (a
+  // density so small that a contact spring's mass vanishes, ...) cannot be run.
+  if (!(dt_initial > 0.0))
+    throw InputError(limit_location(),
+                     fmt::format("the initial stable time step is {:.4g} (limited by {}): it must "
+                                 "be > 0; check the densities, moduli and contact stiffness",
+                                 dt_initial, limit_description()));
   kick();
   total0 = energy.total();
+}
+
+// The lumped mass a part gives its nodes must be finite, and a rigid part must have some: a
+// density of 1e308 overflows, a rigid part without mass has no centre of mass; both would run
+// on as infinities and NaN.
+void Simulation::Impl::check_part_mass(const Part& part, const std::vector<double>& part_mass,
+                                       bool rigid) const {
+  double total = 0.0;
+  for (const double m : part_mass) total += m;
+  if (std::isfinite(total) && (total > 0.0 || !rigid)) return;
+  const Material* material = model.find_material(part.material_id);
+  const std::string density =
+      material ? fmt::format("density {:.4g} of material {} at {}:{}",
+                             density_of(material->params), material->id, material->where.file,
+                             material->where.line)
+               : std::string("its density");
+  throw InputError(part.where,
+                   fmt::format("part {} has {} mass {:.4g} (from {}); expected a finite, positive "
+                               "mass: check the density and the element volumes",
+                               part.id, rigid ? "rigid" : "lumped", total, density));
 }
 
 // A contact that exchanges heat needs a temperature on both its surfaces.

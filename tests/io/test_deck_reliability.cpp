@@ -7,6 +7,7 @@
 #include <fstream>
 #include <string>
 
+#include "abut/solver/simulation.hpp"
 #include "test_deck_helpers.hpp"
 
 namespace abut {
@@ -25,6 +26,17 @@ std::string inverted_hex(const char* material) {
              "5, 0, 0, -1\n6, 1, 0, -1\n7, 1, 1, -1\n8, 0, 1, -1\n*ELEMENT_SOLID\n"
              "12, 1, 1, 2, 3, 4, 5, 6, 7, 8\n") +
          material + "*PART\n1, 1\n";
+}
+
+InputError simulation_error(const std::string& text) {
+  try {
+    const Model m = testing::model_of(text);
+    const Simulation sim(m);
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "expected an InputError for:\n" << text;
+  return InputError("no error");
 }
 
 TEST(DeckReliability, InvertedHexOfARigidPartIsLocated) {
@@ -54,6 +66,53 @@ TEST(DeckReliability, FlatHexIsLocated) {
   EXPECT_EQ(e.where().line, 13u);
   EXPECT_THAT(e.message(), HasSubstr("element 3"));
   EXPECT_THAT(e.message(), HasSubstr("degenerate"));
+}
+
+TEST(DeckReliability, DensityThatOverflowsTheMassIsLocatedAtThePart) {
+  std::string deck(kBoxModel);
+  deck.replace(deck.find("7800.0"), 6, "1e308");
+  const InputError e = simulation_error(deck);
+  EXPECT_EQ(e.where().line, 12u);  // the *PART row
+  EXPECT_THAT(e.message(), HasSubstr("part 1"));
+  EXPECT_THAT(e.message(), HasSubstr("density 1e+308 of material 1 at t.k:9"));
+}
+
+TEST(DeckReliability, RigidPartWithAnOverflowingMassIsLocated) {
+  std::string deck(kBoxModel);
+  const std::string elastic = "*MAT_ELASTIC\n1, 7800.0, 210.0e9, 0.3";
+  deck.replace(deck.find(elastic), elastic.size(), "*MAT_RIGID\n1, 1e308");
+  const InputError e = simulation_error(deck);
+  EXPECT_EQ(e.where().line, 12u);
+  EXPECT_THAT(e.message(), HasSubstr("rigid mass"));
+}
+
+// A rigid block of negligible density pressed on by contact: its contact spring has no mass,
+// so the step is 0 and the run would end at once.
+TEST(DeckReliability, ZeroInitialStepIsAnInputErrorNamingTheContact) {
+  const std::string deck = R"(*UNIT_SYSTEM
+SI
+*TIME
+1.0e-3
+*COMPONENT_BOX
+1, 1, 2, 2, 1
+0.0, 0.0, 0.0, 2.0, 2.0, 1.0
+*COMPONENT_BOX
+2, 2, 1, 1, 1
+0.0, 0.0, 1.0, 1.0, 1.0, 2.0
+*MAT_ELASTIC
+1, 7800.0, 210.0e9, 0.3
+*MAT_RIGID
+2, 1e-320
+*PART
+1, 1
+2, 2
+*CONTACT
+3
+P, 1, P, 2
+)";
+  const InputError e = simulation_error(deck);
+  EXPECT_THAT(e.what(), HasSubstr("t.k:"));
+  EXPECT_THAT(e.message(), HasSubstr("initial stable time step"));
 }
 
 }  // namespace
