@@ -4,6 +4,7 @@
 // thermal keywords get their nodes and faces (deck_finalize_thermal.cpp); last, a deck with
 // *STATIC gets its static steps' loads (deck_finalize_static.cpp).
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -276,6 +277,19 @@ DeckResult DeckReader::finish() {
         const auto uk = static_cast<std::size_t>(k);
         velocity[k] +=
             fcn[uk].valid() ? model.functions.value(fcn[uk], vars) : v.velocity[uk].value;
+        // A NaN or infinite start (acos(2), 1/0 in a *FUNCTION) is an error of the deck, not an
+        // instability of the run: say which field, function and node gave it.
+        if (!std::isfinite(velocity[k])) {
+          const std::string source =
+              fcn[uk].valid() ? "function " + std::to_string(*v.velocity[uk].function_id)
+                              : std::string("omega x (x - x0)");
+          throw InputError(v.velocity_where[uk],
+                           source + " gives a non-finite initial velocity (" +
+                               format_number(velocity[k]) + ") at node " +
+                               std::to_string(mesh.nodes.id[static_cast<std::size_t>(i)]) +
+                               " (" + format_number(p.x) + ", " + format_number(p.y) + ", " +
+                               format_number(p.z) + ")");
+        }
       }
       model.vx0[static_cast<std::size_t>(i)] = velocity.x;
       model.vy0[static_cast<std::size_t>(i)] = velocity.y;

@@ -115,5 +115,17 @@ P, 1, P, 2
   EXPECT_THAT(e.message(), HasSubstr("initial stable time step"));
 }
 
+TEST(DeckReliability, NonFiniteInitialVelocityFromAFunctionIsLocated) {
+  for (const char* expression : {"acos(2)", "1/0"}) {
+    const std::string deck = std::string(kBoxModel) + "*FUNCTION\n4\n" + expression +
+                             "\n*INITIAL_VELOCITY\nP, 1, 0, fcn(4), 0\n";
+    const InputError e = error_of(deck);
+    EXPECT_EQ(e.where().line, 17u) << expression;
+    EXPECT_EQ(e.where().keyword, "*INITIAL_VELOCITY");
+    EXPECT_EQ(e.where().field, "v_y0");
+    EXPECT_THAT(e.message(), HasSubstr("function 4 gives a non-finite initial velocity"));
+  }
+}
+
 }  // namespace
 }  // namespace abut
