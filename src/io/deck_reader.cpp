@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace abut {
@@ -136,9 +137,18 @@ void DeckReader::read_include(Block& block, int depth) {
     }
     std::int64_t* targets[] = {&offsets.node, &offsets.element, &offsets.part, &offsets.material,
                                &offsets.other};
+    const std::int64_t* outer[] = {&frame().offsets.node, &frame().offsets.element,
+                                   &frame().offsets.part, &frame().offsets.material,
+                                   &frame().offsets.other};
     for (std::size_t k = 3; k < 8; ++k) {
       *targets[k - 3] = r->integer_or(k, 0);
       r->require(*targets[k - 3] >= 0, k, "expected an offset >= 0");
+      // Nested includes add their offsets: the sum must still fit (it would wrap silently).
+      std::int64_t total = 0;
+      if (__builtin_add_overflow(*targets[k - 3], *outer[k - 3], &total))
+        r->fail(k, "this offset plus the enclosing *INCLUDE's offset " +
+                       std::to_string(*outer[k - 3]) + " exceeds the largest id " +
+                       std::to_string(std::numeric_limits<std::int64_t>::max()));
     }
   }
   if (auto r = block.optional_row({"x0", "y0", "z0", "x1", "y1", "z1"})) {
@@ -185,15 +195,26 @@ void DeckReader::read_include(Block& block, int depth) {
   read_file(path, child, depth + 1);
 }
 
+std::int64_t DeckReader::offset_id(const Row& r, std::size_t i, std::int64_t id,
+                                   std::int64_t offset) {
+  std::int64_t sum = 0;
+  if (__builtin_add_overflow(id, offset, &sum))
+    r.fail(i, "id " + std::to_string(id) + " plus the *INCLUDE id offset " +
+                  std::to_string(offset) + " exceeds the largest id " +
+                  std::to_string(std::numeric_limits<std::int64_t>::max()));
+  return sum;
+}
+
 std::optional<std::int64_t> DeckReader::optional_other_id(const Row& r, std::size_t i) const {
   const auto id = r.optional_id(i);
   if (!id) return std::nullopt;
-  return *id + frame().offsets.other;
+  return offset_id(r, i, *id, frame().offsets.other);
 }
 
-std::optional<std::int64_t> DeckReader::function_id(const Row::NumberOrFunction& v) const {
+std::optional<std::int64_t> DeckReader::function_id(const Row& r, std::size_t i,
+                                                    const Row::NumberOrFunction& v) const {
   if (!v.function_id) return std::nullopt;
-  return *v.function_id + frame().offsets.other;
+  return offset_id(r, i, *v.function_id, frame().offsets.other);
 }
 
 EntityRef DeckReader::entity(const Row& r, std::size_t type_field, std::size_t id_field,

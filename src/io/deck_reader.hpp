@@ -162,20 +162,29 @@ class DeckReader {
 
   const IncludeFrame& frame() const { return frames_.back(); }
 
-  // Ids read from a row with the current include offsets applied.
-  std::int64_t node_id(const Row& r, std::size_t i) const { return r.id(i) + frame().offsets.node; }
-  std::int64_t element_id(const Row& r, std::size_t i) const {
-    return r.id(i) + frame().offsets.element;
+  // Ids read from a row with the current include offsets applied; an id that the offset pushes
+  // past the largest integer is an InputError at the field.
+  std::int64_t node_id(const Row& r, std::size_t i) const {
+    return offset_id(r, i, r.id(i), frame().offsets.node);
   }
-  std::int64_t part_id(const Row& r, std::size_t i) const { return r.id(i) + frame().offsets.part; }
+  std::int64_t element_id(const Row& r, std::size_t i) const {
+    return offset_id(r, i, r.id(i), frame().offsets.element);
+  }
+  std::int64_t part_id(const Row& r, std::size_t i) const {
+    return offset_id(r, i, r.id(i), frame().offsets.part);
+  }
   std::int64_t material_id(const Row& r, std::size_t i) const {
-    return r.id(i) + frame().offsets.material;
+    return offset_id(r, i, r.id(i), frame().offsets.material);
   }
   std::int64_t other_id(const Row& r, std::size_t i) const {
-    return r.id(i) + frame().offsets.other;
+    return offset_id(r, i, r.id(i), frame().offsets.other);
   }
+  // id + offset, or an InputError at field i of r when the sum does not fit in 64 bits.
+  static std::int64_t offset_id(const Row& r, std::size_t i, std::int64_t id, std::int64_t offset);
   std::optional<std::int64_t> optional_other_id(const Row& r, std::size_t i) const;
-  std::optional<std::int64_t> function_id(const Row::NumberOrFunction& v) const;
+  // The fid of a `fcn(fid)` field i of r (its value v), offset; empty for a number.
+  std::optional<std::int64_t> function_id(const Row& r, std::size_t i,
+                                          const Row::NumberOrFunction& v) const;
 
   // An `entype, enid` pair; `allowed` lists the types the command accepts.
   EntityRef entity(const Row& r, std::size_t type_field, std::size_t id_field,

@@ -127,5 +127,44 @@ TEST(DeckReliability, NonFiniteInitialVelocityFromAFunctionIsLocated) {
   }
 }
 
+TEST(DeckReliability, IncludeIdOffsetThatOverflowsIsLocated) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "abut_test_include_offset";
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream part(dir / "part.k");
+    part << "*NODE\n1, 0, 0, 0\n";
+  }
+  {
+    std::ofstream main(dir / "main.k");
+    main << "*TIME\n1\n*INCLUDE\npart.k\n1, 1, 1, 9223372036854775807\n";
+  }
+  try {
+    read_deck((dir / "main.k").string());
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().file, (dir / "part.k").string());
+    EXPECT_EQ(e.where().line, 2u);
+    EXPECT_EQ(e.where().field, "nid");
+    EXPECT_THAT(e.message(), HasSubstr("exceeds the largest id"));
+  }
+  {
+    // Nested includes add their offsets: the sum overflows at the inner *INCLUDE.
+    std::ofstream middle(dir / "middle.k");
+    middle << "*INCLUDE\npart.k\n1, 1, 1, 9223372036854775000\n";
+    std::ofstream main(dir / "main.k");
+    main << "*TIME\n1\n*INCLUDE\nmiddle.k\n1, 1, 1, 1000\n";
+  }
+  try {
+    read_deck((dir / "main.k").string());
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().file, (dir / "middle.k").string());
+    EXPECT_EQ(e.where().line, 3u);
+    EXPECT_EQ(e.where().field, "nid_offset");
+  }
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace abut
