@@ -13,11 +13,22 @@ namespace {
 
 constexpr int kMaxIncludeDepth = 32;
 
-std::vector<std::string> split_lines(const std::string& text) {
+// Lines end at LF, CRLF or a lone CR (classic Mac OS), so that no CR reaches a message. A UTF-8
+// byte-order mark that some Windows editors write at the start of a file is not part of the deck.
+std::vector<std::string> split_lines(std::string_view text) {
+  constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+  if (text.starts_with(kByteOrderMark)) text.remove_prefix(kByteOrderMark.size());
   std::vector<std::string> lines;
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line)) lines.push_back(line);
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = text.find_first_of("\r\n", start);
+    if (end == std::string_view::npos) {
+      lines.emplace_back(text.substr(start));
+      break;
+    }
+    lines.emplace_back(text.substr(start, end - start));
+    start = end + (text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n' ? 2 : 1);
+  }
   return lines;
 }
 
@@ -44,6 +55,10 @@ std::string entity_word(EntityType t) {
 }
 
 void DeckReader::read_file(const fs::path& path, const IncludeFrame& frame, int depth) {
+  // A device or a pipe (/dev/zero) may never end: a deck is a regular file.
+  std::error_code regular_ec;
+  if (fs::exists(path, regular_ec) && !fs::is_regular_file(path, regular_ec))
+    throw InputError("'" + path.string() + "' is not a regular file: a deck must be a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot open deck file '" + path.string() + "'");
   std::ostringstream text;
@@ -77,8 +92,15 @@ void DeckReader::read_lines(const std::vector<std::string>& lines, const std::st
     return true;
   };
   for (std::size_t i = 0; i < lines.size(); ++i) {
-    const std::string text = trim(lines[i]);
     const std::size_t number = i + 1;
+    // A line this long is not a deck line (a binary file, a missing line end): refuse it before
+    // anything searches or echoes it.
+    if (lines[i].size() > kMaxLineLength)
+      throw InputError(SourceLocation{name, number, "", ""},
+                       "line of " + std::to_string(lines[i].size()) +
+                           " characters; deck lines are at most " +
+                           std::to_string(kMaxLineLength) + " characters long");
+    const std::string text = trim(lines[i]);
     if (text.empty() || text.front() == '#' || text.front() == '$') continue;
     const SourceLocation here{name, number, keyword.value_or(""), ""};
     if (text.front() == '~') {
@@ -97,7 +119,8 @@ void DeckReader::read_lines(const std::vector<std::string>& lines, const std::st
       }
       continue;
     }
-    if (!keyword) throw InputError(here, "data line before the first *KEYWORD: '" + text + "'");
+    if (!keyword)
+      throw InputError(here, "data line before the first *KEYWORD: '" + excerpt(text) + "'");
     data.push_back({text, number});
   }
   flush();
@@ -116,7 +139,7 @@ void DeckReader::dispatch(Block& block, int depth) {
   }
   if (is_known_impetus_keyword(kw))
     throw InputError(block.where(), kw + " is not supported yet by abut");
-  std::string message = "unknown keyword " + kw;
+  std::string message = "unknown keyword " + excerpt(kw);
   if (const auto suggestion = closest_keyword(kw)) message += "; did you mean " + *suggestion + "?";
   throw InputError(SourceLocation{block.file(), block.where().line, "", ""}, message);
 }

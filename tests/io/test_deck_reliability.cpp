@@ -166,5 +166,57 @@ TEST(DeckReliability, IncludeIdOffsetThatOverflowsIsLocated) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(DeckReliability, ByteOrderMarkAndOldLineEndsAreAccepted) {
+  std::string crlf, cr;
+  for (const char c : std::string(kBoxModel)) {
+    crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+    cr += c == '\n' ? '\r' : c;
+  }
+  for (const std::string& text : {"\xEF\xBB\xBF" + std::string(kBoxModel), crlf, cr}) {
+    const Model m = read(text).model;
+    EXPECT_EQ(m.mesh.hex_count(), 4u);
+  }
+  // Lines are counted the same way with every line end: the error is on line 13.
+  for (const std::string ending : {"\r\n", "\r"}) {
+    std::string deck;
+    for (const char c : std::string(kBoxModel) + "*COMPONENT_BXO\n")
+      deck += c == '\n' ? ending : std::string(1, c);
+    const InputError e = error_of("\xEF\xBB\xBF" + deck);
+    EXPECT_EQ(e.where().line, 13u);
+    EXPECT_EQ(e.message(), "unknown keyword *COMPONENT_BXO; did you mean *COMPONENT_BOX?");
+  }
+}
+
+TEST(DeckReliability, OverlongLineIsRefusedWithoutEchoingIt) {
+  const std::string line(100000, 'A');
+  const InputError e = error_of("*TIME\n1\n*" + line + "\n");
+  EXPECT_EQ(e.where().line, 3u);
+  EXPECT_THAT(e.message(), HasSubstr("at most 65536 characters"));
+  EXPECT_LT(std::string(e.what()).size(), 200u);
+}
+
+TEST(DeckReliability, LongUnknownKeywordIsQuickAndTruncated) {
+  const std::string keyword = "*" + std::string(60000, 'B');
+  const auto start = std::chrono::steady_clock::now();
+  const InputError e = error_of("*TIME\n1\n" + keyword + "\n");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 1.0);
+  EXPECT_THAT(e.message(), HasSubstr("(60001 characters)"));
+  EXPECT_LT(std::string(e.what()).size(), 200u);
+  // A long field is echoed in part.
+  const InputError f = error_of("*TIME\n" + std::string(5000, '7') + "x\n");
+  EXPECT_LT(std::string(f.what()).size(), 300u);
+}
+
+TEST(DeckReliability, DeviceIsNotADeck) {
+  try {
+    read_deck("/dev/zero");
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.message(), HasSubstr("not a regular file"));
+  }
+}
+
 }  // namespace
 }  // namespace abut
