@@ -2,7 +2,6 @@
 // refinement: an inverted or flat hex is an error of the deck at the line that wrote it (or at
 // the generator keyword), for rigid parts as for deformable ones. A rigid part has no element
 // block that would find it later, and its mass and centre of mass would silently become 0 and NaN.
-#include <algorithm>
 #include <cmath>
 
 #include "abut/mesh/skin.hpp"
@@ -11,15 +10,22 @@
 namespace abut::deck {
 namespace {
 
-// The longest edge of the hex: the scale against which a volume counts as zero.
-double longest_edge(const Nodes& nodes, const Hex8& hex) {
-  static constexpr int kEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
-                                        {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
-  double longest = 0.0;
-  for (const auto& e : kEdges)
-    longest = std::max(longest, norm(nodes.position(static_cast<std::size_t>(hex[e[1]])) -
-                                     nodes.position(static_cast<std::size_t>(hex[e[0]]))));
-  return longest;
+// The product of the mean edge lengths along the three directions of the hex: the volume of
+// the box it spans, against which its volume counts as zero (a slender hex, 1e6 x 0.005 x 0.005,
+// is not flat).
+double spanned_volume(const Nodes& nodes, const Hex8& hex) {
+  static constexpr int kEdges[3][4][2] = {{{0, 1}, {3, 2}, {4, 5}, {7, 6}},
+                                          {{0, 3}, {1, 2}, {4, 7}, {5, 6}},
+                                          {{0, 4}, {1, 5}, {2, 6}, {3, 7}}};
+  double product = 1.0;
+  for (const auto& direction : kEdges) {
+    double sum = 0.0;
+    for (const auto& e : direction)
+      sum += norm(nodes.position(static_cast<std::size_t>(hex[e[1]])) -
+                  nodes.position(static_cast<std::size_t>(hex[e[0]])));
+    product *= 0.25 * sum;
+  }
+  return product;
 }
 
 }  // namespace
@@ -34,9 +40,9 @@ void DeckReader::check_element_volumes() const {
   for (std::size_t h = 0; h < mesh.hex_count(); ++h) {
     const Hex8& hex = mesh.hexes[h];
     const double volume = hex_volume(mesh.nodes, hex);
-    const double edge = longest_edge(mesh.nodes, hex);
-    // Round-off in the coordinates of a flat hex leaves a volume of ~1e-16 edge^3, either sign.
-    if (volume > 1e-12 * edge * edge * edge && std::isfinite(volume)) continue;
+    // Round-off in the coordinates of a flat hex leaves a volume of ~1e-16 of the box it spans,
+    // either sign.
+    if (volume > 1e-12 * spanned_volume(mesh.nodes, hex) && std::isfinite(volume)) continue;
     std::string nodes;
     for (const std::int32_t n : hex)
       nodes.append(nodes.empty() ? "" : ", ")
