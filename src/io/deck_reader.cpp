@@ -5,6 +5,8 @@
 #include <limits>
 #include <sstream>
 
+#include "memory_budget.hpp"
+
 namespace abut {
 namespace fs = std::filesystem;
 
@@ -289,8 +291,13 @@ void DeckReader::require_unrotated(const SourceLocation& where, const std::strin
   }
 }
 
-void DeckReader::generate(const std::function<void()>& generator, const SourceLocation& where) {
+void DeckReader::generate(const std::function<void()>& generator, const SourceLocation& where,
+                          const MeshSize& size) {
   Mesh& mesh = model.mesh;
+  const MeshSize total{
+      static_cast<double>(mesh.hex_count() + mesh.shell_count()) + size.elements,
+      static_cast<double>(mesh.nodes.size()) + size.nodes};
+  require_memory(total, available_memory(), where);
   const std::size_t first_node = mesh.nodes.size();
   const std::size_t first_hex = mesh.hex_count();
   const std::size_t first_shell = mesh.shell_count();

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "abut/io/deck.hpp"
+#include "abut/mesh/generators.hpp"
 #include "deck_block.hpp"
 #include "deck_parameters.hpp"
 #include "deck_text.hpp"
@@ -193,8 +194,10 @@ class DeckReader {
   void require_unrotated(const SourceLocation& where, const std::string& what) const;
 
   // Runs a mesh generator, adds the command's location to its errors and records the new
-  // nodes and hexes.
-  void generate(const std::function<void()>& generator, const SourceLocation& where);
+  // nodes and hexes. `size` is what the generator will add: refused first, at `where`, when the
+  // whole mesh would not fit in the available memory (memory_budget.hpp).
+  void generate(const std::function<void()>& generator, const SourceLocation& where,
+                const MeshSize& size);
   // Adds one *NODE; duplicate ids are an error.
   void add_node(std::int64_t id, const Vec3& p, std::uint8_t fixed, const SourceLocation& where);
   // Adds one hex of *ELEMENT_SOLID (nodes resolved later).

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "abut/solver/simulation.hpp"
+#include "../../src/io/memory_budget.hpp"
 #include "test_deck_helpers.hpp"
 
 namespace abut {
@@ -216,6 +217,49 @@ TEST(DeckReliability, DeviceIsNotADeck) {
   } catch (const InputError& e) {
     EXPECT_THAT(e.message(), HasSubstr("not a regular file"));
   }
+}
+
+TEST(DeckReliability, SlenderAndFarComponentsKeepTheirNodes) {
+  // 10 000 km long, 1 cm square: the merge tolerance follows the 5 mm spacing, not the length.
+  const Model bar = read(
+      "*TIME\n1\n*COMPONENT_BOX\n1, 1, 10, 2, 2\n0, 0, 0, 1e7, 0.01, 0.01\n"
+      "*MAT_ELASTIC\n1, 7800, 2e11, 0.3\n*PART\n1, 1\n")
+                        .model;
+  EXPECT_EQ(bar.mesh.nodes.size(), 99u);
+  // A 1 cm sphere 100 km up has the nodes of the same sphere at the origin.
+  const std::string sphere = "*TIME\n1\n*COMPONENT_SPHERE\n1, 1, 4\n0, 0, %z, 0.01\n"
+                             "*MAT_ELASTIC\n1, 7800, 2e11, 0.3\n*PART\n1, 1\n";
+  std::string near = sphere, far = sphere;
+  near.replace(near.find("%z"), 2, "0");
+  far.replace(far.find("%z"), 2, "1e5");
+  EXPECT_EQ(read(far).model.mesh.nodes.size(), read(near).model.mesh.nodes.size());
+}
+
+TEST(DeckReliability, MeshTooLargeForTheMemoryIsRefusedBeforeAllocating) {
+  const InputError e = error_of(
+      "*TIME\n1\n*COMPONENT_SPHERE\n1, 1, 100000\n0, 0, 0, 0.01\n"
+      "*MAT_ELASTIC\n1, 7800, 2e11, 0.3\n*PART\n1, 1\n");
+  EXPECT_EQ(e.where().line, 3u);
+  EXPECT_EQ(e.where().keyword, "*COMPONENT_SPHERE");
+  EXPECT_THAT(e.message(), HasSubstr("elements"));
+  EXPECT_THAT(e.message(), HasSubstr("GB of memory"));
+  EXPECT_THAT(e.message(), HasSubstr("available"));
+}
+
+TEST(DeckReliability, MemoryBudgetComparesTheRunWithWhatIsAvailable) {
+  const SourceLocation where{"t.k", 5, "*COMPONENT_BOX", ""};
+  const MeshSize million{1e6, 1e6};
+  EXPECT_NO_THROW(deck::require_memory(million, 1e12, where));
+  EXPECT_NO_THROW(deck::require_memory(million, std::nullopt, where));  // unknown: no refusal
+  try {
+    deck::require_memory(million, 1e8, where);
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, 5u);
+    EXPECT_THAT(e.message(), HasSubstr("1000000 elements"));
+    EXPECT_THAT(e.message(), HasSubstr("only 0.1 GB are available"));
+  }
+  EXPECT_TRUE(deck::available_memory().has_value());  // Linux: /proc/meminfo
 }
 
 }  // namespace
