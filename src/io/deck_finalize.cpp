@@ -229,6 +229,7 @@ DeckResult DeckReader::finish() {
     c.parts = solid_parts_of(o.entity);
     c.order = o.order;
     if (o.region) c.region = geometry_of(model, *o.region);
+    c.where = with_field(o.entity.where, "");  // the line of the *CHANGE_P-ORDER row
     order_changes.push_back(std::move(c));
   }
   std::vector<SurfaceSmoothing> smoothings;
@@ -238,6 +239,7 @@ DeckResult DeckReader::finish() {
     c.max_angle = s.max_angle;
     c.internal = s.internal;
     if (s.region) c.region = geometry_of(model, *s.region);
+    c.where = with_field(s.entity.where, "");  // the *SMOOTH_MESH row or the *PART row
     smoothings.push_back(std::move(c));
   }
   if (!order_changes.empty() || !smoothings.empty()) {

@@ -262,5 +262,20 @@ TEST(DeckReliability, MemoryBudgetComparesTheRunWithWhatIsAvailable) {
   EXPECT_TRUE(deck::available_memory().has_value());  // Linux: /proc/meminfo
 }
 
+TEST(DeckReliability, RefinementErrorsAreAtTheirLine) {
+  // Two boxes joined by *MERGE_DUPLICATED_NODES; refining one alone leaves hanging nodes.
+  const std::string joined =
+      "*TIME\n1\n*COMPONENT_BOX\n1, 1, 1, 1, 1\n0, 0, 0, 1, 1, 1\n"
+      "*COMPONENT_BOX\n2, 2, 1, 1, 1\n0, 0, 1, 1, 1, 2\n*MAT_ELASTIC\n1, 7800, 2e11, 0.3\n"
+      "*PART\n1, 1\n2, 1\n*MERGE_DUPLICATED_NODES\nP, 2, P, 1\n";
+  const InputError e = error_of(joined + "*CHANGE_P-ORDER\nP, 2, 1\nP, 1, 2\n");
+  EXPECT_EQ(e.where().line, 18u);
+  EXPECT_EQ(e.where().keyword, "*CHANGE_P-ORDER");
+  EXPECT_THAT(e.message(), HasSubstr("parts 1 and 2 share nodes"));
+  const InputError s = error_of(joined + "*SMOOTH_MESH\nP, 1, 45, 1\n");
+  EXPECT_EQ(s.where().line, 17u);
+  EXPECT_THAT(s.message(), HasSubstr("internal = 1"));
+}
+
 }  // namespace
 }  // namespace abut
