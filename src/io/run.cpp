@@ -327,9 +327,9 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
   if (!model.static_steps.empty()) return run_static_analysis(model, options, log);
   if (options.threads > 0) omp_set_num_threads(options.threads);
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
-  fs::create_directories(options.output_dir);
-
+  // Set up (and so check) the model before writing anything: an input error leaves no output.
   Simulation sim(model);
+  fs::create_directories(options.output_dir);
   const double t_end = model.time.end_time;
   const double span = t_end - model.time.start_time;
   const double state_interval =
