@@ -9,8 +9,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -171,7 +173,11 @@ void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
       hi[a] = std::max(hi[a], mesh.nodes.position(n)[a]);
     }
   }
-  detail::NodeMerger merger(1e-9 * norm(hi - lo));
+  // New nodes merge within a fraction of the child edge (merge_tolerance): the model's extent
+  // says nothing about the spacing of a slender or far-away mesh.
+  Vec3 farthest;
+  for (int a = 0; a < 3; ++a) farthest[a] = std::max(std::fabs(lo[a]), std::fabs(hi[a]));
+  detail::NodeMerger merger(detail::largest_merge_tolerance(norm(farthest), norm(hi - lo)));
   std::vector<char> registered(mesh.nodes.size(), 0);
   std::size_t expected_new_nodes = 0, refined_hexes = 0;
   for (std::size_t h = 0; h < hex_count; ++h) {
@@ -229,6 +235,12 @@ void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
         curved = true;
       }
     }
+    double shortest_edge = std::numeric_limits<double>::infinity();
+    for (const auto& e : kHexEdges) {
+      const double length = norm(x[e[1]] - x[e[0]]);
+      if (length > 0.0) shortest_edge = std::min(shortest_edge, length);
+    }
+    if (!std::isfinite(shortest_edge)) shortest_edge = 0.0;
     const int m = p + 1;
     std::vector<std::int32_t> lattice(static_cast<std::size_t>(m * m * m));
     auto at = [&](int i, int j, int k) -> std::int32_t& {
@@ -249,7 +261,8 @@ void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
               shape >= 0 ? shape_point(mesh.shapes[static_cast<std::size_t>(shape)], cell.block,
                                        cell.lo + cell.size * Vec3{s[0], s[1], s[2]})
                          : blended_point(x, bulge, curved, s);
-          at(i, j, k) = merger.find_or_add(mesh.nodes, point, next_node);
+          at(i, j, k) = merger.find_or_add(mesh.nodes, point, next_node,
+                                           detail::merge_tolerance(point, shortest_edge / p));
         }
       }
     }

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "abut/solver/simulation.hpp"
@@ -275,6 +276,33 @@ TEST(DeckReliability, RefinementErrorsAreAtTheirLine) {
   const InputError s = error_of(joined + "*SMOOTH_MESH\nP, 1, 45, 1\n");
   EXPECT_EQ(s.where().line, 17u);
   EXPECT_THAT(s.message(), HasSubstr("internal = 1"));
+}
+
+TEST(DeckReliability, RefinementOfSlenderAndFarMeshesKeepsItsNodes) {
+  // Hexes of *ELEMENT_SOLID (no exact shape) split 2x2x2: the new nodes of neighbouring hexes
+  // merge within a fraction of their own edges, whatever the model's extent or position.
+  const auto num = [](double v) {
+    std::ostringstream text;
+    text.precision(17);
+    text << v;
+    return text.str();
+  };
+  const auto refined_nodes = [&num](double x_end, double z0) {
+    std::string deck = "*TIME\n1\n*NODE\n";
+    int id = 1;
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 3; ++i)
+          deck += std::to_string(id++) + ", " + num(x_end * i / 2) + ", " + num(0.01 * j) + ", " +
+                  num(z0 + 0.01 * k) + "\n";
+    deck += "*ELEMENT_SOLID\n1, 1, 1, 2, 5, 4, 7, 8, 11, 10\n2, 1, 2, 3, 6, 5, 8, 9, 12, 11\n"
+            "*MAT_ELASTIC\n1, 7800, 2e11, 0.3\n*PART\n1, 1\n*CHANGE_P-ORDER\nP, 1, 2\n";
+    return read(deck).model.mesh.nodes.size();
+  };
+  const std::size_t reference = refined_nodes(0.02, 0.0);
+  EXPECT_EQ(reference, 5u * 3u * 3u);
+  EXPECT_EQ(refined_nodes(1e7, 0.0), reference);
+  EXPECT_EQ(refined_nodes(0.02, 1e5), reference);
 }
 
 }  // namespace
