@@ -32,11 +32,15 @@ double spanned_volume(const Nodes& nodes, const Hex8& hex) {
 
 void DeckReader::check_element_volumes() const {
   const Mesh& mesh = model.mesh;
-  // The line of each hex: its *ELEMENT_SOLID row or the command that generated it.
-  std::vector<SourceLocation> where(mesh.hex_count());
-  for (const ElementNodes& e : element_nodes) where[e.hex] = element_where(e, "");
-  for (const MeshSource& s : mesh_sources)
-    for (std::size_t h = s.first; h < s.end && h < where.size(); ++h) where[h] = s.where;
+  // The line of hex h, looked up only for the one that fails: its *ELEMENT_SOLID row or the
+  // command that generated it.
+  const auto where = [&](std::size_t h) {
+    for (const ElementNodes& e : element_nodes)
+      if (e.hex == h) return element_where(e, "");
+    for (const MeshSource& s : mesh_sources)
+      if (h >= s.first && h < s.end) return s.where;
+    return SourceLocation{};
+  };
   for (std::size_t h = 0; h < mesh.hex_count(); ++h) {
     const Hex8& hex = mesh.hexes[h];
     const double volume = hex_volume(mesh.nodes, hex);
@@ -47,7 +51,7 @@ void DeckReader::check_element_volumes() const {
     for (const std::int32_t n : hex)
       nodes.append(nodes.empty() ? "" : ", ")
           .append(std::to_string(mesh.nodes.id[static_cast<std::size_t>(n)]));
-    throw InputError(where[h],
+    throw InputError(where(h),
                      "element " + std::to_string(mesh.hex_id[h]) + " (nodes " + nodes +
                          ") has volume " + format_number(volume) +
                          (volume < 0.0 ? " (inverted)" : " (degenerate)") +
