@@ -165,6 +165,22 @@ TEST(DeckReliability, IncludeIdOffsetThatOverflowsIsLocated) {
     EXPECT_EQ(e.where().line, 3u);
     EXPECT_EQ(e.where().field, "nid_offset");
   }
+  {
+    // A *FUNCTION's fcn(id) is shifted too: past 2^63-1 it is an error at the expression.
+    std::ofstream part(dir / "part.k");
+    part << "*FUNCTION\n1\nfcn(9223372036854775800) + 1\n";
+    std::ofstream main(dir / "main.k");
+    main << "*TIME\n1\n*INCLUDE\npart.k\n1, 1, 1, 0, 0, 0, 0, 1000\n";
+  }
+  try {
+    read_deck((dir / "main.k").string());
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().file, (dir / "part.k").string());
+    EXPECT_EQ(e.where().line, 3u);
+    EXPECT_EQ(e.where().field, "expression");
+    EXPECT_THAT(e.message(), HasSubstr("exceeds the largest id"));
+  }
   std::filesystem::remove_all(dir);
 }
 
