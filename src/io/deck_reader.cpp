@@ -61,6 +61,8 @@ void DeckReader::read_file(const fs::path& path, const IncludeFrame& frame, int 
   std::error_code regular_ec;
   if (fs::exists(path, regular_ec) && !fs::is_regular_file(path, regular_ec))
     throw InputError("'" + path.string() + "' is not a regular file: a deck must be a file");
+  const auto bytes = fs::file_size(path, regular_ec);
+  if (!regular_ec) require_readable(path.string(), static_cast<double>(bytes), available_memory());
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot open deck file '" + path.string() + "'");
   std::ostringstream text;

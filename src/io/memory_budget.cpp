@@ -67,4 +67,11 @@ void require_memory(const MeshSize& total, std::optional<double> available,
                               " are available: use fewer elements");
 }
 
+void require_readable(const std::string& file, double bytes, std::optional<double> available) {
+  if (!available || 3.0 * bytes <= *available) return;
+  throw InputError("deck file '" + file + "' has " + gigabytes(bytes) +
+                   "; reading it needs about three times that, but only " + gigabytes(*available) +
+                   " are available");
+}
+
 }  // namespace abut::deck

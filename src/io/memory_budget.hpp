@@ -22,4 +22,8 @@ double run_memory(const MeshSize& size);
 void require_memory(const MeshSize& total, std::optional<double> available,
                     const SourceLocation& where);
 
+// InputError when a deck file of `bytes` would not fit in `available` bytes while it is read
+// (the text is held about three times over as it is split into lines).
+void require_readable(const std::string& file, double bytes, std::optional<double> available);
+
 }  // namespace abut::deck

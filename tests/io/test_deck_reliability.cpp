@@ -277,6 +277,9 @@ TEST(DeckReliability, MemoryBudgetComparesTheRunWithWhatIsAvailable) {
     EXPECT_THAT(e.message(), HasSubstr("only 0.1 GB are available"));
   }
   EXPECT_TRUE(deck::available_memory().has_value());  // Linux: /proc/meminfo
+  // A deck file is read whole: one larger than a third of the available memory is refused.
+  EXPECT_NO_THROW(deck::require_readable("big.k", 1e9, 4e9));
+  EXPECT_THROW(deck::require_readable("big.k", 2e9, 4e9), InputError);
 }
 
 TEST(DeckReliability, RefinementErrorsAreAtTheirLine) {
