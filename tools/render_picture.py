@@ -7,11 +7,13 @@
 
 Uses Debian's python3-vtk9; without a display run it under xvfb-run (package xvfb).
 Each panel shows the exterior of the model at the state nearest to the time asked for
-(default: the first and the last state), coloured by von Mises stress from 0 to --stress-max
-(default 2e7 Pa), or by another field of the states (--field, a point or cell array, e.g.
-temperature, over --range, labelled --title). The time label is in ms, or in s with --seconds.
-Without --view the camera is the rubber-sphere picture's; with it the camera
-looks along (DX, DY, DZ) and frames the first panel's model, the same framing for every panel.
+(default: the first and the last state), coloured by von Mises stress, or by another field of
+the states (--field, a point or cell array, e.g. temperature; a vector by its magnitude),
+labelled --title. The colour range is the field's range over the panels shown (from 0 for von
+Mises stress) unless --range MIN,MAX or --stress-max MAX (from 0 to MAX) gives it (the README
+picture: --stress-max 2e7). The time label is in ms, or in s with --seconds.
+The camera looks along (DX, DY, DZ) (default 0.075,-0.11,0.044, the README picture's direction)
+and frames the models of all panels, the same framing for every panel.
 --half keeps the cells with centres at y <= 0 so that folds inside a tube show in section.
 """
 import argparse
@@ -26,8 +28,12 @@ def states(pvd):
     return [(float(d.get("timestep")), Path(pvd).parent / d.get("file")) for d in root.iter("DataSet")]
 
 
-def panel(vtu, time, viewport, window, colour, half, seconds):
-    field, value_range, title = colour
+# The README picture's viewing direction, from the focal point towards the camera.
+DEFAULT_VIEW = (0.075, -0.11, 0.044)
+
+
+def read(vtu, half):
+    """The state's cells (with --half those at y <= 0), read."""
     reader = vtk.vtkXMLUnstructuredGridReader()
     reader.SetFileName(str(vtu))
     source = reader
@@ -41,12 +47,34 @@ def panel(vtu, time, viewport, window, colour, half, seconds):
         cut.ExtractInsideOn()
         cut.ExtractBoundaryCellsOff()
         source = cut
+    source.Update()
+    return source
+
+
+def field_range(sources, field):
+    """The smallest and largest value of `field` (a vector's magnitude) over the states."""
+    low, high = float("inf"), float("-inf")
+    for source in sources:
+        grid = source.GetOutput()
+        array = grid.GetPointData().GetArray(field) or grid.GetCellData().GetArray(field)
+        if array is None or array.GetNumberOfTuples() == 0:
+            continue
+        a, b = array.GetRange(-1 if array.GetNumberOfComponents() > 1 else 0)
+        low, high = min(low, a), max(high, b)
+    if low > high:
+        raise SystemExit(f"render_picture: no state has the field '{field}'")
+    if high <= low:  # a uniform field: a range around it, so that it takes a colour
+        high = low + (abs(low) if low != 0.0 else 1.0)
+    return low, high
+
+
+def panel(source, time, viewport, window, colour, seconds):
+    field, value_range, title = colour
     surface = vtk.vtkDataSetSurfaceFilter()
     surface.SetInputConnection(source.GetOutputPort())
     mapper = vtk.vtkDataSetMapper()
     mapper.SetInputConnection(surface.GetOutputPort())
-    reader.Update()
-    if reader.GetOutput().GetPointData().HasArray(field):
+    if source.GetOutput().GetPointData().HasArray(field):
         mapper.SetScalarModeToUsePointFieldData()
     else:
         mapper.SetScalarModeToUseCellFieldData()
@@ -54,6 +82,7 @@ def panel(vtu, time, viewport, window, colour, half, seconds):
     mapper.SetScalarRange(*value_range)
     lut = vtk.vtkLookupTable()
     lut.SetHueRange(0.66, 0.0)
+    lut.SetVectorModeToMagnitude()
     lut.Build()
     mapper.SetLookupTable(lut)
     actor = vtk.vtkActor()
@@ -86,11 +115,6 @@ def panel(vtu, time, viewport, window, colour, half, seconds):
             prop.ItalicOff()
             prop.ShadowOff()
         renderer.AddActor2D(bar)
-    camera = renderer.GetActiveCamera()
-    camera.SetFocalPoint(0.0, 0.0, 0.016)
-    camera.SetPosition(0.075, -0.11, 0.06)
-    camera.SetViewUp(0.0, 0.0, 1.0)
-    camera.SetViewAngle(30.0)
     window.AddRenderer(renderer)
     return renderer
 
@@ -100,7 +124,7 @@ def main():
     parser.add_argument("pvd")
     parser.add_argument("out")
     parser.add_argument("times", nargs="*", type=float)
-    parser.add_argument("--stress-max", type=float, default=2.0e7)
+    parser.add_argument("--stress-max", type=float)
     parser.add_argument("--view", type=lambda v: [float(c) for c in v.split(",")])
     parser.add_argument("--half", action="store_true")
     parser.add_argument("--field", default="von_mises_stress")
@@ -115,21 +139,41 @@ def main():
     window.SetOffScreenRendering(1)
     width = 520
     window.SetSize(width * len(chosen), 520)
-    colour = (args.field, args.range or (0.0, args.stress_max),
+    sources = [read(vtu, args.half) for _, vtu in chosen]
+    if args.range:
+        value_range = args.range
+    elif args.stress_max:
+        value_range = (0.0, args.stress_max)
+    else:
+        value_range = field_range(sources, args.field)
+        if args.field == "von_mises_stress":
+            value_range = (0.0, value_range[1])
+    colour = (args.field, value_range,
               args.title or ("von Mises [Pa]" if args.field == "von_mises_stress" else args.field))
     renderers = [
-        panel(vtu, time, (i / len(chosen), 0.0, (i + 1) / len(chosen), 1.0), window, colour,
-              args.half, args.seconds)
-        for i, (time, vtu) in enumerate(chosen)
+        panel(source, time, (i / len(chosen), 0.0, (i + 1) / len(chosen), 1.0), window, colour,
+              args.seconds)
+        for i, ((time, _), source) in enumerate(zip(chosen, sources))
     ]
-    if args.view:
-        first = renderers[0].GetActiveCamera()
-        first.SetFocalPoint(0.0, 0.0, 0.0)
-        first.SetPosition(*args.view)
-        renderers[0].ResetCamera()
-        first.Zoom(0.85)  # room for the colour bar
-        for r in renderers[1:]:
-            r.SetActiveCamera(first)
+    # One camera for all panels, framing the union of their models' bounds.
+    bounds = [float("inf"), float("-inf")] * 3
+    for source in sources:
+        b = source.GetOutput().GetBounds()
+        for k in range(3):
+            bounds[2 * k] = min(bounds[2 * k], b[2 * k])
+            bounds[2 * k + 1] = max(bounds[2 * k + 1], b[2 * k + 1])
+    camera = renderers[0].GetActiveCamera()
+    camera.SetFocalPoint(0.0, 0.0, 0.0)
+    view = args.view or DEFAULT_VIEW
+    camera.SetPosition(*view)
+    # z up, unless the camera looks along z
+    camera.SetViewUp(*((0.0, 1.0, 0.0) if abs(view[2]) > 0.99 * sum(c * c for c in view) ** 0.5
+                       else (0.0, 0.0, 1.0)))
+    camera.SetViewAngle(30.0)
+    renderers[0].ResetCamera(bounds)
+    camera.Zoom(0.85)  # room for the colour bar
+    for r in renderers[1:]:
+        r.SetActiveCamera(camera)
     window.Render()
     image = vtk.vtkWindowToImageFilter()
     image.SetInput(window)

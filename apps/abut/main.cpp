@@ -1,16 +1,27 @@
 // abut: the command-line program. Thin: reads the deck, runs or describes the model.
-// Exit codes: 0 success, 2 input error (message names file and line), 3 unstable run.
+// Exit codes (README, "Using it"):
+//   0        success
+//   1        output or system error (writing the results failed, disk full, out of memory)
+//   2        user error: command line, deck missing or unreadable, an error in the deck (file and
+//            line named), an output directory that cannot be written or is in use
+//   3        the run went unstable (explicit) or a step did not converge (static)
+//   128 + s  interrupted by signal s (130 SIGINT, 143 SIGTERM) after writing a final state
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <filesystem>
 #include <iostream>
+#include <new>
 
 #include "abut/core/error.hpp"
 #include "abut/io/deck.hpp"
+#include "abut/io/interrupt.hpp"
 #include "abut/io/run.hpp"
 #include "abut/solver/simulation.hpp"
 #include "abut/solver/static_solver.hpp"
+#include "command_line.hpp"
+#include "wait_policy.hpp"
 
 namespace {
 
@@ -79,6 +90,8 @@ void print_info(const abut::Model& model, std::ostream& out) {
   out << fmt::format("contacts:   {}\n", model.contacts.size());
   for (const abut::ContactSpec& c : model.contacts)
     out << fmt::format("  {:>6}  {}\n", c.id, c.title.empty() ? "-" : c.title);
+  for (const abut::ContactReport& c : sim.contact_reports())
+    for (const std::string& w : c.warnings) out << "warning: " << w << "\n";
   out << fmt::format("boundary motions: {}, gravity loads: {}\n", model.motions.size(),
                      model.gravity.size());
 }
@@ -86,6 +99,11 @@ void print_info(const abut::Model& model, std::ostream& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  abut_cli::ensure_passive_wait_policy(argv);
+  if (const std::string error = abut_cli::command_error(argc, argv); !error.empty()) {
+    std::cerr << "error: " << error << "\n";
+    return 2;
+  }
   CLI::App app{
       "abut: finite-element solver built around contact (explicit dynamics, nonlinear statics)"};
   app.set_version_flag("--version", std::string("abut ") + ABUT_VERSION);
@@ -93,25 +111,38 @@ int main(int argc, char** argv) {
 
   std::string deck;
   std::string output;
-  int threads = 0;
+  std::string threads_text;
   bool quiet = false;
   CLI::App* run =
       app.add_subcommand("run", "Run a deck; writes a ParaView series and time histories");
+  // The deck and --threads are checked below, with plain messages, rather than by CLI11.
   run->add_option("deck", deck, "Input deck (IMPETUS keyword syntax, or Abaqus/CalculiX .inp)")
-      ->required()
-      ->check(CLI::ExistingFile);
+      ->required();
   run->add_option("-o,--output", output,
                   "Output directory (default: <deck stem>_out beside the deck)");
-  run->add_option("--threads", threads, "Number of threads (default: all cores)")
-      ->check(CLI::PositiveNumber);
+  run->add_option("--threads", threads_text, "Number of threads (default: all cores)");
   run->add_flag("-q,--quiet", quiet, "No progress output");
   CLI::App* check =
       app.add_subcommand("check", "Parse and validate a deck; every error with file:line");
-  check->add_option("deck", deck, "Input deck")->required()->check(CLI::ExistingFile);
+  check->add_option("deck", deck, "Input deck")->required();
   CLI::App* info =
       app.add_subcommand("info", "Model summary: parts, masses, contacts, stable time step");
-  info->add_option("deck", deck, "Input deck")->required()->check(CLI::ExistingFile);
-  CLI11_PARSE(app, argc, argv);
+  info->add_option("deck", deck, "Input deck")->required();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help and --version (code 0) print and succeed; every other CLI11 error is a user error.
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::cerr << "error: " << e.what() << " (abut --help for the usage)\n";
+    return 2;
+  }
+  int threads = 0;
+  std::string error = abut_cli::deck_error(deck);
+  if (error.empty() && !threads_text.empty()) error = abut_cli::parse_threads(threads_text, threads);
+  if (!error.empty()) {
+    std::cerr << "error: " << error << "\n";
+    return 2;
+  }
 
   try {
     abut::DeckResult result = abut::read_deck_with_notes(deck);
@@ -128,6 +159,8 @@ int main(int argc, char** argv) {
     }
     if (*check) {
       const abut::Simulation sim(model);
+      for (const abut::ContactReport& c : sim.contact_reports())
+        for (const std::string& w : c.warnings) std::cerr << "warning: " << w << "\n";
       std::cout << fmt::format(
           "{}: OK ({} nodes, {} hexahedra, {} shells, {} parts, initial stable step {:.4g})\n",
           deck, model.mesh.nodes.size(), model.mesh.hex_count(), model.mesh.shell_count(),
@@ -142,7 +175,16 @@ int main(int argc, char** argv) {
     options.output_dir = output.empty() ? default_output_dir(deck) : fs::path(output);
     options.threads = threads;
     options.progress = !quiet;
+    abut::interrupt::install();
+    options.stop_requested = [] { return abut::interrupt::received() != 0; };
     const abut::RunReport report = abut::run_simulation(model, options, std::cout);
+    if (report.interrupted) {
+      const int signal = abut::interrupt::received();
+      std::cerr << "abut: interrupted by "
+                << (signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal")
+                << "; the final state and summary.json are written\n";
+      return 128 + signal;
+    }
     return report.stable ? 0 : 3;
   } catch (const abut::InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
@@ -150,6 +192,9 @@ int main(int argc, char** argv) {
   } catch (const abut::InstabilityError& e) {
     std::cerr << "error: unstable: " << e.what() << "\n";
     return 3;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "error: out of memory\n";
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 1;

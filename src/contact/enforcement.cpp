@@ -11,10 +11,6 @@
 namespace abut {
 namespace {
 
-// A point within this fraction of its element thickness counts as touching: sticking contact ties
-// it, and a thermal contact conducts as closed (absorbs round-off of coincident surfaces).
-constexpr double kTieGapFraction = 1e-6;
-
 Vec3 velocity_at(const std::array<std::int32_t, 4>& nodes, const std::array<double, 4>& shape,
                  const ContactInput& in) {
   Vec3 v;
@@ -278,7 +274,8 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   const double gap =
       from_behind ? -h.gap : h.gap;      // opening along the direction the contact pushes
   if (gap >= 0.0) pass.offset[p] = 0.0;  // separated: the initial offset has done its job
-  if (s.stick_stress && pass.state[p] == kFree && gap <= kTieGapFraction * own.point_thickness[p]) {
+  if (s.stick_stress && pass.state[p] == kFree &&
+      gap <= kTouchingGapFraction * own.point_thickness[p]) {
     pass.state[p] = kTied;
     pass.tie_facet[p] = h.facet;
     pass.tie_xi[p] = h.xi;
@@ -304,7 +301,8 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     if (s.thermal.conductance &&
         (!node_point || facing_area(from_behind ? h.normal * -1.0 : h.normal)))
       conduct(pass, p, h.facet, h.xi, h.eta, 0.0,
-              -penetration <= kTieGapFraction * own.point_thickness[p] ? 0.0 : -penetration, area);
+              -penetration <= kTouchingGapFraction * own.point_thickness[p] ? 0.0 : -penetration,
+              area);
     return;
   }
 

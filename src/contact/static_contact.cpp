@@ -17,22 +17,6 @@ constexpr double kPi = 3.14159265358979323846;
 
 Vec3 tangential(const Vec3& v, const Vec3& n) { return v - n * dot(v, n); }
 
-// The element's nodes with their weights, repeated nodes merged (a triangle repeats its third).
-struct Weights {
-  std::array<std::int32_t, 8> node{};
-  std::array<double, 8> w{};
-  int count = 0;
-  void add(std::int32_t n, double weight) {
-    for (int k = 0; k < count; ++k)
-      if (node[k] == n) {
-        w[k] += weight;
-        return;
-      }
-    node[count] = n;
-    w[count++] = weight;
-  }
-};
-
 }  // namespace
 
 StaticContact::StaticContact(StaticContactSettings settings, ContactSurface secondary,
@@ -249,7 +233,7 @@ void StaticContact::evaluate(const ContactInput& in) {
     out.gap = gap;
     h.facet = facet, h.xi = xi, h.eta = eta;
     // Weights of the element: +N on the point's own nodes, -phi on the partner's.
-    Weights wt;
+    ContactWeights wt;
     if (out.node >= 0) {
       wt.add(out.node, 1.0);
     } else {
@@ -258,11 +242,13 @@ void StaticContact::evaluate(const ContactInput& in) {
     }
     const auto phi = quad_shape(xi, eta);
     for (int a = 0; a < 4; ++a) wt.add(main_.facets[facet][a], -phi[a]);
+    out.weights = wt;
+    out.partner = facet;
     // Relative motion since the last converged state.
     Vec3 motion{};
     for (int k = 0; k < wt.count; ++k) {
-      const std::int32_t n = wt.node[k];
-      motion = motion + Vec3{in.x[n] - xc_[n], in.y[n] - yc_[n], in.z[n] - zc_[n]} * wt.w[k];
+      const std::int32_t n = wt.nodes[k];
+      motion = motion + Vec3{in.x[n] - xc_[n], in.y[n] - yc_[n], in.z[n] - zc_[n]} * wt.weights[k];
     }
     double pressure = 0.0, kn = 0.0, energy = 0.0;
     Vec3 traction{};
@@ -327,8 +313,8 @@ void StaticContact::evaluate(const ContactInput& in) {
     out.normal = normal;
     StaticContactElement& e = slot[p];
     e.count = wt.count;
-    e.nodes = wt.node;
-    e.weights = wt.w;
+    e.nodes = wt.nodes;
+    e.weights = wt.weights;
     e.area = out.area;
     e.traction = normal * pressure + traction;
     for (int i = 0; i < 3; ++i)

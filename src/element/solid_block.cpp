@@ -722,7 +722,7 @@ void SolidBlock::set_thermal(const ThermalCoupling& coupling) {
   Impl& m = *impl_;
   const auto* metal = std::get_if<MetalParams>(&m.material);
   const bool plastic = metal != nullptr && coupling.plastic_work;
-  const bool softens = metal != nullptr && metal->softens();
+  const bool softens = metal != nullptr && metal->thermal();  // softening or d5
   if (coupling.expansion != 0.0 && std::holds_alternative<MooneyRivlinParams>(m.material))
     throw InputError(input_prefix(m.part_id) +
                      "thermal expansion of *MAT_MOONEY_RIVLIN is not supported yet");

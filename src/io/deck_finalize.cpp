@@ -86,9 +86,9 @@ void merge_contact_keywords(Model& model, const std::vector<PendingContactKeywor
 
 DeckResult DeckReader::finish() {
   if (!time_where && static_step_ends.empty()) {
-    throw InputError(SourceLocation{files.front(), 0, "", ""},
-                     "the deck has no *TIME: abut needs the termination time t_term (or *STATIC "
-                     "steps for a static analysis)");
+    throw InputError(SourceLocation{files.front(), std::max<std::size_t>(end_line, 1), "", ""},
+                     "the deck ends without *TIME: abut needs the termination time t_term (or "
+                     "*STATIC steps for a static analysis)");
   }
   model.functions.resolve();
   Mesh& mesh = model.mesh;
@@ -160,7 +160,12 @@ DeckResult DeckReader::finish() {
     if (it == damage_properties.end())
       throw InputError(b.where, "damage property " + std::to_string(b.id) +
                                     " is not defined (expected a *PROP_DAMAGE_JC with this did)");
-    std::get<MetalParams>(model.materials[b.material].params).failure = it->second;
+    MetalParams& metal = std::get<MetalParams>(model.materials[b.material].params);
+    metal.failure = it->second;
+    if (metal.failure.d5 != 0.0 && !(metal.melting_temperature > metal.room_temperature))
+      throw InputError(b.where, "damage property " + std::to_string(b.id) +
+                                    " has a thermal factor d5: the material needs a melting "
+                                    "temperature Tm above T0 (line 2, as for softening)");
   }
 
   // Entities: every id must exist.

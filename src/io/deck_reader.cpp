@@ -106,6 +106,7 @@ void DeckReader::read_lines(const std::vector<std::string>& lines, const std::st
                            std::to_string(kMaxLineLength) + " characters long");
     const std::string text = trim(lines[i]);
     if (text.empty() || text.front() == '#' || text.front() == '$') continue;
+    if (depth == 0) end_line = number;
     const SourceLocation here{name, number, keyword.value_or(""), ""};
     if (text.front() == '~') {
       throw InputError(here,

@@ -270,6 +270,7 @@ class DeckReader {
   std::vector<EntityRef> entity_references;  // entities that must exist
   std::vector<PendingContactKeyword> contact_keywords;
   std::optional<SourceLocation> time_where, units_where, title_where, output_where;
+  std::size_t end_line = 0;  // the last line read of the main deck, for what it lacks
 
  private:
   void read_lines(const std::vector<std::string>& lines, const std::string& name, int depth);

@@ -241,9 +241,7 @@ void read_prop_damage_jc(DeckReader& d, Block& b) {
     r.require(f.d1 + f.d2 > 0.0, 1,
               "expected a failure strain d1 + d2 > 0 at zero triaxiality (d1 alone: a constant "
               "plastic failure strain)");
-    r.unsupported_unless(5, 0.0,
-                         "thermal softening of the failure strain (d5): abut has no "
-                         "temperature field yet, and");
+    f.d5 = r.number_or(5, 0.0);  // its material needs Tm > T0 and thermal properties
     f.rate0 = r.number_or(6, 1.0);
     r.require(f.rate0 > 0.0, 6, "expected a reference strain rate > 0");
     d.damage_properties[id] = f;

@@ -65,20 +65,24 @@ std::string ProgressReporter::status(double time, std::int64_t cycle, bool final
   return line;
 }
 
+void ProgressReporter::draw_bar(double time, std::int64_t cycle, bool final) {
+  const int filled = static_cast<int>(fraction(time) * kBarWidth);
+  std::string line = "\r[" + std::string(static_cast<std::size_t>(filled), '#') +
+                     std::string(static_cast<std::size_t>(kBarWidth - filled), '.') + "]" +
+                     status(time, cycle, final);
+  const std::size_t width = line.size();
+  if (width < last_width_) line.append(last_width_ - width, ' ');  // erase a longer old line
+  last_width_ = width;
+  out_ << line << std::flush;
+}
+
 void ProgressReporter::update(double time, std::int64_t cycle) {
   if (interactive_) {
     const double now = clock_();
     if (drawn_ && now - last_draw_ < kRedrawInterval) return;
     drawn_ = true;
     last_draw_ = now;
-    const int filled = static_cast<int>(fraction(time) * kBarWidth);
-    std::string line = "\r[" + std::string(static_cast<std::size_t>(filled), '#') +
-                       std::string(static_cast<std::size_t>(kBarWidth - filled), '.') + "]" +
-                       status(time, cycle, false);
-    const std::size_t width = line.size();
-    if (width < last_width_) line.append(last_width_ - width, ' ');  // erase a longer old line
-    last_width_ = width;
-    out_ << line << std::flush;
+    draw_bar(time, cycle, false);
     return;
   }
   // Plain lines at 10 %, 20 %, ..., 90 %; the final line comes from finish().
@@ -90,9 +94,10 @@ void ProgressReporter::update(double time, std::int64_t cycle) {
 
 void ProgressReporter::finish(double time, std::int64_t cycle) {
   if (interactive_) {
-    drawn_ = false;  // force the last redraw
-    update(time, cycle);
-    out_ << '\n';
+    // The bar's last redraw is the final line: a separate one would repeat its numbers.
+    draw_bar(time, cycle, true);
+    out_ << '\n' << std::flush;
+    return;
   }
   out_ << status(time, cycle, true) << '\n' << std::flush;
 }

@@ -12,6 +12,7 @@
 #include "abut/core/error.hpp"
 #include "abut/io/csv_history.hpp"
 #include "abut/io/json_writer.hpp"
+#include "abut/io/output_directory.hpp"
 #include "abut/io/progress.hpp"
 #include "abut/io/vtu_writer.hpp"
 #include "abut/solver/simulation.hpp"
@@ -248,7 +249,9 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
   JsonWriter json;
   json.begin_object();
   json.member("deck", model.deck_path);
-  json.member("status", report.stable ? "completed" : "unstable");
+  json.member("status", report.interrupted ? "interrupted"
+                        : report.stable    ? "completed"
+                                           : "unstable");
   if (!report.stable) json.member("message", report.message);
   json.member("cycles", report.cycles);
   json.member("end_time", report.end_time);
@@ -290,6 +293,9 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
     json.member("edge_contact", c.edge_rule);
     json.member("contact_points", static_cast<std::int64_t>(c.points));
     json.member("released_points", static_cast<std::int64_t>(c.released_points));
+    json.key("warnings").begin_array();
+    for (const std::string& w : c.warnings) json.value(w);
+    json.end_array();
     json.key("penalty_per_part").begin_array();
     for (const PartPenalty& p : c.parts) {
       json.begin_object()
@@ -327,9 +333,9 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
   if (!model.static_steps.empty()) return run_static_analysis(model, options, log);
   if (options.threads > 0) omp_set_num_threads(options.threads);
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
-  // Set up (and so check) the model before writing anything: an input error leaves no output.
+
   Simulation sim(model);
-  fs::create_directories(options.output_dir);
+  const OutputDirectory output(options.output_dir);
   const double t_end = model.time.end_time;
   const double span = t_end - model.time.start_time;
   const double state_interval =
@@ -350,9 +356,10 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
                          p.automatic ? " (automatic)" : "");
     log << fmt::format(", {} contact points ({}; {}; {}; {})\n", c.points, c.discretisation,
                        c.normal_law, c.tangential_law, c.stiffness_rule);
+    for (const std::string& w : c.warnings) log << "warning: " << w << "\n";
   }
   if (thermal_output::active(sim)) log << thermal_output::start_line(sim);
-  log << "abut: writing results to " << options.output_dir.string() << "\n";
+  log << "abut: writing results to " << options.output_dir.string() << "\n" << std::flush;
 
   StateWriter states(options.output_dir, model);
   bool contact_heat = false;
@@ -370,6 +377,10 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
       if (history_schedule.due(sim.time())) histories.write(sim);
       if (state_schedule.due(sim.time())) states.write(sim, false);
       if (sim.finished()) break;
+      if (options.stop_requested && options.stop_requested()) {
+        report.interrupted = true;
+        break;
+      }
       sim.advance();
       if (options.progress) progress.update(sim.time(), sim.cycle());
     }
@@ -394,7 +405,12 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
   report.pvd = states.pvd();
   write_summary(options.output_dir / "summary.json", sim, report, model, threads, initial_limit);
 
-  if (report.stable) {
+  if (report.interrupted) {
+    log << fmt::format(
+        "abut: INTERRUPTED after {} cycles at t = {:.6g} ({:.2f} s); that state is the last of "
+        "the ParaView series\n",
+        report.cycles, report.end_time, report.wall_seconds);
+  } else if (report.stable) {
     log << fmt::format(
         "abut: completed {} cycles to t = {:.6g} in {:.2f} s ({:.1f} ns per element-cycle, {} "
         "threads)\n",
@@ -409,7 +425,8 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
         << fmt::format("abut: the last good state (t = {:.6g}) is in the ParaView series\n",
                        sim.last_good_time());
   }
-  log << "abut: ParaView series: " << report.pvd.string() << " (" << states.count() << " states)\n";
+  log << "abut: ParaView series: " << report.pvd.string() << " (" << states.count() << " states)\n"
+      << std::flush;
   return report;
 }
 

@@ -1,7 +1,8 @@
 // Runs the static steps of a model and writes what a user opens afterwards:
 //   results.pvd + states/state_NNNN.vtu   one state per converged increment
 //   increments.csv                        step, increment, attempts, iterations, times, residual
-//   energy.csv, contact.csv               energies; per contact forces, energy, penetration
+//   energy.csv, contact.csv               energies; per contact forces, energy, penetration (and
+//                                         the heat flow with thermal contact)
 //   results.dat                           the *NODE/*EL/*CONTACT PRINT blocks (CalculiX layout)
 //   summary.json                          equations, increments, iterations, solve times
 #include <fmt/format.h>
@@ -15,9 +16,10 @@
 
 #include "abut/io/csv_history.hpp"
 #include "abut/io/json_writer.hpp"
+#include "abut/io/output_directory.hpp"
 #include "abut/io/run.hpp"
 #include "abut/io/vtu_writer.hpp"
-#include "abut/solver/heat.hpp"
+#include "abut/solver/static_heat.hpp"
 #include "abut/solver/static_solver.hpp"
 #include "io/static_print.hpp"
 
@@ -27,13 +29,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// Thrown from the increment callback to leave StaticSolver::run when a stop is requested.
+struct StopRequested {};
+
 // One ParaView state: displacement and nodal force (loads and reactions) at the nodes; per hex
 // the mean over its Gauss points of the stress tensor and of the von Mises stress, the largest
 // equivalent plastic strain of its points, and its strain energy.
-// With thermal properties also the steady temperature field of the state's loads at its time
-// on the deformed shape (HeatSolver::solve_steady; the heat does not act back on the mechanics).
+// With thermal properties also the steady temperature field of the state (static_heat.hpp).
 void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
-                 const StaticSolver& solver, double time, HeatSolver* heat) {
+                 const StaticSolver& solver, double time, const StaticHeat& heat) {
   const Mesh& mesh = model.mesh;
   const std::size_t n = mesh.nodes.size(), nh = mesh.hex_count();
   std::vector<double> x(n), y(n), z(n), part(nh), stress(6 * nh, 0.0), mises(nh, 0.0),
@@ -60,10 +64,7 @@ void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
   }
   std::vector<double> energy(solver.element_energy().begin(), solver.element_energy().end());
   std::vector<FieldView> points{{"displacement", 3, u}, {"force", 3, solver.nodal_force()}};
-  if (heat) {
-    heat->solve_steady(time, x, y, z, {});
-    points.push_back({"temperature", 1, heat->temperature()});
-  }
+  if (heat.active()) points.push_back({"temperature", 1, heat.temperature()});
   const std::vector<FieldView> cells{{"part_id", 1, part},
                                      {"stress", 6, stress},
                                      {"von_mises_stress", 1, mises},
@@ -76,8 +77,9 @@ void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
 
 // One contact.csv row per contact of the model (the explicit run's columns), summed over its
 // passes; a symmetric contact's second pass acts on surface 2, so its force counts negated.
+// With thermal contact, the heat flow of the state's steady temperature follows.
 void write_contact_rows(CsvHistory& csv, const Model& model, const StaticSolver& solver,
-                        double time) {
+                        const StaticHeat& heat, bool heat_column, double time) {
   const auto passes = solver.contacts();
   for (std::size_t i = 0; i < model.contacts.size(); ++i) {
     Vec3 force{};
@@ -99,8 +101,11 @@ void write_contact_rows(CsvHistory& csv, const Model& model, const StaticSolver&
         penetration = std::max(penetration, -p.gap);
       }
     }
-    csv.write_row(time, {model.contacts[i].id, force.x, force.y, force.z, normal, tangential,
-                         energy, friction, penetration, active});
+    std::vector<CsvHistory::Value> row{
+        model.contacts[i].id, force.x, force.y,  force.z,     normal,
+        tangential,           energy,  friction, penetration, active};
+    if (heat_column) row.emplace_back(heat.contact_heat_flow()[i]);
+    csv.write_row(time, row);
   }
 }
 
@@ -122,36 +127,45 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
   if (options.threads > 0) omp_set_num_threads(options.threads);
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   const fs::path& dir = options.output_dir;
-  fs::create_directories(dir / "states");
   StaticSolver solver(model);
+  StaticHeat heat(model);  // input errors before the output directory is touched
+  const OutputDirectory output(dir);
+  fs::create_directories(dir / "states");
   log << fmt::format("abut: {} nodes, {} hexahedra, {} parts, {} contacts; {} static steps\n",
                      model.mesh.nodes.size(), model.mesh.hex_count(), model.parts.size(),
                      model.contacts.size(), model.static_steps.size());
-  log << "abut: writing results to " << dir.string() << "\n";
-  std::optional<HeatSolver> heat;
-  if (!model.thermal.properties.empty()) {
-    for (const ThermalProperties& p : model.thermal.properties)
-      if (p.expansion != 0.0)
-        throw InputError(p.where,
-                         "thermal expansion in static steps is not supported yet (the steady "
-                         "temperature of a static analysis does not act on the mechanics): give "
-                         "alpha = 0");
-    heat.emplace(model);
-    if (!heat->active()) heat.reset();
-    if (heat) log << "abut: steady heat conduction at every state (temperature in the states)\n";
-  }
-  HeatSolver* heat_field = heat ? &*heat : nullptr;
+  log << "abut: writing results to " << dir.string() << "\n" << std::flush;
+  if (heat.active())
+    log << "abut: steady heat conduction at every state (temperature in the states)\n";
+  bool contact_heat = false;
+  for (const ContactSpec& c : model.contacts) contact_heat = contact_heat || c.exchanges_heat();
   PvdSeries series(dir / "results.pvd");
-  write_state(dir, series, model, solver, 0.0, heat_field);
+  // The reference state has no contact evaluated yet: a body that only contact would hold at a
+  // temperature has no steady one there and shows its initial temperature.
+  try {
+    heat.solve(solver, 0.0);
+  } catch (const InputError& e) {
+    log << "abut: the first state keeps the initial temperature (" << e.what() << ")\n";
+  }
+  write_state(dir, series, model, solver, 0.0, heat);
   CsvHistory increments(dir / "increments.csv",
                         {"step", "increment", "attempts", "iterations", "step_time", "residual"});
   CsvHistory energy(dir / "energy.csv", {"internal", "contact", "friction"});
   std::optional<CsvHistory> contact;
-  if (!model.contacts.empty())
-    contact.emplace(
-        dir / "contact.csv",
-        std::vector<std::string>{"contact", "fx", "fy", "fz", "normal_force", "tangential_force",
-                                 "energy", "friction_energy", "max_penetration", "active_points"});
+  if (!model.contacts.empty()) {
+    std::vector<std::string> columns{"contact",
+                                     "fx",
+                                     "fy",
+                                     "fz",
+                                     "normal_force",
+                                     "tangential_force",
+                                     "energy",
+                                     "friction_energy",
+                                     "max_penetration",
+                                     "active_points"};
+    if (contact_heat) columns.emplace_back("heat_flow");
+    contact.emplace(dir / "contact.csv", columns);
+  }
   std::ofstream printed(dir / "results.dat");
   RunReport report;
   const auto start = std::chrono::steady_clock::now();
@@ -163,9 +177,10 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
           {static_cast<std::int64_t>(inc.step + 1), static_cast<std::int64_t>(inc.increment),
            static_cast<std::int64_t>(inc.attempts), static_cast<std::int64_t>(inc.iterations),
            inc.step_time, inc.residual});
-      write_state(dir, series, model, solver, inc.total_time, heat_field);
+      heat.solve(solver, inc.total_time);
+      write_state(dir, series, model, solver, inc.total_time, heat);
       write_energy_row(energy, solver, inc.total_time);
-      if (contact) write_contact_rows(*contact, model, solver, inc.total_time);
+      if (contact) write_contact_rows(*contact, model, solver, heat, contact_heat, inc.total_time);
       print_static_results(printed, model, model.static_steps[inc.step], solver, inc);
       printed.flush();
       last_time = inc.total_time;
@@ -174,7 +189,10 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
             "abut: step {} increment {} (t = {:.6g}): {} iterations{}\n", inc.step + 1,
             inc.increment, inc.total_time, inc.iterations,
             inc.attempts > 1 ? fmt::format(", {} cut-backs", inc.attempts - 1) : std::string());
+      if (options.stop_requested && options.stop_requested()) throw StopRequested{};
     });
+  } catch (const StopRequested&) {
+    report.interrupted = true;
   } catch (const InstabilityError& e) {
     report.stable = false;
     report.message = e.what();
@@ -189,7 +207,9 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
   json.begin_object();
   json.member("deck", model.deck_path);
   json.member("procedure", "static");
-  json.member("status", report.stable ? "completed" : "did not converge");
+  json.member("status", report.interrupted ? "interrupted"
+                        : report.stable    ? "completed"
+                                           : "did not converge");
   if (!report.stable) json.member("message", report.message);
   json.member("end_time", report.end_time).member("wall_seconds", report.wall_seconds);
   json.member("threads", threads);
@@ -201,7 +221,12 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
   json.member("linear_solver", st.linear_solver);
   json.end_object();
   json.write_file(dir / "summary.json");
-  if (report.stable) {
+  if (report.interrupted) {
+    log << fmt::format(
+        "abut: INTERRUPTED after {} increments at t = {:.6g} ({:.2f} s); that state is the last "
+        "of the ParaView series\n",
+        st.increments, last_time, report.wall_seconds);
+  } else if (report.stable) {
     log << fmt::format(
         "abut: completed {} steps in {} increments, {} iterations ({:.2f} per increment), "
         "{:.2f} s ({:.2f} s solving {} equations with {})\n",
@@ -215,7 +240,8 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
                        last_time);
   }
   log << "abut: ParaView series: " << report.pvd.string() << " (" << series.size()
-      << " states); printed results: " << (dir / "results.dat").string() << "\n";
+      << " states); printed results: " << (dir / "results.dat").string() << "\n"
+      << std::flush;
   return report;
 }
 

@@ -7,11 +7,15 @@
 
 namespace abut {
 
+double homologous_temperature(const MetalParams& p, double temperature) {
+  if (!(p.melting_temperature > p.room_temperature)) return 0.0;
+  return std::clamp(
+      (temperature - p.room_temperature) / (p.melting_temperature - p.room_temperature), 0.0, 1.0);
+}
+
 double thermal_softening(const MetalParams& p, double temperature) {
   if (!p.softens()) return 1.0;
-  const double homologous = std::clamp(
-      (temperature - p.room_temperature) / (p.melting_temperature - p.room_temperature), 0.0, 1.0);
-  return 1.0 - std::pow(homologous, p.softening_m);
+  return 1.0 - std::pow(homologous_temperature(p, temperature), p.softening_m);
 }
 
 double FlowStress::operator()(double plastic_strain, double plastic_strain_rate) const {
@@ -62,7 +66,7 @@ double failure_strain(const DuctileFailure& f, const Sym3& stress, double plasti
   const double triaxiality = q > 0.0 ? trace(stress) / (3.0 * q) : 0.0;
   const double ratio = plastic_strain_rate / f.rate0;
   return (f.d1 + f.d2 * std::exp(f.d3 * triaxiality)) *
-         (1.0 + f.d4 * std::log(ratio > 1.0 ? ratio : 1.0));
+         (1.0 + f.d4 * std::log(ratio > 1.0 ? ratio : 1.0)) * f.thermal_factor;
 }
 
 }  // namespace abut

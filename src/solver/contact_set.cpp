@@ -15,6 +15,7 @@
 #include "abut/element/stable_step.hpp"
 #include "abut/mesh/skin.hpp"
 #include "abut/solver/contact_surfaces.hpp"
+#include "contact_checks.hpp"
 
 namespace abut {
 
@@ -110,51 +111,6 @@ TangentialLaw tangential_law_of(const ContactSpec& spec, const FunctionTable* ta
       return Coulomb{0.0, 0.0, {}, RenardFriction{c}};
   }
   return Frictionless{};
-}
-
-// Heat through the contact: fid_thermal of *CONTACT (h of pres and gap; a *CURVE: of pres) or
-// the law of *CONTACT_THERMAL, and fric_heat with its share.
-ThermalContactSettings thermal_of(const Model& model, const ContactSpec& spec) {
-  ThermalContactSettings s;
-  if (spec.thermal.valid() && spec.conductance)
-    throw InputError(spec.thermal_where,
-                     "*CONTACT " + std::to_string(spec.id) +
-                         " has a conductance function (fid_thermal) already: give one of them");
-  const FunctionTable* table = &model.functions;
-  const double term = model.time.end_time;
-  if (spec.thermal.valid()) {
-    const FunctionRef f = spec.thermal;
-    s.conductance = FunctionConductance{[table, f, term](double pres, double gap) {
-      Variables v;
-      v.pres = pres;
-      v.gap = gap;
-      v.term = term;
-      return table->value(f, pres, v);
-    }};
-  } else if (spec.conductance) {
-    using Law = ContactSpec::Conductance::Law;
-    const ContactSpec::Conductance& c = *spec.conductance;
-    switch (c.law) {
-      case Law::Pressure:
-        s.conductance = PressureConductance{c.nominal, c.hardness, c.exponent};
-        break;
-      case Law::OpenClosed:
-        s.conductance = OpenClosedConductance{c.closed, c.open};
-        break;
-      case Law::Distance: {
-        const FunctionRef f = spec.distance_conductance;
-        s.conductance = DistanceConductance{[table, f, term](double gap) {
-          Variables v;
-          v.gap = gap;
-          v.term = term;
-          return table->value(f, gap, v);
-        }};
-        break;
-      }
-    }
-  }
-  if (spec.friction_heat) s.friction_heat = FrictionHeatSplit{spec.friction_heat_to_surface1};
-  return s;
 }
 
 ContactSettings settings_of(const Model& model, const ContactSpec& spec) {
@@ -422,6 +378,51 @@ void describe(const ContactSpec& spec, ContactReport& r) {
 
 }  // namespace
 
+// Heat through the contact: fid_thermal of *CONTACT (h of pres and gap; a *CURVE: of pres) or
+// the law of *CONTACT_THERMAL, and fric_heat with its share.
+ThermalContactSettings thermal_of(const Model& model, const ContactSpec& spec) {
+  ThermalContactSettings s;
+  if (spec.thermal.valid() && spec.conductance)
+    throw InputError(spec.thermal_where,
+                     "*CONTACT " + std::to_string(spec.id) +
+                         " has a conductance function (fid_thermal) already: give one of them");
+  const FunctionTable* table = &model.functions;
+  const double term = model.time.end_time;
+  if (spec.thermal.valid()) {
+    const FunctionRef f = spec.thermal;
+    s.conductance = FunctionConductance{[table, f, term](double pres, double gap) {
+      Variables v;
+      v.pres = pres;
+      v.gap = gap;
+      v.term = term;
+      return table->value(f, pres, v);
+    }};
+  } else if (spec.conductance) {
+    using Law = ContactSpec::Conductance::Law;
+    const ContactSpec::Conductance& c = *spec.conductance;
+    switch (c.law) {
+      case Law::Pressure:
+        s.conductance = PressureConductance{c.nominal, c.hardness, c.exponent};
+        break;
+      case Law::OpenClosed:
+        s.conductance = OpenClosedConductance{c.closed, c.open};
+        break;
+      case Law::Distance: {
+        const FunctionRef f = spec.distance_conductance;
+        s.conductance = DistanceConductance{[table, f, term](double gap) {
+          Variables v;
+          v.gap = gap;
+          v.term = term;
+          return table->value(f, gap, v);
+        }};
+        break;
+      }
+    }
+  }
+  if (spec.friction_heat) s.friction_heat = FrictionHeatSplit{spec.friction_heat_to_surface1};
+  return s;
+}
+
 ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
                        std::span<const double> vx0, std::span<const double> vy0,
                        std::span<const double> vz0)
@@ -491,6 +492,7 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
     report.pairs = interfaces_.back().pair_stiffness();
     report.points = interfaces_.back().point_count();
     report.released_points = interfaces_.back().released_points();
+    report.warnings = penalty_warnings(model, report);
     reports_.push_back(std::move(report));
   }
   cfx_.assign(nodes.size(), 0.0);

@@ -12,6 +12,10 @@
 
 namespace abut {
 
+// The thermal contact of a *CONTACT (laws/thermal.hpp): the conductance of fid_thermal (h of pres
+// and gap; a *CURVE: of pres) or of *CONTACT_THERMAL, and the friction heat split of fric_heat.
+ThermalContactSettings thermal_of(const Model& model, const ContactSpec& spec);
+
 class ContactSet {
  public:
   // `node_mass`: lumped nodal masses; initial velocities give v_max of the automatic penalty.

@@ -22,15 +22,15 @@ void Simulation::Impl::couple_heat() {
     if (info.rigid) continue;
     const Material& material = *model.find_material(model.find_part(info.part_id)->material_id);
     const auto* metal = std::get_if<MetalParams>(&material.params);
-    const bool softens = metal != nullptr && metal->softens();
+    const bool softens = metal != nullptr && metal->thermal();  // softening or d5
     const ThermalProperties* props =
         material.thermal_id != 0 ? model.thermal.find(material.thermal_id) : nullptr;
     // Shells conduct heat (shell4_thermal.hpp) but do not take the temperature back yet.
     if (info.shell_block >= 0 && (softens || (props != nullptr && props->expansion != 0.0)))
       throw InputError(material.where, material_name(material) + " of part " +
                                            std::to_string(info.part_id) +
-                                           ": thermal expansion and softening of shells are not "
-                                           "supported yet");
+                                           ": thermal expansion, softening and the failure "
+                                           "strain's d5 of shells are not supported yet");
     if (info.shell_block >= 0 && metal != nullptr && props != nullptr &&
         props->taylor_quinney > 0.0)
       throw InputError(material.where, material_name(material) + " of part " +
@@ -41,8 +41,9 @@ void Simulation::Impl::couple_heat() {
       if (softens)
         throw InputError(material.where,
                          material_name(material) +
-                             ": thermal softening (m, T0, Tm) needs a temperature field; give the "
-                             "material thermal properties (thpid)");
+                             ": thermal softening (m, T0, Tm) and the failure strain's thermal "
+                             "factor (d5) need a temperature field; give the material thermal "
+                             "properties (thpid)");
       continue;
     }
     if (info.block < 0) continue;

@@ -116,7 +116,6 @@ struct Simulation::Impl {
   void build_force_slots();
   void advance_heat();
   void gather_contact_heat(double dt);
-  void check_thermal_contacts() const;
   void couple_heat();
   void gather_plastic_heat();
   std::string limit_description() const;

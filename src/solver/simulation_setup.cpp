@@ -208,7 +208,7 @@ void Simulation::Impl::setup() {
     if (!heat->active()) heat.reset();
     heat_time = t;
   }
-  check_thermal_contacts();
+  check_thermal_contacts(model);  // heat.hpp
   couple_heat();
   compute_forces(0.0);
   dt_initial = std::min(model.time.step_scale * stable, model.time.max_step);
@@ -241,27 +241,6 @@ void Simulation::Impl::check_part_mass(const Part& part, const std::vector<doubl
                    fmt::format("part {} has {} mass {:.4g} (from {}); expected a finite, positive "
                                "mass: check the density and the element volumes",
                                part.id, rigid ? "rigid" : "lumped", total, density));
-}
-
-// A contact that exchanges heat needs a temperature on both its surfaces.
-void Simulation::Impl::check_thermal_contacts() const {
-  for (const ContactSpec& spec : model.contacts) {
-    if (!spec.exchanges_heat()) continue;
-    const char* what = spec.friction_heat ? "fric_heat" : "the contact conductance";
-    if (!heat)
-      throw InputError(spec.where, std::string(what) +
-                                       " needs a temperature field: give the materials of the "
-                                       "contacting parts thermal properties (thpid)");
-    const std::span<const double> capacity = heat->capacity();
-    for (const EntityRef& surface : {spec.surface1, spec.surface2})
-      for (const std::int32_t i : model.nodes_of(surface))
-        if (!(capacity[static_cast<std::size_t>(i)] > 0.0))
-          throw InputError(spec.where,
-                           std::string(what) + " needs a temperature on both surfaces, but node " +
-                               std::to_string(model.mesh.nodes.id[static_cast<std::size_t>(i)]) +
-                               " of the contact has none: give the material of its part thermal "
-                               "properties (thpid)");
-  }
 }
 
 // Node -> element force slots (CSR) in block and element order, hexes first, then shells.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "abut/solver/static_heat.hpp"
 #include "abut/solver/static_solver.hpp"
 #include "test_deck_helpers.hpp"
 
@@ -121,6 +122,37 @@ TEST(DeckExamples, StaticBlockPress) {
   ASSERT_EQ(force.size(), 2u);
   EXPECT_NEAR(force[0], 18.07e3, 0.01e3);
   EXPECT_NEAR(force[1] / force[0], 0.5, 0.005);
+}
+
+// The thermal contact example: each state's heat flow through the die-plate contact rises with
+// the press force and stays below the bound of the die's own resistance L/(kA) = 0.5 K/W in series
+// with the contact's at the mean pressure p: h(p) = h_c0 (p/H_v)^w is concave, so the points'
+// conductance sums to at most h(p) A, and the plate's resistance can only add (Incropera & DeWitt,
+// section 3.1: resistances in series).
+TEST(DeckExamples, HotDiePress) {
+  const Model m = read_deck(example("hot_die_press.k"));
+  ASSERT_EQ(m.static_steps.size(), 2u);
+  StaticSolver solver(m);
+  StaticHeat heat(m);
+  ASSERT_TRUE(heat.active());
+  std::vector<double> flow, force;
+  solver.run([&](const StaticIncrement& inc) {
+    heat.solve(solver, inc.total_time);
+    double f = 0.0;  // of the plate on the die, both passes
+    const auto passes = solver.contacts();
+    for (std::size_t k = 0; k < passes.size(); ++k)
+      f += (k == 0 ? 1.0 : -1.0) * passes[k].total_force().z;
+    force.push_back(f);
+    flow.push_back(heat.contact_heat_flow()[0]);
+  });
+  ASSERT_EQ(flow.size(), 4u);
+  const double area = 0.02 * 0.02, die = 0.01 / (50.0 * area);
+  for (std::size_t i = 0; i < flow.size(); ++i) {
+    const double h = 1.0e5 * std::pow(force[i] / area / 1.0e9, 0.95);
+    EXPECT_GT(flow[i], 0.0);
+    EXPECT_LT(flow[i], 280.0 / (die + 1.0 / (h * area)));
+    if (i > 0) EXPECT_GT(flow[i], flow[i - 1]);
+  }
 }
 
 }  // namespace

@@ -113,8 +113,14 @@ TEST(DeckMetals, DamagePropertyBindsToTheMetalsDid) {
   const InputError missing = error_of(kMesh + jc);
   EXPECT_EQ(missing.where().field, "did");
   EXPECT_EQ(missing.where().line, 12u);
-  EXPECT_EQ(error_of(kMesh + jc + "*PROP_DAMAGE_JC\n4, 0.05, 0, 0, 0, 1.0\n").where().field,
-            "d5");  // thermal: no temperature field
+  // The thermal factor d5 needs the metal's Tm above T0 (line 2 of *MAT_JC).
+  const InputError no_tm = error_of(kMesh + jc + "*PROP_DAMAGE_JC\n4, 0.05, 0, 0, 0, 1.0\n");
+  EXPECT_EQ(no_tm.where().field, "did");
+  EXPECT_NE(no_tm.message().find("melting temperature Tm above T0"), std::string::npos);
+  const Model hot = model_of(kMesh +
+                             "*MAT_JC\n1, 7800.0, 210.0e9, 0.3, 4\n300e6, 500e6, 0.5, 0, 0, "
+                             "20, 1520\n*PROP_DAMAGE_JC\n4, 0.05, 0, 0, 0, 1.5\n");
+  EXPECT_DOUBLE_EQ(std::get<MetalParams>(hot.materials.at(0).params).failure.d5, 1.5);
   EXPECT_EQ(error_of(kMesh + jc + "*PROP_DAMAGE_JC\n4, 0.0\n").where().field, "d1");
   EXPECT_EQ(error_of(kMesh + "*MAT_ELASTIC\n1, 7800.0, 210.0e9, 0.3, 4\n").where().field, "did");
 }

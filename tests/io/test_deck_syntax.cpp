@@ -97,7 +97,9 @@ TEST(DeckSyntax, ExtraDataLineIsAnError) {
 }
 
 TEST(DeckSyntax, DeckWithoutTimeIsAnError) {
-  EXPECT_THAT(error_of("*UNIT_SYSTEM\nSI\n").message(), HasSubstr("no *TIME"));
+  const InputError e = error_of("*UNIT_SYSTEM\nSI\n# the end\n");
+  EXPECT_THAT(e.message(), HasSubstr("ends without *TIME"));
+  EXPECT_EQ(e.where().line, 2u);  // its last line (comments aside): file:line for every error
 }
 
 TEST(DeckSyntax, IntegerFieldAcceptsIntegralRealsOnly) {

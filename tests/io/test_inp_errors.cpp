@@ -76,18 +76,19 @@ TEST(InpErrors, Keywords) {
                {24, "*DYNAMIC is not supported yet by abut: its implicit solver runs *STATIC"});
   expect_error(kModel + "*STEP\n*FREQUENCY\n10\n*END STEP\n", {24, "*FREQUENCY is not supported"});
   expect_error(kModel + "*STEP\n*HEAT TRANSFER\n*END STEP\n", {24, "not supported yet"});
-  expect_error(kModel, {0, "the input has no *STEP"});
+  expect_error(kModel, {21, "the input ends without *STEP"});  // at its last card
   const std::string interaction =
       "*SURFACE INTERACTION, NAME=A\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n1.e7\n";
-  expect_error(kModel + interaction +
-                   "*STEP\n*STATIC\n*CHANGE SURFACE BEHAVIOR, INTERACTION=A\n*END STEP\n",
-               {28, "must be followed by a *SURFACE BEHAVIOR card"});
+  expect_error(
+      kModel + interaction + "*STEP\n*STATIC\n*CHANGE SURFACE BEHAVIOR, INTERACTION=A\n*END STEP\n",
+      {28, "must be followed by a *SURFACE BEHAVIOR card"});
   expect_error(kModel + interaction +
                    "*STEP\n*STATIC\n*CHANGE SURFACE BEHAVIOR, INTERACTION=A\n*SURFACE "
                    "BEHAVIOR, PRESSURE-OVERCLOSURE=TIED\n1.e8\n*END STEP\n",
                {29, "changing a contact to TIED", "PRESSURE-OVERCLOSURE"});
-  expect_error(kModel + interaction + "*STEP\n*STATIC\n*SURFACE BEHAVIOR, "
-                                      "PRESSURE-OVERCLOSURE=LINEAR\n1.e8\n*END STEP\n",
+  expect_error(kModel + interaction +
+                   "*STEP\n*STATIC\n*SURFACE BEHAVIOR, "
+                   "PRESSURE-OVERCLOSURE=LINEAR\n1.e8\n*END STEP\n",
                {28, "after *CHANGE SURFACE BEHAVIOR"});
   expect_error(kModel + interaction +
                    "*STEP\n*STATIC\n*CHANGE SURFACE BEHAVIOR, INTERACTION=A\n*SURFACE "

@@ -135,5 +135,33 @@ TEST(DuctileFailure, APointFailsWhenItsDamageReachesOneAndThenCarriesNoStress) {
   for (int i = 0; i < 6; ++i) EXPECT_EQ(after[i], 0.0);
 }
 
+// The thermal factor of Johnson & Cook (1985, Eng. Fract. Mech. 21:31, eq. 2): eps_f times
+// 1 + d5 T*, T* = (T - T0) / (Tm - T0) the homologous temperature of the metal (clamped to [0, 1],
+// as for the softening), set by the point law at its temperature. A point at T* = 0.5 with d5 = 0.6
+// fails at 1.3 times the strain, and the damage it accumulates shows it.
+TEST(DuctileFailure, ThermalFactorOfTheFailureStrain) {
+  FunctionTable table;
+  MetalParams p;
+  p.density = 7800, p.young = 2e11, p.poisson = 0.3, p.johnson_cook = true, p.a = 3e8;
+  p.room_temperature = 20.0, p.melting_temperature = 1520.0;
+  DuctileFailure f;
+  f.active = true, f.d1 = 0.1, f.d5 = 0.6;
+  const LameConstants lame{2e11 * 0.3 / (1.3 * 0.4), 2e11 / 2.6};
+  const MetalPoint law{lame, FlowStress(p, &table), f};
+  const Sym3 uniaxial{{400e6, 0, 0, 0, 0, 0}};
+  EXPECT_NEAR(failure_strain(law.at_temperature(770.0).failure, uniaxial, 0.0), 0.1 * 1.3, 1e-15);
+  EXPECT_NEAR(failure_strain(law.at_temperature(-100.0).failure, uniaxial, 0.0), 0.1, 1e-15);
+  EXPECT_NEAR(failure_strain(law.at_temperature(5000.0).failure, uniaxial, 0.0), 0.16, 1e-15);
+  EXPECT_EQ(failure_strain(law.failure, uniaxial, 0.0), 0.1);  // no temperature: the factor is 1
+  // Uniaxial plastic flow at T* = 0.5: D = epsp / (1.3 eps_f).
+  const MetalPoint hot = law.at_temperature(770.0);
+  PointHistory h;
+  Sym3 stress;
+  for (int i = 0; i < 200; ++i)
+    stress = hot.update(stress, Sym3{{1e-4, -0.5e-4, -0.5e-4, 0, 0, 0}}, 1e-3, h);
+  ASSERT_GT(h.plastic_strain, 0.0);
+  EXPECT_NEAR(h.damage, h.plastic_strain / 0.13, 1e-12);
+}
+
 }  // namespace
 }  // namespace abut

@@ -162,5 +162,37 @@ TEST(ContactSetup, InvertedHexOfASurfaceIsAtTheSurfaceField) {
   }
 }
 
+// Start-up check (issue 13): two steel blocks, one meshed 20 times finer than the other. Each
+// part's automatic penalty follows its smallest element (seed 000) and the pair runs with the
+// smaller one, so the fine block is held by the coarse block's soft springs: a warning naming both
+// parts, once per pair (both passes of the symmetric contact). Equal meshes: no warning.
+TEST(ContactSetup, PairGovernedByTheOtherSidesLargerElementsIsAWarning) {
+  const auto reports_of = [](int fine) {
+    const std::string n = std::to_string(fine), nz = std::to_string(fine / 2);
+    const std::string deck =
+        "*UNIT_SYSTEM\nSI\n*TIME\n1.0e-4\n*COMPONENT_BOX\n1, 1, 2, 2, 1\n"
+        "0.0, 0.0, 0.0, 0.02, 0.02, 0.01\n*COMPONENT_BOX\n2, 2, " +
+        n + ", " + n + ", " + nz +
+        "\n0.0, 0.0, 0.011, 0.02, 0.02, 0.021\n*MAT_ELASTIC\n1, 7800.0, "
+        "210.0e9, 0.3\n*PART\n1, 1\n2, 1\n*CONTACT\n1\nP, 1, P, 2\n*END\n";
+    const Model model = read_deck_string(deck, "contact.k");
+    const Simulation sim(model);
+    return sim.contact_reports();
+  };
+  const std::vector<ContactReport> equal = reports_of(2);
+  EXPECT_TRUE(equal[0].warnings.empty());
+  const std::vector<ContactReport> fine = reports_of(40);
+  ASSERT_EQ(fine[0].warnings.size(), 1u);
+  const std::string& w = fine[0].warnings[0];
+  double coarse_penalty = 0.0, fine_penalty = 0.0;
+  for (const PartPenalty& p : fine[0].parts)
+    (p.part_id == 1 ? coarse_penalty : fine_penalty) = p.penalty;
+  EXPECT_GE(fine_penalty / coarse_penalty, 10.0);
+  EXPECT_NE(w.find("contact 1: parts 1 and 2 touch with part 1's automatic penalty"),
+            std::string::npos)
+      << w;
+  EXPECT_NE(w.find("let part 2 penetrate deeper"), std::string::npos) << w;
+}
+
 }  // namespace
 }  // namespace abut

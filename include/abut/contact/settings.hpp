@@ -72,6 +72,11 @@ struct ErosionSettings {
   bool keep_free_nodes = true;
 };
 
+// A point within this fraction of its element thickness of its partner counts as touching:
+// sticking contact ties it, and a thermal contact conducts as closed (this absorbs the round-off
+// gaps of coincident surfaces).
+inline constexpr double kTouchingGapFraction = 1e-6;
+
 // Heat through the contact (issue 11; laws/thermal.hpp). Acts when the caller passes nodal
 // temperatures and a heat array (ContactInput::temperature, ContactForces::heat).
 struct ThermalContactSettings {

@@ -30,8 +30,10 @@
 #include "abut/contact/broad_phase.hpp"
 #include "abut/contact/interface.hpp"
 #include "abut/contact/laws/normal.hpp"
+#include "abut/contact/laws/thermal.hpp"
 #include "abut/contact/settings.hpp"
 #include "abut/contact/surface.hpp"
+#include "abut/contact/thermal_contact_element.hpp"
 
 namespace abut {
 
@@ -83,8 +85,10 @@ struct StaticContactPoint {
   std::int32_t node = -1;   // node-to-surface: the secondary node
   std::int32_t facet = -1;  // surface-to-surface: its own facet
   Vec3 position;
-  bool paired = false;  // has a partner facet, open or closed
-  bool active = false;  // closed: carries a spring
+  bool paired = false;        // has a partner facet, open or closed
+  std::int32_t partner = -1;  // paired: the partner facet (of the main surface)
+  ContactWeights weights;     // paired: the nodes of its element with +N own, -phi partner
+  bool active = false;        // closed: carries a spring
   bool slipping = false;
   double area = 0.0;
   Vec3 normal;            // partner's normal (the push direction)
@@ -123,6 +127,10 @@ class StaticContact {
   const StaticContactSettings& settings() const { return settings_; }
 
   std::span<const StaticContactElement> elements() const { return elements_; }
+  // Heat conduction through the contact at the last evaluation (issue 11, steady heat): one
+  // element per paired point, open or closed, whose conductance h(pressure, gap) A is > 0
+  // (laws/thermal.hpp; an open point has no pressure), over the weights of its contact element.
+  std::vector<ThermalContactElement> thermal_elements(const ConductanceLaw& law) const;
   std::span<const StaticContactPoint> points() const { return points_; }
   bool symmetric() const { return symmetric_; }  // false when a point slips with friction
   const ContactSurface& secondary() const { return secondary_; }

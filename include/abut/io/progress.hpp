@@ -3,7 +3,7 @@
 // return), at most about ten times a second; otherwise (a log file, CI) one plain line at every
 // tenth of the run, e.g.
 //     40%  t=4.00e-04  cycle 1234  ETA 0:00:03
-// and a final line with the wall time. The output stream and the wall clock are injected, so the
+// and a final line with the wall time (on a terminal: the bar's last redraw, not another line). The output stream and the wall clock are injected, so the
 // reporter can be tested.
 #include <cstdint>
 #include <functional>
@@ -33,6 +33,7 @@ class ProgressReporter {
  private:
   double fraction(double time) const;
   std::string status(double time, std::int64_t cycle, bool final) const;
+  void draw_bar(double time, std::int64_t cycle, bool final);
 
   double start_time_, end_time_;
   std::ostream& out_;

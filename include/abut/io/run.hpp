@@ -4,6 +4,7 @@
 //   energy.csv, parts.csv                (time histories)
 //   summary.json                         (cycles, times, speed, final energies, parts)
 #include <filesystem>
+#include <functional>
 #include <iosfwd>
 #include <string>
 
@@ -15,10 +16,14 @@ struct RunOptions {
   std::filesystem::path output_dir;  // created if missing
   int threads = 0;                   // 0: OpenMP default
   bool progress = true;              // progress bar / lines on stderr
+  // Polled after every cycle (explicit) or increment (static): true stops the run there, with
+  // a final state and summary.json written (RunReport::interrupted). Empty: never.
+  std::function<bool()> stop_requested = {};
 };
 
 struct RunReport {
   bool stable = true;         // false: the run went unstable and stopped early
+  bool interrupted = false;   // stopped by RunOptions::stop_requested before its end
   std::string message;        // the instability message when !stable
   double end_time = 0.0;
   long long cycles = 0;
@@ -28,8 +33,10 @@ struct RunReport {
   std::filesystem::path pvd;  // results.pvd
 };
 
-// Throws InputError for models the solver cannot run; an instability is reported, not thrown,
-// after the last good state has been written.
+// Once the model is validated, the output directory is claimed (OutputDirectory: locked, a
+// previous run's files removed). Throws InputError for models the solver cannot run and output
+// directories that cannot be used; an instability is reported, not thrown, after the last good
+// state has been written.
 // A model with static steps (Model::static_steps) runs run_static_analysis instead.
 RunReport run_simulation(const Model& model, const RunOptions& options, std::ostream& log);
 

@@ -42,11 +42,12 @@ struct RigidParams {
 // failure strain eps_f = [d1 + d2 exp(d3 sigma*)] [1 + d4 ln max(epsp_rate / rate0, 1)] with the
 // triaxiality sigma* = mean stress / von Mises stress; the damage D = sum d epsp / eps_f grows
 // with the plastic strain, and a point with D >= 1 has failed: it carries no stress from then on.
-// d1 alone is a constant plastic failure strain. (The thermal factor 1 + d5 T* needs a
-// temperature field.)
+// d1 alone is a constant plastic failure strain. With a temperature field the product has the
+// third factor 1 + d5 T*, T* the homologous temperature of the metal's T0 and Tm (metal.hpp).
 struct DuctileFailure {
   bool active = false;
-  double d1 = 0.0, d2 = 0.0, d3 = 0.0, d4 = 0.0, rate0 = 1.0;
+  double d1 = 0.0, d2 = 0.0, d3 = 0.0, d4 = 0.0, d5 = 0.0, rate0 = 1.0;
+  double thermal_factor = 1.0;  // 1 + d5 T* at the point's temperature (MetalPoint::at_temperature)
 };
 
 struct MetalParams {
@@ -61,6 +62,8 @@ struct MetalParams {
   // m = 0 switches it off; it needs a temperature field (the material's thermal properties).
   double softening_m = 0.0, room_temperature = 0.0, melting_temperature = 0.0;
   bool softens() const { return softening_m > 0.0; }
+  // The law depends on the temperature: softening, or a failure strain with d5.
+  bool thermal() const { return softens() || (failure.active && failure.d5 != 0.0); }
 };
 
 using MaterialParams = std::variant<ElasticParams, MooneyRivlinParams, RigidParams, MetalParams>;

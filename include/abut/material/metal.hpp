@@ -18,6 +18,8 @@ namespace abut {
 // so the flow stress is unchanged at and below T0 and vanishes at the melting temperature Tm.
 // 1 when the material does not soften (m = 0).
 double thermal_softening(const MetalParams& params, double temperature);
+// T* = (T - T0) / (Tm - T0) clamped to [0, 1]; 0 without a melting temperature above T0.
+double homologous_temperature(const MetalParams& params, double temperature);
 
 // sigma_y(epsp, epsp_rate) of a metal; the table evaluates *MAT_METAL's curve. The same factor
 // 1 - T*^m multiplies *MAT_METAL's curve and Johnson-Cook's product (at_temperature).
@@ -31,6 +33,7 @@ class FlowStress {
     f.thermal_factor_ = thermal_softening(*p_, temperature);
     return f;
   }
+  const MetalParams& params() const { return *p_; }
 
  private:
   const MetalParams* p_;

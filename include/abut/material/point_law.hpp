@@ -56,10 +56,13 @@ struct MetalPoint {
     }
     return u.stress;
   }
-  // The law at an element temperature (issue 11): the thermally softened flow stress.
+  // The law at an element temperature (issue 11): the thermally softened flow stress and the
+  // failure strain's factor 1 + d5 T* (Johnson & Cook 1985).
   MetalPoint at_temperature(double temperature) const {
     MetalPoint p = *this;
     p.flow = flow.at_temperature(temperature);
+    p.failure.thermal_factor =
+        1.0 + failure.d5 * homologous_temperature(flow.params(), temperature);
     return p;
   }
 };

@@ -27,6 +27,7 @@ struct ContactReport {
   std::string gap_rule, erosion_rule, edge_rule;
   std::size_t points = 0;           // contact points (integration points or nodes, all passes)
   std::size_t released_points = 0;  // initially deeper than delta0_max
+  std::vector<std::string> warnings;  // start-up checks (solver/contact_checks.hpp)
   ContactStats stats;
 };
 

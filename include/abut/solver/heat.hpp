@@ -16,6 +16,7 @@
 #include <span>
 #include <vector>
 
+#include "abut/contact/thermal_contact_element.hpp"
 #include "abut/solver/model.hpp"
 
 namespace abut {
@@ -25,6 +26,9 @@ bool is_thermal_part(const Model& model, std::int64_t part_id);
 // Per node, 1 when it carries a temperature: a node of a hexahedron or shell of a thermal part.
 // The one definition of the thermal nodes, for the heat solver and for the deck's conditions.
 std::vector<std::uint8_t> thermal_node_flags(const Model& model);
+// InputError at the *CONTACT when a contact exchanges heat (ContactSpec::exchanges_heat) but a
+// node of its surfaces carries no temperature.
+void check_thermal_contacts(const Model& model);
 
 // Heat balance since the start [energy]: stored = sum C (T - T0) over the thermal nodes; in =
 // what the face loads, the prescribed temperatures and the caller's sources brought in.
@@ -58,11 +62,13 @@ class HeatSolver {
 
   // Steady state at time t (issue 11, for static steps): K T = Q + S with the prescribed
   // temperatures held, face fluxes and convection at t, the caller's sources S [power] (may be
-  // empty), at coordinates x, y, z; solved directly (CHOLMOD). Replaces the temperatures; the
-  // heat balance is not advanced (nothing is stored in a steady state). InputError when no
+  // empty), at coordinates x, y, z, and the conduction through `contact` (thermal contact
+  // points, thermal_contact_element.hpp); solved directly (CHOLMOD). Replaces the temperatures;
+  // the heat balance is not advanced (nothing is stored in a steady state). InputError when no
   // temperature is held and no face convects (the temperature level is then undetermined).
   void solve_steady(double t, std::span<const double> x, std::span<const double> y,
-                    std::span<const double> z, std::span<const double> source);
+                    std::span<const double> z, std::span<const double> source,
+                    std::span<const ThermalContactElement> contact = {});
 
   const HeatBalance& balance() const;
   // Heat flowing into each node by conduction at the last advance [power] (for output).

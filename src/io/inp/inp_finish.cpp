@@ -278,9 +278,9 @@ DeckResult Reader::finish() {
                      "the step has no *END STEP: close it at the end of its cards");
   }
   if (steps.empty()) {
-    throw InputError(where(Loc{}, ""),
-                     "the input has no *STEP: abut runs static steps (*STEP, *STATIC, loads, "
-                     "*END STEP)");
+    throw InputError(where(last_card.line > 0 ? last_card : Loc{0, 1}, ""),
+                     "the input ends without *STEP: abut runs static steps (*STEP, *STATIC, "
+                     "loads, *END STEP)");
   }
   for (std::size_t i = 0; i < title_lines.size(); ++i)
     model.title += (i ? " " : "") + title_lines[i];

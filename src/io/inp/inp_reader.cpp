@@ -40,6 +40,7 @@ IdSet& Reader::element_set(const std::string& name, Loc at) {
 void Reader::read(const Card& c) {
   // Messages that start with the keyword name the line only.
   const SourceLocation line{files_[c.file], c.line, "", ""};
+  last_card = loc(c);
   if (change_friction && c.key != "*FRICTION") {
     throw InputError(where(step().changes.back().where, "*CHANGE FRICTION"),
                      "*CHANGE FRICTION must be followed by a *FRICTION card with the new friction "

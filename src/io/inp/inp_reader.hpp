@@ -190,6 +190,7 @@ class Reader {
 
   Model model;
   std::vector<std::string> notes;
+  Loc last_card;  // the last keyword read, where the input ends for what it lacks
 
   // Records, in deck order.
   std::unordered_map<std::int64_t, std::int32_t> node_index;  // user id -> index

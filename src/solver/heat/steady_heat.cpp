@@ -1,9 +1,11 @@
 // Steady heat conduction (heat.hpp, solve_steady): the conductance of the elements and of the
 // convecting faces assembled over the free thermal nodes, the held temperatures moved to the right
 // side, one direct solve. With the semi-discrete equations of heat.hpp at dT/dt = 0:
-//   (K + H) T = Q_flux + H_amb + S,
-// H the lumped convection h int N_a dA on the diagonal (as the transient step applies it), and the
-// prescribed nodes eliminated: rhs_free -= K_fp T_p.
+//   (K + H + G) T = Q_flux + H_amb + S,
+// H the lumped convection h int N_a dA on the diagonal (as the transient step applies it), G the
+// contact conductance (G_c w_a w_b for each contact point c over its element's nodes, so that it
+// draws G_c (T_point - T_partner) from one side into the other), and the prescribed nodes
+// eliminated: rhs_free -= (K + G)_fp T_p.
 #include <string>
 
 #include "abut/core/error.hpp"
@@ -14,7 +16,8 @@
 namespace abut {
 
 void HeatSolver::solve_steady(double time, std::span<const double> x, std::span<const double> y,
-                              std::span<const double> z, std::span<const double> source) {
+                              std::span<const double> z, std::span<const double> source,
+                              std::span<const ThermalContactElement> contact) {
   Impl& s = *impl_;
   if (!s.block) return;
   const Model& model = s.model;
@@ -70,6 +73,23 @@ void HeatSolver::solve_steady(double time, std::span<const double> x, std::span<
         convects = convects || c.coefficient * w[a] > 0.0;
       }
     }
+  // Contact points: G w_a w_b over their nodes; the held ones go to the right side.
+  for (const ThermalContactElement& c : contact) {
+    const ContactWeights& w = c.weights;
+    double held_difference = 0.0;  // sum over the held nodes of w_b T_b
+    for (int b = 0; b < w.count; ++b) {
+      const auto node = static_cast<std::size_t>(w.nodes[b]);
+      dofs.push_back(equation[node]);
+      if (s.prescribed[node]) held_difference += w.weights[b] * s.t[node];
+    }
+    start.push_back(static_cast<std::int64_t>(dofs.size()));
+    for (int a = 0; a < w.count; ++a) {
+      for (int b = 0; b < w.count; ++b)
+        values.push_back(c.conductance * w.weights[a] * w.weights[b]);
+      rhs_nodes[static_cast<std::size_t>(w.nodes[a])] -=
+          c.conductance * w.weights[a] * held_difference;
+    }
+  }
   bool holds = false;
   for (std::size_t i = 0; i < n; ++i) holds = holds || s.prescribed[i];
   if (!holds && !convects) {

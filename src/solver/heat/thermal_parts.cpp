@@ -1,3 +1,7 @@
+#include <algorithm>
+#include <string>
+
+#include "abut/core/error.hpp"
 #include "abut/solver/heat.hpp"
 
 namespace abut {
@@ -20,6 +24,27 @@ std::vector<std::uint8_t> thermal_node_flags(const Model& model) {
   for (std::size_t s = 0; s < mesh.shell_count(); ++s)
     if (is_thermal_part(model, mesh.shell_part[s])) mark(mesh.shells[s]);
   return flags;
+}
+
+void check_thermal_contacts(const Model& model) {
+  std::vector<std::uint8_t> thermal;
+  for (const ContactSpec& spec : model.contacts) {
+    if (!spec.exchanges_heat()) continue;
+    if (thermal.empty()) thermal = thermal_node_flags(model);
+    const std::string what = spec.friction_heat ? "fric_heat" : "the contact conductance";
+    if (std::find(thermal.begin(), thermal.end(), 1) == thermal.end())
+      throw InputError(spec.where, what +
+                                       " needs a temperature field: give the materials of the "
+                                       "contacting parts thermal properties (thpid)");
+    for (const EntityRef& surface : {spec.surface1, spec.surface2})
+      for (const std::int32_t i : model.nodes_of(surface))
+        if (!thermal[static_cast<std::size_t>(i)])
+          throw InputError(spec.where,
+                           what + " needs a temperature on both surfaces, but node " +
+                               std::to_string(model.mesh.nodes.id[static_cast<std::size_t>(i)]) +
+                               " of the contact has none: give the material of its part thermal "
+                               "properties (thpid)");
+  }
 }
 
 }  // namespace abut

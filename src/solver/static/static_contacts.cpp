@@ -27,7 +27,9 @@ void check_static(const ContactSpec& spec) {
   if (spec.initial_geometry || spec.moving_geometry)
     not_static(spec.where, "a contact region (gid_0, gid_1)");
   if (spec.wear1.valid() || spec.wear2.valid()) not_static(spec.where, "wear");
-  if (spec.exchanges_heat()) not_static(spec.where, "thermal contact");
+  // Conductance acts in the steady heat of each state (static_heat.hpp); friction heat is a power
+  // over time, which a steady state has not.
+  if (spec.friction_heat) not_static(spec.where, "friction heat (fric_heat)");
   if (spec.stick_stress) not_static(spec.where, "sticking by sigma_stick");
   if (spec.accuracy_edge) not_static(spec.where, "edge contact (accuracy level with E)");
   if (spec.sense != ContactSense::Positive)

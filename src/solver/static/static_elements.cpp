@@ -29,6 +29,11 @@ StaticElements::StaticElements(const Model& model) : model_(model) {
       throw InputError(part.where, "part " + std::to_string(part.id) + " (" + part.title +
                                        "): ductile failure (*PROP_DAMAGE_JC) is not supported in "
                                        "static steps yet");
+    if (const auto* metal = std::get_if<MetalParams>(&m); metal && metal->softens())
+      throw InputError(part.where, "part " + std::to_string(part.id) + " (" + part.title +
+                                       "): thermal softening (m > 0) is not supported in static "
+                                       "steps yet (the temperature does not act back on the "
+                                       "static mechanics): give m = 0");
   }
   hexes_ = mesh.hexes;
   ids_ = mesh.hex_id;

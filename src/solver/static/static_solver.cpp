@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -28,6 +29,11 @@ using Clock = std::chrono::steady_clock;
 // ~1e-16 (round-off); well-posed models, even with contact penalties 1e4 times the material
 // stiffness, stay far above.
 constexpr double kSingularPivotRatio = 1e-13;
+
+// A Newton correction of at most this many units of round-off (kEpsilon) of the largest
+// coordinate moves the nodes by nothing a double can hold.
+constexpr double kRoundOffUlps = 64.0;
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
@@ -109,7 +115,8 @@ struct StaticSolver::Impl {
   std::unique_ptr<LinearSolver> symmetric_solver, general_solver;
   double converged_force_sum = 0.0;  // sum of the average force q of the converged increments
   int converged_increments = 0;
-  bool indefinite = false;  // NLGEOM made the tangent indefinite: LU from then on
+  double coordinate_size = 0.0;  // the largest coordinate magnitude of the model
+  bool indefinite = false;       // NLGEOM made the tangent indefinite: LU from then on
   LinearSolver* linear = nullptr;
 
   Impl(const Model& m, StaticControls c) : model(m), controls(c), elements(m) {
@@ -124,6 +131,10 @@ struct StaticSolver::Impl {
     detail::StaticContacts set = detail::make_static_contacts(m);
     contacts = std::move(set.passes);
     contact_of = std::move(set.contact_of);
+    const Nodes& x = m.mesh.nodes;
+    for (std::size_t i = 0; i < x.size(); ++i)
+      coordinate_size =
+          std::max({coordinate_size, std::abs(x.x[i]), std::abs(x.y[i]), std::abs(x.z[i])});
   }
 
   // The dof of an equation, for messages.
@@ -210,8 +221,12 @@ struct StaticSolver::Impl {
         for (std::size_t d = 0; d < n; ++d) dumax = std::max(dumax, std::abs(state[d] - start[d]));
       }
       const bool tiny = rmax <= 1e-8 * q || (q == 0.0 && rmax == 0.0);
+      // A correction within the round-off of the coordinates cannot improve the state: a state
+      // whose forces are all round-off (no load, bodies that only touch) ends here.
+      const bool at_round_off = it > 0 && cmax <= kRoundOffUlps * kEpsilon * coordinate_size;
       const bool converged =
-          tiny || (it > 0 && rmax <= force_tolerance * q && cmax <= displacement_tolerance * dumax);
+          tiny || at_round_off ||
+          (it > 0 && rmax <= force_tolerance * q && cmax <= displacement_tolerance * dumax);
       if (converged) {
         converged_force_sum += q_now;
         ++converged_increments;

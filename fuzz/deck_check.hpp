@@ -1,0 +1,29 @@
+#pragma once
+// What `abut check` does with a deck, as one call for the fuzz harnesses (fuzz/README.md): read
+// it, then set up the solver it asks for (explicit or static), and sort the outcome.
+#include <string>
+#include <string_view>
+
+namespace abut::fuzz {
+
+enum class DeckFormat { keyword, inp };  // IMPETUS-style .k, Abaqus/CalculiX .inp
+
+enum class Verdict {
+  accepted,            // read and set up
+  rejected_located,    // InputError naming file and line: what a user should get
+  rejected_unlocated,  // InputError without a line: a defect to fix (issue 13)
+  too_large,           // std::bad_alloc: the model did not fit the harness's memory limit
+  unexpected,          // any other exception (InstabilityError at set-up, std::logic_error...)
+};
+
+struct Outcome {
+  Verdict verdict = Verdict::accepted;
+  std::string message;  // what() of the exception, empty when accepted
+};
+
+// Never throws. Deck text is read as if it were the file "fuzz.k" (or "fuzz.inp").
+Outcome check_deck(std::string_view text, DeckFormat format);
+
+const char* verdict_name(Verdict v);
+
+}  // namespace abut::fuzz

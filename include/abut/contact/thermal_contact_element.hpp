@@ -1,0 +1,33 @@
+#pragma once
+// A contact point as a heat conductor between its nodes, for steady heat (issue 11): the nodes of
+// its element with weights w_a (+N_a on the point's own nodes, -phi_a on the partner facet's), so
+// that sum_a w_a T_a = T_point - T_partner, and its conductance G = h A [power / temperature].
+// The heat flowing into node a is -G w_a sum_b w_b T_b: what one side loses the other gains.
+#include <array>
+#include <cstdint>
+
+namespace abut {
+
+// The nodes of a contact element with their weights, repeated nodes merged (a triangle repeats
+// its third node; a node-to-surface point is one node).
+struct ContactWeights {
+  std::array<std::int32_t, 8> nodes{};
+  std::array<double, 8> weights{};
+  int count = 0;
+  void add(std::int32_t node, double weight) {
+    for (int k = 0; k < count; ++k)
+      if (nodes[k] == node) {
+        weights[k] += weight;
+        return;
+      }
+    nodes[count] = node;
+    weights[count++] = weight;
+  }
+};
+
+struct ThermalContactElement {
+  ContactWeights weights;
+  double conductance = 0.0;  // G = h A [power / temperature]
+};
+
+}  // namespace abut
