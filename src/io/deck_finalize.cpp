@@ -284,18 +284,21 @@ DeckResult DeckReader::finish() {
         const auto uk = static_cast<std::size_t>(k);
         velocity[k] +=
             fcn[uk].valid() ? model.functions.value(fcn[uk], vars) : v.velocity[uk].value;
-        // A NaN or infinite start (acos(2), 1/0 in a *FUNCTION) is an error of the deck, not an
-        // instability of the run: say which field, function and node gave it.
-        if (!std::isfinite(velocity[k])) {
+        // A NaN or infinite start (acos(2), 1/0 in a *FUNCTION), or one so large that the first
+        // strain rates overflow, is an error of the deck, not an instability of the run: say
+        // which field, function and node gave it. No unit system makes 1e100 a speed.
+        constexpr double kLargestSpeed = 1e100;
+        if (!(std::fabs(velocity[k]) <= kLargestSpeed)) {
           const std::string source =
               fcn[uk].valid() ? "function " + std::to_string(*v.velocity[uk].function_id)
-                              : std::string("omega x (x - x0)");
+              : norm(v.angular_velocity) == 0.0 ? std::string("the value")
+                                             : std::string("the value plus omega x (x - x0)");
           throw InputError(v.velocity_where[uk],
-                           source + " gives a non-finite initial velocity (" +
-                               format_number(velocity[k]) + ") at node " +
+                           source + " gives an initial velocity of " + format_number(velocity[k]) +
+                               " at node " +
                                std::to_string(mesh.nodes.id[static_cast<std::size_t>(i)]) +
                                " (" + format_number(p.x) + ", " + format_number(p.y) + ", " +
-                               format_number(p.z) + ")");
+                               format_number(p.z) + "): expected a finite speed up to 1e100");
         }
       }
       model.vx0[static_cast<std::size_t>(i)] = velocity.x;

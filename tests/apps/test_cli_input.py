@@ -88,7 +88,7 @@ with tempfile.TemporaryDirectory() as tmp:
     refused("tiny_rigid.k", TINY_RIGID, 20, ["initial stable time step"])
     refused("big_density.k", BOX.replace("7800.0", "1e308"), 11, ["mass inf"])
     refused("nan_velocity.k", BOX + "*FUNCTION\n4\nacos(2)\n*INITIAL_VELOCITY\nP, 1, fcn(4), 0, 0\n",
-            16, ["function 4", "non-finite"])
+            16, ["function 4", "expected a finite speed"])
 
     r = run("check", "/dev/zero")
     check(r.returncode == 2 and "not a regular file" in r.stderr, "check /dev/zero: exit 2 at once")

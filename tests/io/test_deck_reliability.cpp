@@ -125,8 +125,16 @@ TEST(DeckReliability, NonFiniteInitialVelocityFromAFunctionIsLocated) {
     EXPECT_EQ(e.where().line, 17u) << expression;
     EXPECT_EQ(e.where().keyword, "*INITIAL_VELOCITY");
     EXPECT_EQ(e.where().field, "v_y0");
-    EXPECT_THAT(e.message(), HasSubstr("function 4 gives a non-finite initial velocity"));
+    EXPECT_THAT(e.message(), HasSubstr("function 4 gives an initial velocity of "));
   }
+}
+
+TEST(DeckReliability, AbsurdInitialVelocityIsLocated) {
+  // Finite, but the first strain rates overflow (found by deck_fuzz).
+  const InputError e = error_of(std::string(kBoxModel) + "*INITIAL_VELOCITY\nP, 1, 0, 0, 1e308\n");
+  EXPECT_EQ(e.where().line, 14u);
+  EXPECT_EQ(e.where().field, "v_z0");
+  EXPECT_THAT(e.message(), HasSubstr("the value gives an initial velocity of 1e+308"));
 }
 
 TEST(DeckReliability, IncludeIdOffsetThatOverflowsIsLocated) {
