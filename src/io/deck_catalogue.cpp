@@ -307,6 +307,10 @@ std::optional<std::string> closest_keyword(const std::string& keyword) {
   std::size_t best = std::max<std::size_t>(2, keyword.size() / 4) + 1;
   std::optional<std::string> suggestion;
   const auto consider = [&](std::string_view candidate) {
+    // A length difference alone costs that many edits: skip the quadratic distance then (a
+    // keyword of a million characters would take seconds against every name).
+    const std::size_t longer = std::max(keyword.size(), candidate.size());
+    if (longer - std::min(keyword.size(), candidate.size()) >= best) return;
     const std::size_t d = edit_distance(keyword, candidate);
     if (d < best) {
       best = d;

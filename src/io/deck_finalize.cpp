@@ -4,6 +4,7 @@
 // thermal keywords get their nodes and faces (deck_finalize_thermal.cpp); last, a deck with
 // *STATIC gets its static steps' loads (deck_finalize_static.cpp).
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -181,6 +182,7 @@ DeckResult DeckReader::finish() {
   // adjustment and initial velocities take them up.
   resolve_shell_nodes();
   merge_duplicated_nodes();
+  check_element_volumes();
   resolve_shells();
 
   // Rotations are degrees of freedom of rigid parts and of shell nodes.
@@ -232,6 +234,7 @@ DeckResult DeckReader::finish() {
     c.parts = solid_parts_of(o.entity);
     c.order = o.order;
     if (o.region) c.region = geometry_of(model, *o.region);
+    c.where = with_field(o.entity.where, "");  // the line of the *CHANGE_P-ORDER row
     order_changes.push_back(std::move(c));
   }
   std::vector<SurfaceSmoothing> smoothings;
@@ -241,6 +244,7 @@ DeckResult DeckReader::finish() {
     c.max_angle = s.max_angle;
     c.internal = s.internal;
     if (s.region) c.region = geometry_of(model, *s.region);
+    c.where = with_field(s.entity.where, "");  // the *SMOOTH_MESH row or the *PART row
     smoothings.push_back(std::move(c));
   }
   if (!order_changes.empty() || !smoothings.empty()) {
@@ -280,6 +284,22 @@ DeckResult DeckReader::finish() {
         const auto uk = static_cast<std::size_t>(k);
         velocity[k] +=
             fcn[uk].valid() ? model.functions.value(fcn[uk], vars) : v.velocity[uk].value;
+        // A NaN or infinite start (acos(2), 1/0 in a *FUNCTION), or one so large that the first
+        // strain rates overflow, is an error of the deck, not an instability of the run: say
+        // which field, function and node gave it. No unit system makes 1e100 a speed.
+        constexpr double kLargestSpeed = 1e100;
+        if (!(std::fabs(velocity[k]) <= kLargestSpeed)) {
+          const std::string source =
+              fcn[uk].valid() ? "function " + std::to_string(*v.velocity[uk].function_id)
+              : norm(v.angular_velocity) == 0.0 ? std::string("the value")
+                                             : std::string("the value plus omega x (x - x0)");
+          throw InputError(v.velocity_where[uk],
+                           source + " gives an initial velocity of " + format_number(velocity[k]) +
+                               " at node " +
+                               std::to_string(mesh.nodes.id[static_cast<std::size_t>(i)]) +
+                               " (" + format_number(p.x) + ", " + format_number(p.y) + ", " +
+                               format_number(p.z) + "): expected a finite speed up to 1e100");
+        }
       }
       model.vx0[static_cast<std::size_t>(i)] = velocity.x;
       model.vy0[static_cast<std::size_t>(i)] = velocity.y;

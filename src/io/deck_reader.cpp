@@ -2,7 +2,10 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
+
+#include "memory_budget.hpp"
 
 namespace abut {
 namespace fs = std::filesystem;
@@ -12,11 +15,22 @@ namespace {
 
 constexpr int kMaxIncludeDepth = 32;
 
-std::vector<std::string> split_lines(const std::string& text) {
+// Lines end at LF, CRLF or a lone CR (classic Mac OS), so that no CR reaches a message. A UTF-8
+// byte-order mark that some Windows editors write at the start of a file is not part of the deck.
+std::vector<std::string> split_lines(std::string_view text) {
+  constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+  if (text.starts_with(kByteOrderMark)) text.remove_prefix(kByteOrderMark.size());
   std::vector<std::string> lines;
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line)) lines.push_back(line);
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = text.find_first_of("\r\n", start);
+    if (end == std::string_view::npos) {
+      lines.emplace_back(text.substr(start));
+      break;
+    }
+    lines.emplace_back(text.substr(start, end - start));
+    start = end + (text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n' ? 2 : 1);
+  }
   return lines;
 }
 
@@ -43,6 +57,12 @@ std::string entity_word(EntityType t) {
 }
 
 void DeckReader::read_file(const fs::path& path, const IncludeFrame& frame, int depth) {
+  // A device or a pipe (/dev/zero) may never end: a deck is a regular file.
+  std::error_code regular_ec;
+  if (fs::exists(path, regular_ec) && !fs::is_regular_file(path, regular_ec))
+    throw InputError("'" + path.string() + "' is not a regular file: a deck must be a file");
+  const auto bytes = fs::file_size(path, regular_ec);
+  if (!regular_ec) require_readable(path.string(), static_cast<double>(bytes), available_memory());
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot open deck file '" + path.string() + "'");
   std::ostringstream text;
@@ -76,8 +96,15 @@ void DeckReader::read_lines(const std::vector<std::string>& lines, const std::st
     return true;
   };
   for (std::size_t i = 0; i < lines.size(); ++i) {
-    const std::string text = trim(lines[i]);
     const std::size_t number = i + 1;
+    // A line this long is not a deck line (a binary file, a missing line end): refuse it before
+    // anything searches or echoes it.
+    if (lines[i].size() > kMaxLineLength)
+      throw InputError(SourceLocation{name, number, "", ""},
+                       "line of " + std::to_string(lines[i].size()) +
+                           " characters; deck lines are at most " +
+                           std::to_string(kMaxLineLength) + " characters long");
+    const std::string text = trim(lines[i]);
     if (text.empty() || text.front() == '#' || text.front() == '$') continue;
     if (depth == 0) end_line = number;
     const SourceLocation here{name, number, keyword.value_or(""), ""};
@@ -97,7 +124,8 @@ void DeckReader::read_lines(const std::vector<std::string>& lines, const std::st
       }
       continue;
     }
-    if (!keyword) throw InputError(here, "data line before the first *KEYWORD: '" + text + "'");
+    if (!keyword)
+      throw InputError(here, "data line before the first *KEYWORD: '" + excerpt(text) + "'");
     data.push_back({text, number});
   }
   flush();
@@ -116,7 +144,7 @@ void DeckReader::dispatch(Block& block, int depth) {
   }
   if (is_known_impetus_keyword(kw))
     throw InputError(block.where(), kw + " is not supported yet by abut");
-  std::string message = "unknown keyword " + kw;
+  std::string message = "unknown keyword " + excerpt(kw);
   if (const auto suggestion = closest_keyword(kw)) message += "; did you mean " + *suggestion + "?";
   throw InputError(SourceLocation{block.file(), block.where().line, "", ""}, message);
 }
@@ -137,9 +165,18 @@ void DeckReader::read_include(Block& block, int depth) {
     }
     std::int64_t* targets[] = {&offsets.node, &offsets.element, &offsets.part, &offsets.material,
                                &offsets.other};
+    const std::int64_t* outer[] = {&frame().offsets.node, &frame().offsets.element,
+                                   &frame().offsets.part, &frame().offsets.material,
+                                   &frame().offsets.other};
     for (std::size_t k = 3; k < 8; ++k) {
       *targets[k - 3] = r->integer_or(k, 0);
       r->require(*targets[k - 3] >= 0, k, "expected an offset >= 0");
+      // Nested includes add their offsets: the sum must still fit (it would wrap silently).
+      std::int64_t total = 0;
+      if (__builtin_add_overflow(*targets[k - 3], *outer[k - 3], &total))
+        r->fail(k, "this offset plus the enclosing *INCLUDE's offset " +
+                       std::to_string(*outer[k - 3]) + " exceeds the largest id " +
+                       std::to_string(std::numeric_limits<std::int64_t>::max()));
     }
   }
   if (auto r = block.optional_row({"x0", "y0", "z0", "x1", "y1", "z1"})) {
@@ -186,15 +223,26 @@ void DeckReader::read_include(Block& block, int depth) {
   read_file(path, child, depth + 1);
 }
 
+std::int64_t DeckReader::offset_id(const Row& r, std::size_t i, std::int64_t id,
+                                   std::int64_t offset) {
+  std::int64_t sum = 0;
+  if (__builtin_add_overflow(id, offset, &sum))
+    r.fail(i, "id " + std::to_string(id) + " plus the *INCLUDE id offset " +
+                  std::to_string(offset) + " exceeds the largest id " +
+                  std::to_string(std::numeric_limits<std::int64_t>::max()));
+  return sum;
+}
+
 std::optional<std::int64_t> DeckReader::optional_other_id(const Row& r, std::size_t i) const {
   const auto id = r.optional_id(i);
   if (!id) return std::nullopt;
-  return *id + frame().offsets.other;
+  return offset_id(r, i, *id, frame().offsets.other);
 }
 
-std::optional<std::int64_t> DeckReader::function_id(const Row::NumberOrFunction& v) const {
+std::optional<std::int64_t> DeckReader::function_id(const Row& r, std::size_t i,
+                                                    const Row::NumberOrFunction& v) const {
   if (!v.function_id) return std::nullopt;
-  return *v.function_id + frame().offsets.other;
+  return offset_id(r, i, *v.function_id, frame().offsets.other);
 }
 
 EntityRef DeckReader::entity(const Row& r, std::size_t type_field, std::size_t id_field,
@@ -246,8 +294,13 @@ void DeckReader::require_unrotated(const SourceLocation& where, const std::strin
   }
 }
 
-void DeckReader::generate(const std::function<void()>& generator, const SourceLocation& where) {
+void DeckReader::generate(const std::function<void()>& generator, const SourceLocation& where,
+                          const MeshSize& size) {
   Mesh& mesh = model.mesh;
+  const MeshSize total{
+      static_cast<double>(mesh.hex_count() + mesh.shell_count()) + size.elements,
+      static_cast<double>(mesh.nodes.size()) + size.nodes};
+  require_memory(total, available_memory(), where);
   const std::size_t first_node = mesh.nodes.size();
   const std::size_t first_hex = mesh.hex_count();
   const std::size_t first_shell = mesh.shell_count();

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "abut/io/deck.hpp"
+#include "abut/mesh/generators.hpp"
 #include "deck_block.hpp"
 #include "deck_parameters.hpp"
 #include "deck_text.hpp"
@@ -162,20 +163,29 @@ class DeckReader {
 
   const IncludeFrame& frame() const { return frames_.back(); }
 
-  // Ids read from a row with the current include offsets applied.
-  std::int64_t node_id(const Row& r, std::size_t i) const { return r.id(i) + frame().offsets.node; }
-  std::int64_t element_id(const Row& r, std::size_t i) const {
-    return r.id(i) + frame().offsets.element;
+  // Ids read from a row with the current include offsets applied; an id that the offset pushes
+  // past the largest integer is an InputError at the field.
+  std::int64_t node_id(const Row& r, std::size_t i) const {
+    return offset_id(r, i, r.id(i), frame().offsets.node);
   }
-  std::int64_t part_id(const Row& r, std::size_t i) const { return r.id(i) + frame().offsets.part; }
+  std::int64_t element_id(const Row& r, std::size_t i) const {
+    return offset_id(r, i, r.id(i), frame().offsets.element);
+  }
+  std::int64_t part_id(const Row& r, std::size_t i) const {
+    return offset_id(r, i, r.id(i), frame().offsets.part);
+  }
   std::int64_t material_id(const Row& r, std::size_t i) const {
-    return r.id(i) + frame().offsets.material;
+    return offset_id(r, i, r.id(i), frame().offsets.material);
   }
   std::int64_t other_id(const Row& r, std::size_t i) const {
-    return r.id(i) + frame().offsets.other;
+    return offset_id(r, i, r.id(i), frame().offsets.other);
   }
+  // id + offset, or an InputError at field i of r when the sum does not fit in 64 bits.
+  static std::int64_t offset_id(const Row& r, std::size_t i, std::int64_t id, std::int64_t offset);
   std::optional<std::int64_t> optional_other_id(const Row& r, std::size_t i) const;
-  std::optional<std::int64_t> function_id(const Row::NumberOrFunction& v) const;
+  // The fid of a `fcn(fid)` field i of r (its value v), offset; empty for a number.
+  std::optional<std::int64_t> function_id(const Row& r, std::size_t i,
+                                          const Row::NumberOrFunction& v) const;
 
   // An `entype, enid` pair; `allowed` lists the types the command accepts.
   EntityRef entity(const Row& r, std::size_t type_field, std::size_t id_field,
@@ -184,8 +194,10 @@ class DeckReader {
   void require_unrotated(const SourceLocation& where, const std::string& what) const;
 
   // Runs a mesh generator, adds the command's location to its errors and records the new
-  // nodes and hexes.
-  void generate(const std::function<void()>& generator, const SourceLocation& where);
+  // nodes and hexes. `size` is what the generator will add: refused first, at `where`, when the
+  // whole mesh would not fit in the available memory (memory_budget.hpp).
+  void generate(const std::function<void()>& generator, const SourceLocation& where,
+                const MeshSize& size);
   // Adds one *NODE; duplicate ids are an error.
   void add_node(std::int64_t id, const Vec3& p, std::uint8_t fixed, const SourceLocation& where);
   // Adds one hex of *ELEMENT_SOLID (nodes resolved later).
@@ -213,6 +225,10 @@ class DeckReader {
   // deck_finalize_merge.cpp: *MERGE_DUPLICATED_NODES, once element nodes, node sets and shell
   // nodes are resolved and before anything else stores node indices; remaps the node sets.
   void merge_duplicated_nodes();
+  // deck_finalize_elements.cpp: every hex has a positive initial volume, else an InputError at
+  // its *ELEMENT_SOLID row or generator keyword naming the element and node ids. After the merge
+  // (which may flatten a hex) and before refinement (which needs sound hexes).
+  void check_element_volumes() const;
   // Records an id of a kind (e.g. "component"); a second use is an error naming the first.
   void claim_id(const std::string& kind, std::int64_t id, const SourceLocation& where);
   // Index of a node id, or -1.

@@ -15,6 +15,13 @@ std::string trim(std::string_view s) {
   return std::string(s.substr(first, last - first + 1));
 }
 
+std::string excerpt(std::string_view s, std::size_t limit) {
+  if (s.size() <= limit) return std::string(s);
+  std::string out(s.substr(0, limit));
+  out.append("... (").append(std::to_string(s.size())).append(" characters)");
+  return out;
+}
+
 std::string upper(std::string_view s) {
   std::string out(s);
   std::transform(out.begin(), out.end(), out.begin(),
@@ -114,13 +121,14 @@ void Row::fail(std::size_t i, const std::string& message) const {
 }
 
 void Row::require(bool ok, std::size_t i, const std::string& expectation) const {
-  if (!ok) fail(i, expectation + ", got " + (given(i) ? text(i) : std::string("nothing")));
+  if (!ok)
+    fail(i, expectation + ", got " + (given(i) ? excerpt(text(i)) : std::string("nothing")));
 }
 
 double Row::number(std::size_t i) const {
   if (!given(i)) fail(i, "missing value: expected a number");
   const auto v = parse_number(text(i));
-  if (!v) fail(i, "expected a number, got '" + text(i) + "'");
+  if (!v) fail(i, "expected a number, got '" + excerpt(text(i)) + "'");
   return *v;
 }
 
@@ -131,7 +139,7 @@ double Row::number_or(std::size_t i, double fallback) const {
 std::int64_t Row::integer(std::size_t i) const {
   if (!given(i)) fail(i, "missing value: expected an integer");
   const auto v = parse_integer(text(i));
-  if (!v) fail(i, "expected an integer, got '" + text(i) + "'");
+  if (!v) fail(i, "expected an integer, got '" + excerpt(text(i)) + "'");
   return *v;
 }
 
@@ -142,7 +150,7 @@ std::int64_t Row::integer_or(std::size_t i, std::int64_t fallback) const {
 std::int64_t Row::id(std::size_t i) const {
   if (!given(i)) fail(i, "missing value: expected a positive integer id");
   const auto v = parse_integer(text(i));
-  if (!v || *v <= 0) fail(i, "expected a positive integer id, got '" + text(i) + "'");
+  if (!v || *v <= 0) fail(i, "expected a positive integer id, got '" + excerpt(text(i)) + "'");
   return *v;
 }
 
@@ -150,7 +158,7 @@ std::optional<std::int64_t> Row::optional_id(std::size_t i) const {
   if (!given(i)) return std::nullopt;
   const auto v = parse_integer(text(i));
   if (!v || *v < 0)
-    fail(i, "expected a positive integer id (or 0 for none), got '" + text(i) + "'");
+    fail(i, "expected a positive integer id (or 0 for none), got '" + excerpt(text(i)) + "'");
   if (*v == 0) return std::nullopt;
   return v;
 }
@@ -172,15 +180,15 @@ Row::NumberOrFunction Row::number_or_function(std::size_t i, double fallback) co
   if (t.rfind("FCN", 0) == 0) {
     const std::string rest = trim(std::string_view(t).substr(3));
     if (rest.size() < 3 || rest.front() != '(' || rest.back() != ')') {
-      fail(i, "expected a number or fcn(fid), got '" + text(i) + "'");
+      fail(i, "expected a number or fcn(fid), got '" + excerpt(text(i)) + "'");
     }
     const auto fid = parse_integer(rest.substr(1, rest.size() - 2));
     if (!fid || *fid <= 0)
-      fail(i, "expected fcn(fid) with a positive function id, got '" + text(i) + "'");
+      fail(i, "expected fcn(fid) with a positive function id, got '" + excerpt(text(i)) + "'");
     return {0.0, fid};
   }
   const auto v = parse_number(t);
-  if (!v) fail(i, "expected a number or fcn(fid), got '" + text(i) + "'");
+  if (!v) fail(i, "expected a number or fcn(fid), got '" + excerpt(text(i)) + "'");
   return {*v, std::nullopt};
 }
 

@@ -12,7 +12,12 @@
 
 namespace abut::deck {
 
+// The longest deck line abut reads (docs/deck-reference.md); a longer line is an InputError.
+inline constexpr std::size_t kMaxLineLength = 65536;
+
 std::string trim(std::string_view s);
+// Text of the deck quoted in a message: at most `limit` characters, then "... (N characters)".
+std::string excerpt(std::string_view s, std::size_t limit = 80);
 std::string upper(std::string_view s);
 bool is_quoted(std::string_view s);       // "..." (after trimming)
 std::string unquote(std::string_view s);  // strips one pair of double quotes, if any

@@ -33,7 +33,7 @@ void read_contact(DeckReader& d, Block& b) {
   c.surface2 = d.entity(r2, 2, 3, surfaces);
   const auto mu = r2.number_or_function(4, 0.0);
   if (mu.function_id) {
-    bind(*d.function_id(mu), r2.where(4), &ContactSpec::friction_function);
+    bind(*d.function_id(r2, 4, mu), r2.where(4), &ContactSpec::friction_function);
   } else {
     c.friction = mu.value;
     r2.require(c.friction >= 0.0, 4, "expected a friction coefficient >= 0 or fcn(fid)");

@@ -1,5 +1,7 @@
 // *CURVE, *FUNCTION.
 #include <cctype>
+#include <charconv>
+#include <limits>
 
 #include "deck_reader.hpp"
 
@@ -29,7 +31,8 @@ void check_type(const Row& r, std::size_t i, bool abscissa_of_function) {
 }
 
 // Adds the include's id offset to the literal ids of crv(cid, ...), fcn(fid, ...) and dfcn(fid).
-std::string offset_references(const std::string& expression, std::int64_t offset) {
+std::string offset_references(const std::string& expression, std::int64_t offset,
+                              const SourceLocation& where) {
   if (offset == 0) return expression;
   std::string out;
   std::size_t i = 0;
@@ -56,7 +59,17 @@ std::string offset_references(const std::string& expression, std::int64_t offset
         }
         if (digits_end > k) {
           out += expression.substr(i, k - i);
-          out += std::to_string(std::stoll(expression.substr(k, digits_end - k)) + offset);
+          // An id too long for 64 bits, or pushed past them by the offset, would wrap.
+          std::int64_t id = 0, shifted = 0;
+          const char* first = expression.data() + k;
+          const char* last = expression.data() + digits_end;
+          const auto [ptr, ec] = std::from_chars(first, last, id);
+          if (ec != std::errc() || ptr != last || __builtin_add_overflow(id, offset, &shifted))
+            throw InputError(where, "the id " + expression.substr(k, digits_end - k) +
+                                        " plus the *INCLUDE id offset " + std::to_string(offset) +
+                                        " exceeds the largest id " +
+                                        std::to_string(std::numeric_limits<std::int64_t>::max()));
+          out += std::to_string(shifted);
           i = digits_end;
           continue;
         }
@@ -112,10 +125,10 @@ void read_function(DeckReader& d, Block& b) {
   }
   check_type(head, 4, true);
   check_type(head, 5, false);
-  const std::string expression =
-      offset_references(b.text_line("the expression"), d.frame().offsets.other);
+  const std::string text = b.text_line("the expression");
   SourceLocation where = b.last_where();
   where.field = "expression";
+  const std::string expression = offset_references(text, d.frame().offsets.other, where);
   if (trim(expression).empty()) throw InputError(where, "empty expression");
   d.model.functions.add_function(id, expression, where);
 }

@@ -26,7 +26,8 @@ void read_initial_velocity(DeckReader& d, Block& b) {
     bool directional = false;
     for (std::size_t k = 0; k < 3; ++k) {
       v.velocity[k] = r.number_or_function(2 + k, 0.0);
-      if (v.velocity[k].function_id) v.velocity[k].function_id = d.function_id(v.velocity[k]);
+      if (v.velocity[k].function_id)
+        v.velocity[k].function_id = d.function_id(r, 2 + k, v.velocity[k]);
       v.velocity_where[k] = r.where(2 + k);
       v.angular_velocity[static_cast<int>(k)] = r.number_or(5 + k, 0.0);
       directional = directional || v.velocity[k].value != 0.0 || v.velocity[k].function_id ||

@@ -113,7 +113,7 @@ void read_component_box(DeckReader& d, Block& b) {
     c.corner1[k] = std::min(p1[k], p2[k]);
     c.corner2[k] = std::max(p1[k], p2[k]);
   }
-  d.generate([&] { generate_box(d.model.mesh, c); }, b.where());
+  d.generate([&] { generate_box(d.model.mesh, c); }, b.where(), box_size(c));
 }
 
 void read_component_sphere(DeckReader& d, Block& b) {
@@ -136,7 +136,7 @@ void read_component_sphere(DeckReader& d, Block& b) {
   c.centre = d.frame().transform.point(point(r2, 0));
   c.inner_radius = r_2 > 0.0 ? s * r_1 : 0.0;
   c.outer_radius = s * (r_2 > 0.0 ? r_2 : r_1);
-  d.generate([&] { generate_sphere(d.model.mesh, c); }, b.where());
+  d.generate([&] { generate_sphere(d.model.mesh, c); }, b.where(), sphere_size(c));
 }
 
 void read_component_cylinder(DeckReader& d, Block& b) {
@@ -164,7 +164,7 @@ void read_component_cylinder(DeckReader& d, Block& b) {
   c.end2 = d.frame().transform.point(e2);
   c.radius1 = s * r_1;
   c.radius2 = s * r_2;
-  d.generate([&] { generate_cylinder(d.model.mesh, c); }, b.where());
+  d.generate([&] { generate_cylinder(d.model.mesh, c); }, b.where(), cylinder_size(c));
 }
 
 void read_component_shell_plate(DeckReader& d, Block& b) {
@@ -184,7 +184,9 @@ void read_component_shell_plate(DeckReader& d, Block& b) {
     std::swap(c.p1, c.p2);
     std::swap(c.n1, c.n2);
   }
-  d.generate([&] { generate_shell_plate(d.model.mesh, c); }, b.where());
+  const double n1 = c.n1, n2 = c.n2;
+  d.generate([&] { generate_shell_plate(d.model.mesh, c); }, b.where(),
+             {n1 * n2, (n1 + 1) * (n2 + 1)});
 }
 
 void read_component_shell_tube(DeckReader& d, Block& b) {
@@ -217,7 +219,9 @@ void read_component_shell_tube(DeckReader& d, Block& b) {
   // The section's frame is chosen in the included file's own axes and then placed with it, so a
   // rotated include rotates a square tube with its content.
   c.side_direction = d.frame().transform.linear(tube_side_direction(normalized(e2 - e1), {}));
-  d.generate([&] { generate_shell_tube(d.model.mesh, c); }, b.where());
+  const double n_axial = c.n_axial, n_circ = c.n_circ;
+  d.generate([&] { generate_shell_tube(d.model.mesh, c); }, b.where(),
+             {n_axial * n_circ, (n_axial + 1) * n_circ});
 }
 
 void read_change_p_order(DeckReader& d, Block& b) {

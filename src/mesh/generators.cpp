@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -27,6 +28,25 @@ int radial_layers(double gap, double inner_edge, double outer_edge) {
   return std::max(1, static_cast<int>(std::lround(gap / mean_edge)));
 }
 
+// Radial layers of the outer blocks of a sphere (the radii must be valid).
+int sphere_layers(const SphereComponent& c) {
+  const double quarter_arc = 0.5 * std::numbers::pi / c.density;  // element arc per unit radius
+  if (c.inner_radius > 0.0)
+    return radial_layers(c.outer_radius - c.inner_radius, quarter_arc * c.inner_radius,
+                         quarter_arc * c.outer_radius);
+  const double core_half_size = kCoreFraction * c.outer_radius;
+  return radial_layers(c.outer_radius - core_half_size, 2.0 * core_half_size / c.density,
+                       quarter_arc * c.outer_radius);
+}
+
+// Radial layers of the outer blocks of a cylinder: independent of the radius.
+int cylinder_layers(int density) {
+  const double mean_radius = 1.0;
+  return radial_layers((1.0 - kCoreFraction) * mean_radius,
+                       2.0 * kCoreFraction * mean_radius / density,
+                       0.5 * std::numbers::pi * mean_radius / density);
+}
+
 void require_count(int n, const char* what) {
   if (n < 1) {
     throw InputError(std::string(what) + " must be at least 1 (got " + std::to_string(n) + ")");
@@ -44,11 +64,36 @@ void add_block(Mesh& mesh, detail::NodeMerger& merger, std::int32_t shape, std::
   auto at = [&](int i, int j, int k) -> std::int32_t& {
     return grid_node[(static_cast<std::size_t>(k) * nj + j) * ni + i];
   };
+  std::vector<Vec3> point(grid_node.size());
+  const auto point_at = [&](int i, int j, int k) -> Vec3& {
+    return point[(static_cast<std::size_t>(k) * nj + j) * ni + i];
+  };
   for (int k = 0; k < nk; ++k) {
     for (int j = 0; j < nj; ++j) {
       for (int i = 0; i < ni; ++i) {
         const Vec3 g{static_cast<double>(i), static_cast<double>(j), static_cast<double>(k)};
-        at(i, j, k) = merger.find_or_add(mesh.nodes, shape_point(map, block, g), next_node_id);
+        point_at(i, j, k) = shape_point(map, block, g);
+      }
+    }
+  }
+  for (int k = 0; k < nk; ++k) {
+    for (int j = 0; j < nj; ++j) {
+      for (int i = 0; i < ni; ++i) {
+        // The shortest grid edge at the point: the merge tolerance follows the local spacing.
+        const Vec3& p = point_at(i, j, k);
+        double shortest = std::numeric_limits<double>::infinity();
+        const int step[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+        for (const auto& d : step) {
+          for (const int sign : {-1, 1}) {
+            const int a = i + sign * d[0], b = j + sign * d[1], c = k + sign * d[2];
+            if (a < 0 || b < 0 || c < 0 || a >= ni || b >= nj || c >= nk) continue;
+            const double edge = norm(point_at(a, b, c) - p);
+            if (edge > 0.0) shortest = std::min(shortest, edge);
+          }
+        }
+        if (!std::isfinite(shortest)) shortest = 0.0;
+        at(i, j, k) = merger.find_or_add(mesh.nodes, p, next_node_id,
+                                         detail::merge_tolerance(p, shortest));
       }
     }
   }
@@ -72,11 +117,37 @@ std::int32_t add_shape(Mesh& mesh, ComponentShape shape) {
   return static_cast<std::int32_t>(mesh.shapes.size() - 1);
 }
 
-// Points closer than this fraction of the component size are one node (block interfaces differ
-// only by rounding, ~1e-16 relative).
-constexpr double kMergeTolerance = 1e-9;
+// The merger of a component of this diameter whose points lie within `reach` of the origin;
+// each point then merges within a fraction of its own shortest edge (add_block).
+detail::NodeMerger component_merger(double reach, double diameter) {
+  return detail::NodeMerger(detail::largest_merge_tolerance(reach, diameter));
+}
 
 }  // namespace
+
+MeshSize box_size(const BoxComponent& c) {
+  if (c.nx < 1 || c.ny < 1 || c.nz < 1) return {};
+  const double nx = c.nx, ny = c.ny, nz = c.nz;
+  return {nx * ny * nz, (nx + 1) * (ny + 1) * (nz + 1)};
+}
+
+MeshSize sphere_size(const SphereComponent& c) {
+  if (c.density < 1 || !(c.outer_radius > 0.0) || c.inner_radius < 0.0 ||
+      c.inner_radius >= c.outer_radius)
+    return {};
+  const double n = c.density, layers = sphere_layers(c);
+  const double core = c.inner_radius > 0.0 ? 0.0 : n * n * n;
+  // Six outer blocks share their edges and faces: about (n+1)^2 (layers+1) nodes each.
+  return {6.0 * n * n * layers + core,
+          6.0 * (n + 1) * (n + 1) * (layers + 1) + (core > 0.0 ? (n + 1) * (n + 1) * (n + 1) : 0)};
+}
+
+MeshSize cylinder_size(const CylinderComponent& c) {
+  if (c.n_axial < 1 || c.density < 1) return {};
+  const double n = c.density, axial = c.n_axial, layers = cylinder_layers(c.density);
+  const double per_section = 4.0 * n * layers + n * n;
+  return {axial * per_section, (axial + 1) * (4.0 * (n + 1) * (layers + 1) + (n + 1) * (n + 1))};
+}
 
 void generate_box(Mesh& mesh, const BoxComponent& c) {
   require_count(c.nx, "*COMPONENT_BOX N_x");
@@ -95,7 +166,10 @@ void generate_box(Mesh& mesh, const BoxComponent& c) {
     }
   }
   std::int64_t next_node = mesh.next_node_id(), next_hex = mesh.next_hex_id();
-  detail::NodeMerger merger(kMergeTolerance * norm(box.hi - box.lo));
+  Vec3 farthest;  // the largest coordinate magnitudes of the box, axis by axis
+  for (int a = 0; a < 3; ++a) farthest[a] = std::max(std::fabs(box.lo[a]), std::fabs(box.hi[a]));
+  const double reach = norm(farthest);
+  detail::NodeMerger merger = component_merger(reach, norm(box.hi - box.lo));
   const std::int32_t shape = add_shape(mesh, box);
   const int n[3] = {c.nx, c.ny, c.nz};
   add_block(mesh, merger, shape, 0, n, c.part_id, next_node, next_hex);
@@ -109,22 +183,16 @@ void generate_sphere(Mesh& mesh, const SphereComponent& c) {
                      ")");
   }
   const int n = c.density;
-  const double quarter_arc = 0.5 * std::numbers::pi / n;  // element arc per unit radius
   SphereShape sphere;
   sphere.centre = c.centre;
   sphere.inner_radius = c.inner_radius;
   sphere.outer_radius = c.outer_radius;
   sphere.n = n;
-  if (c.inner_radius > 0.0) {
-    sphere.n_radial = radial_layers(c.outer_radius - c.inner_radius, quarter_arc * c.inner_radius,
-                                    quarter_arc * c.outer_radius);
-  } else {
-    sphere.core_half_size = kCoreFraction * c.outer_radius;
-    sphere.n_radial = radial_layers(c.outer_radius - sphere.core_half_size,
-                                    2.0 * sphere.core_half_size / n, quarter_arc * c.outer_radius);
-  }
+  if (c.inner_radius == 0.0) sphere.core_half_size = kCoreFraction * c.outer_radius;
+  sphere.n_radial = sphere_layers(c);
   std::int64_t next_node = mesh.next_node_id(), next_hex = mesh.next_hex_id();
-  detail::NodeMerger merger(kMergeTolerance * c.outer_radius);
+  detail::NodeMerger merger =
+      component_merger(norm(c.centre) + c.outer_radius, 2.0 * c.outer_radius);
   const std::int32_t shape = add_shape(mesh, sphere);
   const int outer[3] = {n, n, sphere.n_radial};
   for (std::int32_t block = 0; block < 6; ++block) {
@@ -175,12 +243,12 @@ void generate_cylinder(Mesh& mesh, const CylinderComponent& c) {
   cyl.core_fraction = kCoreFraction;
   cyl.n = c.density;
   cyl.n_axial = c.n_axial;
-  const double mean_radius = 0.5 * (c.radius1 + radius2);
-  cyl.n_radial = radial_layers((1.0 - kCoreFraction) * mean_radius,
-                               2.0 * kCoreFraction * mean_radius / c.density,
-                               0.5 * std::numbers::pi * mean_radius / c.density);
+  cyl.n_radial = cylinder_layers(c.density);
   std::int64_t next_node = mesh.next_node_id(), next_hex = mesh.next_hex_id();
-  detail::NodeMerger merger(kMergeTolerance * std::max(length, std::max(c.radius1, radius2)));
+  const double radius = std::max(c.radius1, radius2);
+  const double diameter = std::hypot(length, 2.0 * radius);
+  detail::NodeMerger merger =
+      component_merger(std::max(norm(c.end1), norm(c.end2)) + diameter, diameter);
   const std::int32_t shape = add_shape(mesh, cyl);
   const int outer[3] = {c.density, cyl.n_radial, c.n_axial};
   for (std::int32_t block = 0; block < 4; ++block) {

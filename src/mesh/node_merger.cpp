@@ -1,34 +1,56 @@
 #include "mesh/node_merger.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace abut::detail {
+namespace {
+
+// Fraction of the local edge within which points are one node: far above the rounding of block
+// interfaces (~1e-16 relative), far below any element.
+constexpr double kEdgeFraction = 1e-6;
+// Relative rounding of a coordinate that shape maps may leave (a few hundred ulps).
+constexpr double kRounding = 1e-13;
+// Cell indices are clamped here: far enough to keep distinct cells apart, near enough that
+// the +-1 neighbour never overflows.
+constexpr double kLargestIndex = 4.0e18;
+
+std::int64_t index_of(double coordinate, double cell) {
+  const double c = std::floor(coordinate / cell);
+  if (!(c == c)) return 0;  // NaN: any cell, the distance test decides
+  return static_cast<std::int64_t>(std::clamp(c, -kLargestIndex, kLargestIndex));
+}
+
+}  // namespace
 
 NodeMerger::NodeMerger(double tolerance) : tolerance_(tolerance), cell_(4.0 * tolerance) {}
 
-std::int64_t NodeMerger::key(std::int64_t i, std::int64_t j, std::int64_t k) const {
-  // Mixing with large odd constants; collisions only cost a longer bucket scan.
-  return i * 73856093LL ^ j * 19349663LL ^ k * 83492791LL;
+NodeMerger::Cell NodeMerger::cell_of(const Vec3& p) const {
+  return {index_of(p.x, cell_), index_of(p.y, cell_), index_of(p.z, cell_)};
+}
+
+std::uint64_t NodeMerger::key(std::int64_t i, std::int64_t j, std::int64_t k) {
+  // Mixing with large odd constants in unsigned arithmetic (wraps by definition); collisions only
+  // cost a longer bucket scan.
+  return static_cast<std::uint64_t>(i) * 73856093ULL ^ static_cast<std::uint64_t>(j) * 19349663ULL ^
+         static_cast<std::uint64_t>(k) * 83492791ULL;
 }
 
 void NodeMerger::insert(std::int32_t node, const Vec3& p) {
-  const auto i = static_cast<std::int64_t>(std::floor(p.x / cell_));
-  const auto j = static_cast<std::int64_t>(std::floor(p.y / cell_));
-  const auto k = static_cast<std::int64_t>(std::floor(p.z / cell_));
-  cells_[key(i, j, k)].push_back({node, p});
+  const Cell c = cell_of(p);
+  cells_[key(c.i, c.j, c.k)].push_back({node, p});
 }
 
-std::int32_t NodeMerger::find(const Vec3& p) const {
-  const auto i = static_cast<std::int64_t>(std::floor(p.x / cell_));
-  const auto j = static_cast<std::int64_t>(std::floor(p.y / cell_));
-  const auto k = static_cast<std::int64_t>(std::floor(p.z / cell_));
+std::int32_t NodeMerger::find(const Vec3& p, double tolerance) const {
+  const Cell c = cell_of(p);
+  const double tol = std::min(tolerance, tolerance_);
   for (std::int64_t di = -1; di <= 1; ++di) {
     for (std::int64_t dj = -1; dj <= 1; ++dj) {
       for (std::int64_t dk = -1; dk <= 1; ++dk) {
-        const auto it = cells_.find(key(i + di, j + dj, k + dk));
+        const auto it = cells_.find(key(c.i + di, c.j + dj, c.k + dk));
         if (it == cells_.end()) continue;
         for (const Entry& e : it->second) {
-          if (norm(e.p - p) <= tolerance_) return e.node;
+          if (norm(e.p - p) <= tol) return e.node;
         }
       }
     }
@@ -37,15 +59,13 @@ std::int32_t NodeMerger::find(const Vec3& p) const {
 }
 
 std::int32_t NodeMerger::nearest(const Vec3& p) const {
-  const auto i = static_cast<std::int64_t>(std::floor(p.x / cell_));
-  const auto j = static_cast<std::int64_t>(std::floor(p.y / cell_));
-  const auto k = static_cast<std::int64_t>(std::floor(p.z / cell_));
+  const Cell c = cell_of(p);
   std::int32_t best = -1;
   double best_distance = 0.0;
   for (std::int64_t di = -1; di <= 1; ++di) {
     for (std::int64_t dj = -1; dj <= 1; ++dj) {
       for (std::int64_t dk = -1; dk <= 1; ++dk) {
-        const auto it = cells_.find(key(i + di, j + dj, k + dk));
+        const auto it = cells_.find(key(c.i + di, c.j + dj, c.k + dk));
         if (it == cells_.end()) continue;
         for (const Entry& e : it->second) {
           const double d = norm(e.p - p);
@@ -62,12 +82,22 @@ std::int32_t NodeMerger::nearest(const Vec3& p) const {
   return best;
 }
 
-std::int32_t NodeMerger::find_or_add(Nodes& nodes, const Vec3& p, std::int64_t& next_id) {
-  const std::int32_t found = find(p);
+std::int32_t NodeMerger::find_or_add(Nodes& nodes, const Vec3& p, std::int64_t& next_id,
+                                     double tolerance) {
+  const std::int32_t found = find(p, tolerance);
   if (found >= 0) return found;
   const std::int32_t added = nodes.add(next_id++, p);
   insert(added, p);
   return added;
+}
+
+double merge_tolerance(const Vec3& p, double shortest_edge) {
+  const double reach = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+  return std::max(kEdgeFraction * shortest_edge, kRounding * reach);
+}
+
+double largest_merge_tolerance(double reach, double longest_edge) {
+  return std::max(kEdgeFraction * longest_edge, kRounding * reach);
 }
 
 }  // namespace abut::detail

@@ -9,8 +9,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -72,8 +74,16 @@ Vec3 centroid(const Mesh& mesh, std::size_t hex) {
 }
 
 // Hexes of `part` whose centroid lies in `region` (all of the part without a region).
+// An error of one *CHANGE_P-ORDER or *SMOOTH_MESH line: at its deck line when it has one.
+[[noreturn]] void fail(const SourceLocation& where, const char* keyword,
+                       const std::string& message) {
+  if (where.file.empty()) throw InputError(std::string(keyword) + ": " + message);
+  throw InputError(where, message);
+}
+
 std::vector<std::size_t> select(const Mesh& mesh, std::int64_t part,
-                                const std::optional<Geometry>& region, const char* keyword) {
+                                const std::optional<Geometry>& region, const char* keyword,
+                                const SourceLocation& where) {
   std::vector<std::size_t> selected;
   bool part_exists = false;
   for (std::size_t h = 0; h < mesh.hex_count(); ++h) {
@@ -82,8 +92,7 @@ std::vector<std::size_t> select(const Mesh& mesh, std::int64_t part,
     if (!region || geometry_contains(*region, centroid(mesh, h), mesh)) selected.push_back(h);
   }
   if (!part_exists) {
-    throw InputError(std::string(keyword) + " refers to part " + std::to_string(part) +
-                     ", which has no hexahedra");
+    fail(where, keyword, "refers to part " + std::to_string(part) + ", which has no hexahedra");
   }
   return selected;
 }
@@ -100,7 +109,9 @@ std::string split_name(int p) {
 
 // Refining a hex puts new nodes on its edges; a neighbour sharing such an edge at another order
 // would get hanging nodes. Refuse instead of producing a non-conforming mesh.
-void check_conformity(const Mesh& mesh, const std::vector<int>& order) {
+// `where[h]`: the line of the *CHANGE_P-ORDER that gave hex h its order (empty for order 1).
+void check_conformity(const Mesh& mesh, const std::vector<int>& order,
+                      const std::vector<const SourceLocation*>& where) {
   std::unordered_map<std::uint64_t, std::size_t> hex_of_edge;
   for (std::size_t h = 0; h < mesh.hex_count(); ++h) {
     for (const auto& e : kHexEdges) {
@@ -113,16 +124,19 @@ void check_conformity(const Mesh& mesh, const std::vector<int>& order) {
                                  std::to_string(order[h]) + ", hex " +
                                  std::to_string(mesh.hex_id[other]) + " order " +
                                  std::to_string(order[other]) + ")";
+      const SourceLocation& line = *where[order[h] > order[other] ? h : other];
       if (pa == pb) {
-        throw InputError("*CHANGE_P-ORDER: the region cuts through part " + std::to_string(pa) +
-                         ": neighbouring hexes would get different orders and hanging nodes" +
-                         detail + "; use a region that covers the whole connected part");
+        fail(line, "*CHANGE_P-ORDER",
+             "the region cuts through part " + std::to_string(pa) +
+                 ": neighbouring hexes would get different orders and hanging nodes" + detail +
+                 "; use a region that covers the whole connected part");
       }
-      throw InputError("*CHANGE_P-ORDER: parts " + std::to_string(std::min(pa, pb)) + " and " +
-                       std::to_string(std::max(pa, pb)) +
-                       " share nodes; refine both or neither (to the same order), otherwise "
-                       "the shared faces get hanging nodes" +
-                       detail);
+      fail(line, "*CHANGE_P-ORDER",
+           "parts " + std::to_string(std::min(pa, pb)) + " and " +
+               std::to_string(std::max(pa, pb)) +
+               " share nodes; refine both or neither (to the same order), otherwise "
+               "the shared faces get hanging nodes" +
+               detail);
     }
   }
 }
@@ -159,7 +173,11 @@ void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
       hi[a] = std::max(hi[a], mesh.nodes.position(n)[a]);
     }
   }
-  detail::NodeMerger merger(1e-9 * norm(hi - lo));
+  // New nodes merge within a fraction of the child edge (merge_tolerance): the model's extent
+  // says nothing about the spacing of a slender or far-away mesh.
+  Vec3 farthest;
+  for (int a = 0; a < 3; ++a) farthest[a] = std::max(std::fabs(lo[a]), std::fabs(hi[a]));
+  detail::NodeMerger merger(detail::largest_merge_tolerance(norm(farthest), norm(hi - lo)));
   std::vector<char> registered(mesh.nodes.size(), 0);
   std::size_t expected_new_nodes = 0, refined_hexes = 0;
   for (std::size_t h = 0; h < hex_count; ++h) {
@@ -217,6 +235,12 @@ void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
         curved = true;
       }
     }
+    double shortest_edge = std::numeric_limits<double>::infinity();
+    for (const auto& e : kHexEdges) {
+      const double length = norm(x[e[1]] - x[e[0]]);
+      if (length > 0.0) shortest_edge = std::min(shortest_edge, length);
+    }
+    if (!std::isfinite(shortest_edge)) shortest_edge = 0.0;
     const int m = p + 1;
     std::vector<std::int32_t> lattice(static_cast<std::size_t>(m * m * m));
     auto at = [&](int i, int j, int k) -> std::int32_t& {
@@ -237,7 +261,8 @@ void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
               shape >= 0 ? shape_point(mesh.shapes[static_cast<std::size_t>(shape)], cell.block,
                                        cell.lo + cell.size * Vec3{s[0], s[1], s[2]})
                          : blended_point(x, bulge, curved, s);
-          at(i, j, k) = merger.find_or_add(mesh.nodes, point, next_node);
+          at(i, j, k) = merger.find_or_add(mesh.nodes, point, next_node,
+                                           detail::merge_tolerance(point, shortest_edge / p));
         }
       }
     }
@@ -285,36 +310,41 @@ std::vector<std::string> refine_and_smooth(Mesh& mesh, const std::vector<OrderCh
 
   // 1. Final order of every hex: the highest order that selects it (orders only go up).
   std::vector<int> order(hex_count, 1);
+  const SourceLocation nowhere;
+  std::vector<const SourceLocation*> order_where(hex_count, &nowhere);
   std::vector<std::vector<std::size_t>> order_selection;  // per (change, part), for the notes
   for (const OrderChange& change : orders) {
     if (change.order < 1 || change.order > 3) {
-      throw InputError("*CHANGE_P-ORDER order must be 1, 2 or 3 (got " +
-                       std::to_string(change.order) + ")");
+      fail(change.where, "*CHANGE_P-ORDER",
+           "order must be 1, 2 or 3 (got " + std::to_string(change.order) + ")");
     }
     for (std::int64_t part : change.parts) {
-      order_selection.push_back(select(mesh, part, change.region, "*CHANGE_P-ORDER"));
-      for (std::size_t h : order_selection.back()) order[h] = std::max(order[h], change.order);
+      order_selection.push_back(
+          select(mesh, part, change.region, "*CHANGE_P-ORDER", change.where));
+      for (std::size_t h : order_selection.back()) {
+        if (change.order > order[h]) order_where[h] = &change.where;
+        order[h] = std::max(order[h], change.order);
+      }
     }
   }
-  check_conformity(mesh, order);
+  check_conformity(mesh, order, order_where);
 
   // 2. Curved edges of the *SMOOTH_MESH surfaces (exterior faces of hexes without exact shape).
   const auto faces = face_uses(mesh);
   std::unordered_map<std::uint64_t, Vec3> curvature;
   for (const SurfaceSmoothing& smooth : smoothing) {
     if (smooth.internal) {
-      throw InputError(
-          "*SMOOTH_MESH internal = 1 (smoothing internal interfaces) is not "
-          "supported yet; use 0");
+      fail(smooth.where, "*SMOOTH_MESH",
+           "internal = 1 (smoothing internal interfaces) is not supported yet; use 0");
     }
     if (!(smooth.max_angle > 0.0 && smooth.max_angle <= 180.0)) {
-      throw InputError("*SMOOTH_MESH angle must be in (0, 180] degrees (got " +
-                       degrees(smooth.max_angle) + ")");
+      fail(smooth.where, "*SMOOTH_MESH",
+           "angle must be in (0, 180] degrees (got " + degrees(smooth.max_angle) + ")");
     }
     for (std::int64_t part : smooth.parts) {
       std::vector<char> chosen(hex_count, 0);
       std::size_t refined = 0, exact = 0;
-      for (std::size_t h : select(mesh, part, smooth.region, "*SMOOTH_MESH")) {
+      for (std::size_t h : select(mesh, part, smooth.region, "*SMOOTH_MESH", smooth.where)) {
         chosen[h] = 1;
         if (order[h] > 1) ++(mesh.hex_shape[h] >= 0 ? exact : refined);
       }
@@ -354,8 +384,17 @@ std::vector<std::string> refine_and_smooth(Mesh& mesh, const std::vector<OrderCh
     }
   }
 
-  // 3. Split.
-  split_hexes(mesh, order, faces, curvature);
+  // 3. Split. A count of new nodes that does not add up is a fault of the refinement as a whole:
+  // it is reported at the first *CHANGE_P-ORDER line.
+  try {
+    split_hexes(mesh, order, faces, curvature);
+  } catch (const InputError& e) {
+    if (!e.where().file.empty() || orders.empty() || orders.front().where.file.empty()) throw;
+    std::string message = e.message();
+    const std::string prefix = "*CHANGE_P-ORDER: ";
+    if (message.starts_with(prefix)) message.erase(0, prefix.size());
+    throw InputError(orders.front().where, message);
+  }
 
   // 4. One note per (order change, part).
   std::size_t selection = 0;

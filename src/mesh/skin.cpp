@@ -93,9 +93,9 @@ std::vector<SkinFace> extract(const Mesh& mesh, bool all_parts, std::span<const 
       volume_of = r.hex;
       volume = hex_volume(mesh.nodes, mesh.hexes[r.hex]);
       if (!(volume > 0.0))
-        throw InputError("hex " + std::to_string(mesh.hex_id[r.hex]) +
-                         " has a non-positive volume: its nodes must follow the VTK_HEXAHEDRON "
-                         "order (0-3 counter-clockwise seen from above, 4-7 above them)");
+        throw InputError("element " + std::to_string(mesh.hex_id[r.hex]) +
+                         " has a non-positive volume: expected nodes n1-n4 counter-clockwise on "
+                         "the bottom face seen from above, n5-n8 above them");
     }
     SkinFace f;
     f.nodes = face_nodes(mesh.hexes[r.hex], r.local);

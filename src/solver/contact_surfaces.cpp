@@ -57,12 +57,22 @@ std::vector<SkinFace> contact_faces(const Model& model, const EntityRef& entity,
   std::function<bool(std::int32_t)> exposable;
   if (std::find(erodible.begin(), erodible.end(), 1) != erodible.end())
     exposable = [&erodible](std::int32_t h) { return erodible[h] != 0; };
+  // The skin's own errors (a hex of non-positive volume) have no deck line: give them the
+  // surface's.
+  const auto located = [&entity](const auto& extract) {
+    try {
+      return extract();
+    } catch (const InputError& e) {
+      if (!e.where().file.empty()) throw;
+      throw InputError(entity.where, e.message());
+    }
+  };
   if (entity.type == EntityType::All) {
-    faces = exterior_faces(model.mesh, merge, exposable);
+    faces = located([&] { return exterior_faces(model.mesh, merge, exposable); });
     for (const Part& p : model.parts) parts.push_back(p.id);
   } else if (entity.type == EntityType::Part || entity.type == EntityType::PartSet) {
     parts = model.parts_of(entity);
-    faces = exterior_faces(model.mesh, parts, merge, exposable);
+    faces = located([&] { return exterior_faces(model.mesh, parts, merge, exposable); });
   } else if (entity.type == EntityType::FaceSet) {
     for (const HexFace& hf : model.face_set(entity).faces) {
       SkinFace f;

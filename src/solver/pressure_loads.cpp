@@ -29,6 +29,17 @@ bool normalise_face(Quad4& q) {
   return false;  // q1 == q3 or q2 == q4: a quad folded onto its diagonal
 }
 
+// The skin's own errors (a hex of non-positive volume) have no deck line: give them the load's.
+template <class Extract>
+std::vector<SkinFace> located_skin(const PressureLoad& load, const Extract& extract) {
+  try {
+    return extract();
+  } catch (const InputError& e) {
+    if (!e.where().file.empty()) throw;
+    throw InputError(load.entity.where, e.message());
+  }
+}
+
 // The exterior solid faces and the shells (one flag per shell) of the entity of `load`.
 void select_faces(const Model& model, const PressureLoad& load, std::vector<SkinFace>& skin,
                   std::vector<std::uint8_t>& shell_selected) {
@@ -42,7 +53,7 @@ void select_faces(const Model& model, const PressureLoad& load, std::vector<Skin
         return std::binary_search(inside.begin(), inside.end(), node);
       });
     };
-    for (SkinFace& f : exterior_faces(mesh, false))
+    for (SkinFace& f : located_skin(load, [&] { return exterior_faces(mesh, false); }))
       if (in_region(f.nodes)) skin.push_back(f);
     for (std::size_t s = 0; s < mesh.shell_count(); ++s)
       shell_selected[s] = in_region(mesh.shells[s]) ? 1 : 0;
@@ -50,7 +61,7 @@ void select_faces(const Model& model, const PressureLoad& load, std::vector<Skin
     std::vector<std::int64_t> parts = model.parts_of(load.entity);  // sorted for P, PS, ALL
     std::sort(parts.begin(), parts.end());
     // Faces between two parts that share nodes are interior: no pressure acts there.
-    skin = exterior_faces(mesh, parts, false);
+    skin = located_skin(load, [&] { return exterior_faces(mesh, parts, false); });
     for (std::size_t s = 0; s < mesh.shell_count(); ++s)
       shell_selected[s] = std::binary_search(parts.begin(), parts.end(), mesh.shell_part[s]);
   }

@@ -150,6 +150,10 @@ void Simulation::Impl::report_erosion_to_contact() {
 // v^{n+1/2} from v^{n-1/2} and f^n, then boundary motions; energies at t^n.
 void Simulation::Impl::kick() {
   const double scaled = model.time.step_scale * stable;
+  // NaN would compare false below and end the run as if it had reached the end time.
+  if (n > 0 && !(scaled > 0.0))
+    throw InstabilityError(fmt::format("the stable time step became {:.4g} (limited by {})",
+                                       scaled, limit_description()));
   dt_next = std::min({scaled, model.time.max_step, model.time.end_time - t});
   if (scaled < model.time.min_step)
     throw InstabilityError(fmt::format(
@@ -517,6 +521,18 @@ std::string Simulation::Impl::limit_description() const {
     return "shells of part " + std::to_string(shell_blocks[limiting_shell_block].part_id());
   if (limiting_block < 0) return "dt_max of *TIME";
   return "elements of part " + std::to_string(blocks[limiting_block].part_id());
+}
+
+SourceLocation Simulation::Impl::limit_location() const {
+  if (limiting_contact >= 0) {
+    for (const ContactSpec& c : model.contacts)
+      if (c.id == limiting_contact) return c.where;
+  }
+  std::int64_t part = -1;
+  if (limiting_shell_block >= 0) part = shell_blocks[limiting_shell_block].part_id();
+  if (limiting_block >= 0) part = blocks[limiting_block].part_id();
+  if (const Part* p = model.find_part(part)) return p->where;
+  return {};
 }
 
 std::string Simulation::time_step_limit() const { return impl_->limit_description(); }

@@ -119,6 +119,10 @@ struct Simulation::Impl {
   void couple_heat();
   void gather_plastic_heat();
   std::string limit_description() const;
+  // The deck line of what limits the step (the *CONTACT or the *PART), or none.
+  SourceLocation limit_location() const;
+  // InputError at the *PART unless its lumped mass is finite (and positive when rigid).
+  void check_part_mass(const Part& part, const std::vector<double>& part_mass, bool rigid) const;
 };
 
 }  // namespace abut

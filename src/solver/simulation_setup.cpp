@@ -1,4 +1,7 @@
+#include <fmt/format.h>
+
 #include <array>
+#include <cmath>
 #include <map>
 #include <string>
 
@@ -68,9 +71,15 @@ void Simulation::Impl::setup() {
     } else {
       if (!part_hexes.empty()) {
         std::vector<Hex8> hexes;
+        std::vector<std::int64_t> ids;  // messages name the user's element ids
         hexes.reserve(part_hexes.size());
-        for (const std::int32_t e : part_hexes) hexes.push_back(mesh.hexes[e]);
+        ids.reserve(part_hexes.size());
+        for (const std::int32_t e : part_hexes) {
+          hexes.push_back(mesh.hexes[e]);
+          ids.push_back(mesh.hex_id[e]);
+        }
         blocks.emplace_back(part.id, material, std::move(hexes), mesh.nodes, &model.functions);
+        blocks.back().set_element_ids(std::move(ids));
         blocks.back().set_erosion(part.erosion);
         blocks.back().add_lumped_mass(part_mass);
         block_hex_index.push_back(part_hexes);
@@ -97,6 +106,7 @@ void Simulation::Impl::setup() {
         info.shell_block = static_cast<std::int32_t>(shell_blocks.size() - 1);
       }
     }
+    check_part_mass(part, part_mass, info.rigid);
     for (std::size_t i = 0; i < n_nodes; ++i) {
       if (part_mass[i] > 0.0) {
         info.nodes.push_back(static_cast<std::int32_t>(i));
@@ -202,8 +212,35 @@ void Simulation::Impl::setup() {
   couple_heat();
   compute_forces(0.0);
   dt_initial = std::min(model.time.step_scale * stable, model.time.max_step);
+  // A step of 0 or NaN would end the run at once with "completed 0 cycles": the input (a
+  // density so small that a contact spring's mass vanishes, ...) cannot be run.
+  if (!(dt_initial > 0.0))
+    throw InputError(limit_location(),
+                     fmt::format("the initial stable time step is {:.4g} (limited by {}): it must "
+                                 "be > 0; check the densities, moduli and contact stiffness",
+                                 dt_initial, limit_description()));
   kick();
   total0 = energy.total();
+}
+
+// The lumped mass a part gives its nodes must be finite, and a rigid part must have some: a
+// density of 1e308 overflows, a rigid part without mass has no centre of mass; both would run
+// on as infinities and NaN.
+void Simulation::Impl::check_part_mass(const Part& part, const std::vector<double>& part_mass,
+                                       bool rigid) const {
+  double total = 0.0;
+  for (const double m : part_mass) total += m;
+  if (std::isfinite(total) && (total > 0.0 || !rigid)) return;
+  const Material* material = model.find_material(part.material_id);
+  const std::string density =
+      material ? fmt::format("density {:.4g} of material {} at {}:{}",
+                             density_of(material->params), material->id, material->where.file,
+                             material->where.line)
+               : std::string("its density");
+  throw InputError(part.where,
+                   fmt::format("part {} has {} mass {:.4g} (from {}); expected a finite, positive "
+                               "mass: check the density and the element volumes",
+                               part.id, rigid ? "rigid" : "lumped", total, density));
 }
 
 // Node -> element force slots (CSR) in block and element order, hexes first, then shells.

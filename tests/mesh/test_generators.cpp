@@ -205,5 +205,69 @@ TEST(GenerateCylinder, SymmetryIsNotSupportedYet) {
   EXPECT_THROW(generate_cylinder(mesh, c), InputError);
 }
 
+// Issue 13: the merge tolerance follows the local node spacing and the coordinates' rounding,
+// not the size of the component or its distance from the origin.
+TEST(GenerateSphere, FarFromTheOriginKeepsItsTopology) {
+  SphereComponent far = seed_sphere();
+  far.centre = {0.0, 0.0, 1e5};  // a 1 cm sphere 100 km up
+  Mesh near_mesh, far_mesh;
+  generate_sphere(near_mesh, seed_sphere());
+  generate_sphere(far_mesh, far);
+  EXPECT_EQ(far_mesh.nodes.size(), near_mesh.nodes.size());
+  EXPECT_EQ(far_mesh.hex_count(), near_mesh.hex_count());
+  EXPECT_EQ(unused_nodes(far_mesh), 0u);
+  EXPECT_GT(min_hex_volume(far_mesh), 0.0);
+}
+
+TEST(GenerateBox, SlenderBoxKeepsEveryNode) {
+  BoxComponent bar;
+  bar.nx = 10;
+  bar.ny = 2;
+  bar.nz = 2;
+  bar.corner1 = {0.0, 0.0, 0.0};
+  bar.corner2 = {1e7, 0.01, 0.01};
+  Mesh mesh;
+  generate_box(mesh, bar);
+  EXPECT_EQ(mesh.hex_count(), 40u);
+  EXPECT_EQ(mesh.nodes.size(), 11u * 3u * 3u);
+  EXPECT_GT(min_hex_volume(mesh), 0.0);
+}
+
+TEST(GenerateCylinder, SlenderAndFarCylinderKeepsItsTopology) {
+  CylinderComponent c;
+  c.n_axial = 4;
+  c.density = 2;
+  c.end1 = {0.0, 0.0, 0.0};
+  c.end2 = {0.0, 0.0, 1e6};
+  c.radius1 = 0.01;
+  Mesh reference, slender;
+  CylinderComponent compact = c;
+  compact.end2 = {0.0, 0.0, 0.1};
+  generate_cylinder(reference, compact);
+  generate_cylinder(slender, c);
+  EXPECT_EQ(slender.nodes.size(), reference.nodes.size());
+  CylinderComponent far = compact;
+  far.end1 = {1e5, 1e5, 1e5};
+  far.end2 = {1e5, 1e5, 1e5 + 0.1};
+  Mesh far_mesh;
+  generate_cylinder(far_mesh, far);
+  EXPECT_EQ(far_mesh.nodes.size(), reference.nodes.size());
+  EXPECT_GT(min_hex_volume(far_mesh), 0.0);
+}
+
+TEST(GeneratorSizes, CountWithoutBuilding) {
+  Mesh mesh;
+  generate_sphere(mesh, seed_sphere());
+  const MeshSize sphere = sphere_size(seed_sphere());
+  EXPECT_DOUBLE_EQ(sphere.elements, static_cast<double>(mesh.hex_count()));
+  EXPECT_GE(sphere.nodes, static_cast<double>(mesh.nodes.size()));
+  const MeshSize box = box_size(seed_box());
+  EXPECT_DOUBLE_EQ(box.elements, 4.0);
+  EXPECT_DOUBLE_EQ(box.nodes, 18.0);
+  // A density the int range allows, a count no integer of the mesh holds.
+  SphereComponent huge = seed_sphere(100000);
+  EXPECT_GT(sphere_size(huge).elements, 1e15);
+}
+
 }  // namespace
 }  // namespace abut

@@ -3,10 +3,12 @@
 // until abut has a thermal solution; the automatic values follow the seed's formula.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "abut/io/deck.hpp"
+#include "abut/solver/contact_surfaces.hpp"
 #include "abut/solver/simulation.hpp"
 
 namespace abut {
@@ -141,6 +143,23 @@ P, 1, P, 2
   Simulation sim(model);
   const std::vector<ContactReport> reports = sim.contact_reports();
   for (const PartPenalty& p : reports[0].parts) EXPECT_NEAR(p.penalty, 2.1875e4, 1e-6 * 2.1875e4);
+}
+
+// Issue 13: the skin of a hex turned inside out after reading (the deck reader refuses one in
+// the deck) is an error at the contact surface's field, not one without a location.
+TEST(ContactSetup, InvertedHexOfASurfaceIsAtTheSurfaceField) {
+  Model model = read_deck_string(two_blocks("*UNIT_SYSTEM\nSI\n", "P, 1, P, 2\n"), "contact.k");
+  Hex8& hex = model.mesh.hexes[0];
+  std::swap_ranges(hex.begin(), hex.begin() + 4, hex.begin() + 4);  // top below bottom
+  try {
+    contact_faces(model, model.contacts[0].surface1, false, false);
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().file, "contact.k");
+    EXPECT_EQ(e.where().line, 20u);  // the surface row of *CONTACT
+    EXPECT_NE(std::string(e.what()).find("element 1 has a non-positive volume"), std::string::npos)
+        << e.what();
+  }
 }
 
 // Start-up check (issue 13): two steel blocks, one meshed 20 times finer than the other. Each

@@ -37,6 +37,18 @@ struct CylinderComponent {
   int symmetry = 0;            // 0 full, 1 half, 2 quarter
 };
 
+// How many elements and nodes a generator would add, computed without building anything (in
+// floating point: a deck may ask for more than an integer holds), so that the reader can refuse
+// a mesh that cannot fit in memory before allocating it. Invalid counts or radii give 0 (the
+// generator then reports them).
+struct MeshSize {
+  double elements = 0.0;
+  double nodes = 0.0;
+};
+MeshSize box_size(const BoxComponent& c);
+MeshSize sphere_size(const SphereComponent& c);
+MeshSize cylinder_size(const CylinderComponent& c);
+
 void generate_box(Mesh& mesh, const BoxComponent& c);
 void generate_sphere(Mesh& mesh, const SphereComponent& c);
 void generate_cylinder(Mesh& mesh, const CylinderComponent& c);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "abut/core/error.hpp"
 #include "abut/mesh/geometry.hpp"
 #include "abut/mesh/mesh.hpp"
 
@@ -17,6 +18,7 @@ struct OrderChange {          // one line of *CHANGE_P-ORDER, resolved
   std::vector<std::int64_t> parts;
   int order = 1;              // 1, 2 or 3
   std::optional<Geometry> region;  // gid: only hexes whose centroid is inside
+  SourceLocation where;            // the deck line, for errors (empty: the message says the keyword)
 };
 
 struct SurfaceSmoothing {     // *SMOOTH_MESH, or the alpha_max of *PART, resolved
@@ -24,6 +26,7 @@ struct SurfaceSmoothing {     // *SMOOTH_MESH, or the alpha_max of *PART, resolv
   double max_angle = 0.0;     // degrees: smooth across edges whose face normals differ less
   bool internal = false;
   std::optional<Geometry> region;
+  SourceLocation where;  // the deck line, for errors (empty: the message says the keyword)
 };
 
 // Applies all smoothing and order changes of the deck to the mesh (node and hex ids of new
