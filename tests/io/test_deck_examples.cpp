@@ -151,7 +151,9 @@ TEST(DeckExamples, HotDiePress) {
     const double h = 1.0e5 * std::pow(force[i] / area / 1.0e9, 0.95);
     EXPECT_GT(flow[i], 0.0);
     EXPECT_LT(flow[i], 280.0 / (die + 1.0 / (h * area)));
-    if (i > 0) EXPECT_GT(flow[i], flow[i - 1]);
+    if (i > 0) {
+      EXPECT_GT(flow[i], flow[i - 1]);
+    }
   }
 }
 
