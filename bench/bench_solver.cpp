@@ -1,7 +1,9 @@
 // Whole explicit cycle (element forces, assembly, time integration) on an elastic box with an
-// initial velocity field, 1k to 1M hexahedra, 1 and 2 threads. Reported as time per element-cycle (counter
-// per_element_cycle, e.g. "45n" = 45 ns).
-// Run: build/bench/abut_bench --benchmark_filter=ExplicitCycle
+// initial velocity field, 1k to 1M hexahedra, 1 and 2 threads. Reported as time per element-cycle
+// (counter per_element_cycle, e.g. "45n" = 45 ns). ExplicitCycleWithContact: the same cycle for two
+// such boxes (n x n x n/2 each) pressed together by their velocities, one symmetric *CONTACT
+// between them (every face of both parts a contact surface), so that the share of contact in a
+// whole cycle shows. Run: build/bench/abut_bench --benchmark_filter=ExplicitCycle
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 #include <omp.h>
@@ -30,7 +32,8 @@ SI
 *INITIAL_VELOCITY
 P, 1, fcn(1), 0.0, 0.0
 *END
-)", n);
+)",
+                                       n);
   return abut::read_deck_string(deck, "bench_box.k");
 }
 
@@ -44,12 +47,60 @@ void ExplicitCycle(benchmark::State& state) {
   const double elements = static_cast<double>(model.mesh.hex_count());
   state.counters["elements"] = elements;
   // Seconds per element-cycle, printed with an SI prefix ("45n" = 45 ns per element-cycle).
-  state.counters["per_element_cycle"] =
-      benchmark::Counter(elements, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["per_element_cycle"] = benchmark::Counter(
+      elements, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 BENCHMARK(ExplicitCycle)
     ->ArgsProduct({{10, 22, 46, 100}, {1, 2}})  // 1k, 10k, 100k, 1M hexahedra
+    ->ArgNames({"n", "threads"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+abut::Model two_boxes_model(int n) {
+  const std::string deck = fmt::format(R"(
+*UNIT_SYSTEM
+SI
+*TIME
+1.0
+*COMPONENT_BOX
+1, 1, {0}, {0}, {1}
+0.0, 0.0, 0.0, 1.0, 1.0, 0.5
+*COMPONENT_BOX
+2, 2, {0}, {0}, {1}
+0.0, 0.0, 0.5, 1.0, 1.0, 1.0
+*MAT_ELASTIC
+1, 7800.0, 210.0e9, 0.3
+*PART
+1, 1
+2, 1
+*INITIAL_VELOCITY
+P, 1, 0.0, 0.0, 1.0
+P, 2, 0.0, 0.0, -1.0
+*CONTACT
+1
+P, 1, P, 2
+*END
+)",
+                                       n, n / 2);
+  return abut::read_deck_string(deck, "bench_two_boxes.k");
+}
+
+void ExplicitCycleWithContact(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  omp_set_num_threads(static_cast<int>(state.range(1)));
+  const abut::Model model = two_boxes_model(n);
+  abut::Simulation sim(model);
+  for (int i = 0; i < 20; ++i) sim.advance();  // the boxes in contact
+  for (auto _ : state) sim.advance();
+  const double elements = static_cast<double>(model.mesh.hex_count());
+  state.counters["elements"] = elements;
+  state.counters["per_element_cycle"] = benchmark::Counter(
+      elements, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+BENCHMARK(ExplicitCycleWithContact)
+    ->ArgsProduct({{22, 46}, {1, 2}})  // 10k, 100k hexahedra
     ->ArgNames({"n", "threads"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();

@@ -501,6 +501,11 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
   cfx_.assign(nodes.size(), 0.0);
   cfy_.assign(nodes.size(), 0.0);
   cfz_.assign(nodes.size(), 0.0);
+  for (const ContactInterface& c : interfaces_)
+    surface_nodes_.insert(surface_nodes_.end(), c.surface_nodes().begin(), c.surface_nodes().end());
+  std::sort(surface_nodes_.begin(), surface_nodes_.end());
+  surface_nodes_.erase(std::unique(surface_nodes_.begin(), surface_nodes_.end()),
+                       surface_nodes_.end());
   for (const ContactSpec& spec : model.contacts)
     if (spec.exchanges_heat()) thermal_ = true;
   if (thermal_) {
@@ -512,13 +517,10 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
 void ContactSet::apply(const ContactInput& in, std::span<double> fx, std::span<double> fy,
                        std::span<double> fz) {
   if (interfaces_.empty()) return;
-  std::fill(cfx_.begin(), cfx_.end(), 0.0);
-  std::fill(cfy_.begin(), cfy_.end(), 0.0);
-  std::fill(cfz_.begin(), cfz_.end(), 0.0);
+  for (const std::int32_t i : surface_nodes_) cfx_[i] = cfy_[i] = cfz_[i] = 0.0;
   ContactForces forces{cfx_, cfy_, cfz_, {}, {}};
   if (thermal_) {
-    std::fill(heat_.begin(), heat_.end(), 0.0);
-    std::fill(conductance_.begin(), conductance_.end(), 0.0);
+    for (const std::int32_t i : surface_nodes_) heat_[i] = conductance_[i] = 0.0;
     forces.heat = heat_;
     forces.conductance = conductance_;
   }
@@ -526,7 +528,7 @@ void ContactSet::apply(const ContactInput& in, std::span<double> fx, std::span<d
     interfaces_[c].apply(in, forces);
     reports_[c].stats = interfaces_[c].stats();
   }
-  for (std::size_t i = 0; i < cfx_.size(); ++i) {
+  for (const std::int32_t i : surface_nodes_) {
     fx[i] += cfx_[i];
     fy[i] += cfy_[i];
     fz[i] += cfz_[i];

@@ -50,6 +50,9 @@ class ContactSet {
   std::vector<ContactReport> reports_;
   std::vector<ContactInterface> interfaces_;
   std::vector<double> cfx_, cfy_, cfz_;  // contact force per node, last step
+  // The nodes any interface can load (their surfaces' nodes, sorted): the only entries of the
+  // per-node arrays that apply() clears and adds, instead of every node of the model.
+  std::vector<std::int32_t> surface_nodes_;
   bool thermal_ = false;
   std::vector<double> heat_, conductance_;  // per node, last step (thermal contact only)
 };

@@ -113,6 +113,9 @@ class ContactInterface {
   bool self_contact() const { return sides_.size() == 1; }
   std::size_t point_count() const;
   std::size_t released_points() const;  // initially deeper than delta0_max
+  // Every node of both surfaces, sorted (dormant facets included): the only nodes apply() and
+  // the heat exchange write to.
+  std::span<const std::int32_t> surface_nodes() const { return surface_nodes_; }
   // Points of `initial` (the configuration the interface was built with) lying inside the other
   // surface's first layer of elements, deeper than the detection depth (initial_check.cpp).
   // Empty for self contact, where a point faces its own body's far side within that layer.
