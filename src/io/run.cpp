@@ -16,6 +16,7 @@
 #include "abut/io/progress.hpp"
 #include "abut/io/vtu_writer.hpp"
 #include "abut/solver/simulation.hpp"
+#include "contact_history.hpp"
 #include "run_thermal.hpp"
 
 namespace abut {
@@ -158,16 +159,7 @@ class HistoryWriter {
         thermal_(thermal),
         parts_(dir / "parts.csv",
                {"part", "mass", "x", "y", "z", "vx", "vy", "vz", "kinetic", "internal"}) {
-    std::vector<std::string> columns{"contact",
-                                     "fx",
-                                     "fy",
-                                     "fz",
-                                     "normal_force",
-                                     "tangential_force",
-                                     "energy",
-                                     "friction_energy",
-                                     "max_penetration",
-                                     "active_points"};
+    std::vector<std::string> columns = contact_history_columns();
     // Thermal contact: the heat flowing from surface 1 to surface 2 now, conducted so far and
     // made by friction so far.
     if (contact_heat_)
@@ -362,8 +354,7 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
   log << "abut: writing results to " << options.output_dir.string() << "\n" << std::flush;
 
   StateWriter states(options.output_dir, model);
-  bool contact_heat = false;
-  for (const ContactSpec& c : model.contacts) contact_heat = contact_heat || c.exchanges_heat();
+  const bool contact_heat = contacts_exchange_heat(model);
   HistoryWriter histories(options.output_dir, sim.has_contact(), thermal_output::active(sim),
                           contact_heat);
   Schedule state_schedule(model.time.start_time, state_interval);

@@ -21,6 +21,7 @@
 #include "abut/io/vtu_writer.hpp"
 #include "abut/solver/static_heat.hpp"
 #include "abut/solver/static_solver.hpp"
+#include "io/contact_history.hpp"
 #include "io/static_print.hpp"
 
 namespace abut {
@@ -137,8 +138,7 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
   log << "abut: writing results to " << dir.string() << "\n" << std::flush;
   if (heat.active())
     log << "abut: steady heat conduction at every state (temperature in the states)\n";
-  bool contact_heat = false;
-  for (const ContactSpec& c : model.contacts) contact_heat = contact_heat || c.exchanges_heat();
+  const bool contact_heat = contacts_exchange_heat(model);
   PvdSeries series(dir / "results.pvd");
   // The reference state has no contact evaluated yet: a body that only contact would hold at a
   // temperature has no steady one there and shows its initial temperature.
@@ -153,16 +153,7 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
   CsvHistory energy(dir / "energy.csv", {"internal", "contact", "friction"});
   std::optional<CsvHistory> contact;
   if (!model.contacts.empty()) {
-    std::vector<std::string> columns{"contact",
-                                     "fx",
-                                     "fy",
-                                     "fz",
-                                     "normal_force",
-                                     "tangential_force",
-                                     "energy",
-                                     "friction_energy",
-                                     "max_penetration",
-                                     "active_points"};
+    std::vector<std::string> columns = contact_history_columns();
     if (contact_heat) columns.emplace_back("heat_flow");
     contact.emplace(dir / "contact.csv", columns);
   }
