@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -43,6 +44,17 @@ std::string parse_threads(const std::string& text, int& threads) {
     return fmt::format("--threads must be a whole number between 1 and {}, not '{}'", kMaxThreads,
                        text);
   threads = value;
+  return {};
+}
+
+std::string parse_interval(const std::string& text, double& interval) {
+  double value = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (ec != std::errc() || ptr != end || !std::isfinite(value) || !(value > 0.0))
+    return fmt::format("--restart-interval must be a positive model time, not '{}'",
+                       text.substr(0, 80));
+  interval = value;
   return {};
 }
 

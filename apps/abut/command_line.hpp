@@ -18,4 +18,7 @@ std::string deck_error(const std::string& deck);
 // A whole number of threads from 1 to kMaxThreads, stored in `threads`.
 std::string parse_threads(const std::string& text, int& threads);
 
+// A positive, finite model time for --restart-interval, stored in `interval`.
+std::string parse_interval(const std::string& text, double& interval);
+
 }  // namespace abut_cli

@@ -122,6 +122,12 @@ int main(int argc, char** argv) {
                   "Output directory (default: <deck stem>_out beside the deck)");
   run->add_option("--threads", threads_text, "Number of threads (default: all cores)");
   run->add_flag("-q,--quiet", quiet, "No progress output");
+  std::string restart_from, restart_interval_text;
+  run->add_option("--restart", restart_from,
+                  "Continue from a restart file (default output: the file's directory)");
+  run->add_option("--restart-interval", restart_interval_text,
+                  "Also write restart.abr every this much model time and at the end (it is always "
+                  "written when the run is interrupted)");
   CLI::App* check =
       app.add_subcommand("check", "Parse and validate a deck; every error with file:line");
   check->add_option("deck", deck, "Input deck")->required();
@@ -138,7 +144,11 @@ int main(int argc, char** argv) {
   }
   int threads = 0;
   std::string error = abut_cli::deck_error(deck);
-  if (error.empty() && !threads_text.empty()) error = abut_cli::parse_threads(threads_text, threads);
+  if (error.empty() && !threads_text.empty())
+    error = abut_cli::parse_threads(threads_text, threads);
+  double restart_interval = 0.0;
+  if (error.empty() && !restart_interval_text.empty())
+    error = abut_cli::parse_interval(restart_interval_text, restart_interval);
   if (!error.empty()) {
     std::cerr << "error: " << error << "\n";
     return 2;
@@ -172,7 +182,12 @@ int main(int argc, char** argv) {
       return 0;
     }
     abut::RunOptions options;
-    options.output_dir = output.empty() ? default_output_dir(deck) : fs::path(output);
+    options.output_dir = !output.empty()         ? fs::path(output)
+                         : !restart_from.empty() ? fs::path(restart_from).parent_path()
+                                                 : default_output_dir(deck);
+    if (options.output_dir.empty()) options.output_dir = ".";
+    options.restart_from = restart_from;
+    options.restart_interval = restart_interval;
     options.threads = threads;
     options.progress = !quiet;
     abut::interrupt::install();
@@ -181,8 +196,11 @@ int main(int argc, char** argv) {
     if (report.interrupted) {
       const int signal = abut::interrupt::received();
       std::cerr << "abut: interrupted by "
-                << (signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal")
-                << "; the final state and summary.json are written\n";
+                << (signal == SIGINT    ? "SIGINT"
+                    : signal == SIGTERM ? "SIGTERM"
+                                        : "a signal")
+                << "; the final state, summary.json"
+                << (model.static_steps.empty() ? " and restart.abr are" : " are") << " written\n";
       return 128 + signal;
     }
     return report.stable ? 0 : 3;

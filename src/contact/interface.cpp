@@ -129,6 +129,21 @@ void ContactInterface::update_moving_region(const ContactInput& in) {
     }
 }
 
+// The settings, surfaces, parts and initial coordinates come from the caller; everything else
+// evolves (erosion adds points and switches facets off; the region switches facets off).
+void ContactInterface::archive(StateArchive& a) {
+  a.mark("contact interface");
+  a.expect(static_cast<std::uint64_t>(sides_.size()), "the side count of a contact");
+  a.expect(static_cast<std::uint64_t>(passes_.size()), "the passes of a contact (one way or both)");
+  for (Side& side : sides_)
+    a.expect(static_cast<std::uint64_t>(side.surface.size()), "the facet count of a contact");
+  for (const std::uint64_t points : initial_points_)
+    a.expect(points, "the contact points of a side as built");
+  a.expect(settings_.thermal.any(), "whether a contact exchanges heat");
+  a.values(sides_, passes_, mass_, bx_, by_, bz_, wear_, pressure_, margin_, initial_stable_step_,
+           builds_, rebuild_pending_, gap_pairs_, edges_, stats_);
+}
+
 std::vector<PairStiffness> ContactInterface::pair_stiffness() const {
   // Every rule is increasing in both sides' values, so the range over a part pair follows from
   // the ranges of the point values (own side) and the facet values (target side) of each part.

@@ -89,6 +89,7 @@ ContactInterface::ContactInterface(ContactSettings settings, ContactSurface surf
   build_passes();
   build_edges(initial);
   initial_state(initial);
+  for (const Side& side : sides_) initial_points_.push_back(side.point_facet.size());
 }
 
 void ContactInterface::build_parts() {

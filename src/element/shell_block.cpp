@@ -8,6 +8,7 @@
 
 #include "abut/core/error.hpp"
 #include "abut/core/parallel.hpp"
+#include "abut/core/state_archive.hpp"
 #include "abut/element/shell4.hpp"
 #include "abut/material/point_law.hpp"
 
@@ -410,6 +411,18 @@ const ShellSection& ShellBlock::section() const { return impl_->section; }
 const std::vector<double>& ShellBlock::element_forces() const { return impl_->forces; }
 const std::vector<double>& ShellBlock::point_stress() const { return impl_->stress; }
 const std::vector<std::uint8_t>& ShellBlock::eroded() const { return impl_->eroded; }
+// Everything update() carries from one step to the next (SolidBlock::archive).
+void ShellBlock::archive(StateArchive& a) {
+  Impl& m = *impl_;
+  a.mark("shell block");
+  a.expect(m.part_id, "the part of a shell block");
+  a.expect(static_cast<std::uint64_t>(m.shells.size()), "the element count of a shell block");
+  a.fixed(m.stress, m.history, m.thickness_ratio, m.hourglass, m.forces, m.internal_work,
+          m.hourglass_work, m.stable, m.failure, m.eroded, m.element_internal, m.element_hourglass,
+          m.geometric_strain, m.area_ratio);
+  a.values(m.internal_energy, m.hourglass_energy, m.eroded_energy, m.eroded_count);
+}
+
 void ShellBlock::set_element_ids(std::vector<std::int64_t> ids) {
   impl_->element_ids = std::move(ids);
 }

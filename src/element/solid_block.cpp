@@ -42,6 +42,7 @@
 
 #include "abut/core/error.hpp"
 #include "abut/core/parallel.hpp"
+#include "abut/core/state_archive.hpp"
 #include "abut/element/hex8.hpp"
 #include "abut/element/stable_step.hpp"
 #include "abut/material/elastic.hpp"
@@ -738,6 +739,20 @@ void SolidBlock::set_thermal(const ThermalCoupling& coupling) {
 bool SolidBlock::thermal() const { return impl_->coupled; }
 
 const std::vector<double>& SolidBlock::plastic_work() const { return impl_->element_plastic_work; }
+
+// Everything update() carries from one step to the next; the geometry, material and element
+// ids come from the model.
+void SolidBlock::archive(StateArchive& a) {
+  Impl& m = *impl_;
+  a.mark("solid block");
+  a.expect(m.part_id, "the part of a solid block");
+  a.expect(static_cast<std::uint64_t>(m.hexes.size()), "the element count of a solid block");
+  a.fixed(m.stress, m.viscous, m.hourglass, m.forces, m.internal_work, m.history, m.eroded,
+          m.element_internal, m.element_hourglass, m.geometric_strain, m.volume_ratio,
+          m.hourglass_work, m.stable, m.failure, m.element_temperature, m.element_plastic_work);
+  a.values(m.eroded_energy, m.eroded_count, m.internal_energy, m.hourglass_energy,
+           m.temperature_started);
+}
 
 void SolidBlock::set_element_ids(std::vector<std::int64_t> ids) {
   if (ids.size() != size()) {

@@ -2,9 +2,12 @@
 
 #include <array>
 #include <charconv>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <string_view>
 
+#include "abut/core/state_archive.hpp"
 #include "io/output_file.hpp"
 
 namespace abut {
@@ -70,6 +73,29 @@ void CsvHistory::write_row(double time, std::span<const Value> values) {
   }
   line_ += '\n';
   out_ << line_ << std::flush;
+  output_file::check(out_, path_);
+}
+
+void CsvHistory::archive(StateArchive& a) {
+  std::string header = "time";
+  for (const std::string& name : columns_) {
+    header += ',';
+    append_name(header, name);
+  }
+  header += '\n';
+  std::string text;
+  if (a.saving()) {
+    out_.flush();
+    std::ifstream in(path_, std::ios::binary);
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  a.value(text);
+  if (a.saving()) return;
+  if (text.compare(0, header.size(), header) != 0)
+    a.fail("the columns of " + path_.filename().string() + " differ from the restart file's");
+  out_.close();
+  out_ = output_file::open(path_);
+  out_ << text << std::flush;
   output_file::check(out_, path_);
 }
 

@@ -21,9 +21,9 @@ namespace fs = std::filesystem;
 constexpr const char* kLockName = ".abut.lock";
 
 // The files of a run directly in the directory (see the header); the states are matched by name.
-constexpr std::array<const char*, 7> kRunFiles{"results.pvd", "summary.json", "results.dat",
-                                               "energy.csv",  "parts.csv",    "contact.csv",
-                                               "increments.csv"};
+constexpr std::array<const char*, 8> kRunFiles{"results.pvd",    "summary.json", "results.dat",
+                                               "energy.csv",     "parts.csv",    "contact.csv",
+                                               "increments.csv", "restart.abr"};
 
 std::string unusable(const fs::path& dir, const std::string& reason) {
   return "cannot write the output directory '" + dir.string() + "': " + reason +
@@ -32,7 +32,8 @@ std::string unusable(const fs::path& dir, const std::string& reason) {
 
 bool is_state_file(const std::string& name) {
   const auto ends_with = [&](std::string_view end) {
-    return name.size() >= end.size() && name.compare(name.size() - end.size(), end.size(), end) == 0;
+    return name.size() >= end.size() &&
+           name.compare(name.size() - end.size(), end.size(), end) == 0;
   };
   return name.rfind("state_", 0) == 0 && (ends_with(".vtu") || ends_with(".vtu.tmp"));
 }
@@ -62,7 +63,7 @@ void remove_previous_run(const fs::path& dir) {
 
 }  // namespace
 
-OutputDirectory::OutputDirectory(fs::path dir) : dir_(std::move(dir)) {
+OutputDirectory::OutputDirectory(fs::path dir, bool clean) : dir_(std::move(dir)) {
   std::error_code error;
   if (fs::exists(dir_, error) && !fs::is_directory(dir_, error))
     throw InputError(unusable(dir_, "it is a file, not a directory"));
@@ -99,9 +100,10 @@ OutputDirectory::OutputDirectory(fs::path dir) : dir_(std::move(dir)) {
     const int reason = errno;
     unlink(lock.c_str());
     close(lock_fd_);
-    throw InputError(unusable(dir_, reason != 0 ? std::strerror(reason) : "cannot write " + lock.string()));
+    throw InputError(
+        unusable(dir_, reason != 0 ? std::strerror(reason) : "cannot write " + lock.string()));
   }
-  remove_previous_run(dir_);
+  if (clean) remove_previous_run(dir_);
 }
 
 OutputDirectory::~OutputDirectory() {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "abut/core/error.hpp"
+#include "abut/core/state_archive.hpp"
 #include "abut/io/csv_history.hpp"
 #include "abut/io/json_writer.hpp"
 #include "abut/io/output_directory.hpp"
@@ -17,6 +18,7 @@
 #include "abut/io/vtu_writer.hpp"
 #include "abut/solver/simulation.hpp"
 #include "contact_history.hpp"
+#include "restart_file.hpp"
 #include "run_thermal.hpp"
 
 namespace abut {
@@ -126,11 +128,26 @@ class StateWriter {
       hexes = alive_hexes_;
       shells = alive_shells_;
     }
-    const std::string name = fmt::format("states/state_{:04d}.vtu", series_.size());
+    const std::string name = fmt::format("states/state_{:04d}.vtu", written_);
     const HexGridView grid{x, y, z, hexes, shells};
     write_vtu(dir_ / name, grid, point_fields, cell_fields);
     series_.add(time, name);
     last_time_ = time;
+    ++written_;
+  }
+
+  // Restart: the series so far. Loading removes the states that the interrupted run wrote after
+  // its restart file (they will be written again).
+  void archive(StateArchive& a) {
+    a.values(series_, last_time_, written_);
+    if (a.saving()) return;
+    std::error_code ignored;
+    for (const fs::directory_entry& entry : fs::directory_iterator(dir_ / "states", ignored)) {
+      const std::string file = entry.path().filename().string();
+      unsigned index = 0;
+      if (std::sscanf(file.c_str(), "state_%u.vtu", &index) == 1 && index >= written_)
+        fs::remove(entry.path(), ignored);
+    }
   }
 
   const fs::path& pvd() const { return series_.path(); }
@@ -141,6 +158,7 @@ class StateWriter {
   const Model& model_;
   PvdSeries series_;
   double last_time_ = 0.0;
+  std::uint64_t written_ = 0;  // states written, numbering the next
   std::vector<double> displacement_, velocity_, part_id_, thickness_, von_mises_, pressure_,
       plastic_strain_, plastic_strain_rate_, shell_values_;
   std::vector<double> contact_force_, contact_pressure_, wear_;
@@ -215,6 +233,11 @@ class HistoryWriter {
 
   CsvHistory energy_;
   bool thermal_;
+
+ public:
+  void archive(StateArchive& a) { a.values(energy_, parts_, contact_, written_, last_time_); }
+
+ private:
   std::vector<CsvHistory::Value> energy_values_;
   CsvHistory parts_;
   std::optional<CsvHistory> contact_;
@@ -231,6 +254,7 @@ class Schedule {
     while (next_ <= t + 1e-9 * interval_) next_ += interval_;
     return true;
   }
+  void archive(StateArchive& a) { a.value(next_); }
 
  private:
   double next_, interval_;
@@ -322,12 +346,35 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
 }  // namespace
 
 RunReport run_simulation(const Model& model, const RunOptions& options, std::ostream& log) {
-  if (!model.static_steps.empty()) return run_static_analysis(model, options, log);
+  if (!model.static_steps.empty()) {
+    if (!options.restart_from.empty() || options.restart_interval > 0.0)
+      throw InputError(
+          "restart files are written and read by explicit runs only; this deck has static steps");
+    return run_static_analysis(model, options, log);
+  }
   if (options.threads > 0) omp_set_num_threads(options.threads);
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
 
   Simulation sim(model);
-  const OutputDirectory output(options.output_dir);
+  // A restart loads the simulation's state before it claims the output directory, so that a file
+  // that does not fit leaves the interrupted run's output alone.
+  std::optional<StateArchive> restart;
+  const SourceLocation restart_where{options.restart_from.string(), 0, "", ""};
+  const auto unfit = [&](const StateArchiveError& e) {
+    return InputError(restart_where,
+                      std::string("the restart file does not fit this deck: ") + e.what());
+  };
+  if (!options.restart_from.empty()) {
+    restart = restart_file::read(options.restart_from, model);
+    try {
+      sim.archive(*restart);
+      restart->mark("output");
+    } catch (const StateArchiveError& e) {
+      throw unfit(e);
+    }
+  }
+  const std::int64_t first_cycle = sim.cycle();
+  const OutputDirectory output(options.output_dir, !restart);
   const double t_end = model.time.end_time;
   const double span = t_end - model.time.start_time;
   const double state_interval =
@@ -359,6 +406,33 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
                           contact_heat);
   Schedule state_schedule(model.time.start_time, state_interval);
   Schedule history_schedule(model.time.start_time, history_interval);
+  const double restart_interval = options.restart_interval;
+  Schedule restart_schedule(model.time.start_time + restart_interval, restart_interval);
+  if (restart) {
+    try {
+      restart->values(states, histories, state_schedule, history_schedule);
+      restart->mark("end");
+      if (!restart->exhausted()) restart->fail("the file holds more than this deck's state");
+    } catch (const StateArchiveError& e) {
+      throw unfit(e);
+    }
+    if (restart_interval > 0.0) restart_schedule.due(sim.time());  // the next one after now
+    log << fmt::format("abut: continuing from {} at t = {:.6g}, cycle {}\n",
+                       options.restart_from.string(), sim.time(), sim.cycle())
+        << std::flush;
+  }
+  // Saved at the top of a cycle, after that time's output: a restart repeats nothing.
+  const fs::path restart_path = options.output_dir / restart_file::kName;
+  double restart_time = -1.0;
+  const auto save_restart = [&] {
+    StateArchive a = StateArchive::for_saving();
+    sim.archive(a);
+    a.mark("output");
+    a.values(states, histories, state_schedule, history_schedule);
+    a.mark("end");
+    restart_file::write(restart_path, model, a);
+    restart_time = sim.time();
+  };
   ProgressReporter progress = ProgressReporter::to_stderr(model.time.start_time, t_end);
 
   RunReport report;
@@ -367,11 +441,16 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
     for (;;) {
       if (history_schedule.due(sim.time())) histories.write(sim);
       if (state_schedule.due(sim.time())) states.write(sim, false);
-      if (sim.finished()) break;
-      if (options.stop_requested && options.stop_requested()) {
-        report.interrupted = true;
+      if (sim.finished()) {
+        if (restart_interval > 0.0) save_restart();
         break;
       }
+      if (options.stop_requested && options.stop_requested()) {
+        report.interrupted = true;
+        save_restart();
+        break;
+      }
+      if (restart_interval > 0.0 && restart_schedule.due(sim.time())) save_restart();
       sim.advance();
       if (options.progress) progress.update(sim.time(), sim.cycle());
     }
@@ -389,7 +468,7 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
   report.cycles = sim.cycle();
   const double element_cycles =
       static_cast<double>(model.mesh.hex_count() + model.mesh.shell_count()) *
-      static_cast<double>(report.cycles);
+      static_cast<double>(report.cycles - first_cycle);
   report.ns_per_element_cycle =
       element_cycles > 0 ? 1e9 * report.wall_seconds / element_cycles : 0.0;
   report.energy_balance_error = sim.energy_balance_error();
@@ -416,8 +495,11 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
         << fmt::format("abut: the last good state (t = {:.6g}) is in the ParaView series\n",
                        sim.last_good_time());
   }
-  log << "abut: ParaView series: " << report.pvd.string() << " (" << states.count() << " states)\n"
-      << std::flush;
+  log << "abut: ParaView series: " << report.pvd.string() << " (" << states.count() << " states)\n";
+  if (restart_time >= 0.0)
+    log << fmt::format("abut: restart file {} (t = {:.6g}); continue with --restart {}\n",
+                       restart_path.string(), restart_time, restart_path.string());
+  log << std::flush;
   return report;
 }
 

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "abut/core/state_archive.hpp"
 #include "io/output_file.hpp"
 
 namespace abut {
@@ -240,6 +241,24 @@ void PvdSeries::add(double time, const std::string& vtu_file) {
   }
   text += "  </Collection>\n</VTKFile>\n";
   output_file::replace(path_, text);
+}
+
+void PvdSeries::State::archive(StateArchive& a) { a.values(time, file); }
+
+void PvdSeries::archive(StateArchive& a) {
+  std::uint64_t count = states_.size();
+  a.value(count);
+  if (a.saving()) {
+    for (State& state : states_) state.archive(a);
+    return;
+  }
+  std::vector<State> saved(count);
+  for (State& state : saved) state.archive(a);
+  states_.clear();
+  std::error_code ignored;
+  for (const State& state : saved)
+    if (std::filesystem::exists(path_.parent_path() / state.file, ignored))
+      add(state.time, state.file);
 }
 
 }  // namespace abut

@@ -584,4 +584,11 @@ void ContactSet::nodal_fields(std::vector<double>& force, std::vector<double>& p
   }
 }
 
+void ContactSet::archive(StateArchive& a) {
+  a.mark("contacts");
+  a.expect(static_cast<std::uint64_t>(interfaces_.size()), "the number of contacts");
+  a.values(interfaces_, cfx_, cfy_, cfz_, heat_, conductance_);
+  for (std::size_t c = 0; c < interfaces_.size(); ++c) reports_[c].stats = interfaces_[c].stats();
+}
+
 }  // namespace abut

@@ -44,6 +44,8 @@ class ContactSet {
   // Nodal output fields summed over all interfaces (force interleaved x, y, z).
   void nodal_fields(std::vector<double>& force, std::vector<double>& pressure,
                     std::vector<double>& wear) const;
+  // Saves or loads every interface's state and the last step's nodal fields (restart).
+  void archive(StateArchive& a);
 
  private:
   const Model& model_;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "abut/core/mat3.hpp"
+#include "abut/core/state_archive.hpp"
 #include "abut/core/vec3.hpp"
 
 namespace abut {
@@ -27,6 +28,8 @@ struct RigidBody {
   void initialise(const std::vector<double>& x, const std::vector<double>& y,
                   const std::vector<double>& z, const std::vector<double>& nodal_mass);
   Mat3 spatial_inertia() const;
+  // The motion (the rest is fixed by the reference configuration), for a restart.
+  void archive(StateArchive& a) { a.values(centre, velocity, angular_velocity, rotation); }
 };
 
 }  // namespace abut

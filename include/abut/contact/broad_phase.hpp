@@ -13,6 +13,8 @@
 #include <span>
 #include <vector>
 
+#include "abut/core/state_archive.hpp"
+
 namespace abut {
 
 struct Box {
@@ -27,6 +29,7 @@ struct CandidateList {
   std::vector<std::size_t> offsets;
   std::vector<std::int32_t> facets;
   std::size_t point_count() const { return offsets.empty() ? 0 : offsets.size() - 1; }
+  void archive(StateArchive& a) { a.values(offsets, facets); }
 };
 
 class BucketGrid {
@@ -38,6 +41,10 @@ class BucketGrid {
              CandidateList& out,
              const std::function<bool(std::size_t, std::int32_t)>& keep = {}) const;
   std::size_t cell_count() const { return cell_start_.empty() ? 0 : cell_start_.size() - 1; }
+  // The grid as built, for a restart (state_archive.hpp).
+  void archive(StateArchive& a) {
+    a.values(boxes_, origin_, cell_size_, dims_, cell_start_, cell_boxes_);
+  }
 
  private:
   bool cell_of(double x, double y, double z, std::size_t& cell) const;

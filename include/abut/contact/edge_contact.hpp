@@ -76,6 +76,13 @@ class EdgeContact {
   std::vector<double> mx_, my_, mz_;               // midpoints of the first edges (queries)
   std::vector<std::vector<Hit>> hits_, previous_;  // per first edge
   std::vector<EdgeContactResult> partial_;         // per first edge, this step
+
+ public:
+  // The pairs in contact and the broad phase, for a restart (state_archive.hpp).
+  void archive(StateArchive& a) {
+    a.mark("edge contact");
+    a.values(grid_, candidates_, mx_, my_, mz_, hits_, previous_, partial_);
+  }
 };
 
 }  // namespace abut

@@ -23,6 +23,7 @@
 #include "abut/contact/narrow_phase.hpp"
 #include "abut/contact/settings.hpp"
 #include "abut/contact/surface.hpp"
+#include "abut/core/state_archive.hpp"
 #include "abut/core/vec3.hpp"
 
 namespace abut {
@@ -124,6 +125,9 @@ class ContactInterface {
   std::size_t broad_phase_builds() const { return builds_; }
   std::size_t contact_edges() const { return edges_ ? edges_->edge_count() : 0; }
   double search_margin() const { return margin_; }
+  // Saves or loads the evolving state (contact points, friction and tie history, initial
+  // offsets, wear, the broad phase as built, statistics) for a restart (state_archive.hpp).
+  void archive(StateArchive& a);
 
  private:
   enum PointState : std::uint8_t { kFree, kReleased, kTied, kUntied };
@@ -158,6 +162,14 @@ class ContactInterface {
     double max_point_depth = 0.0;
     double max_km = 0.0;    // stiffest main segment (stable-step bound)
     double max_pfac = 0.0;  // stiffest facet penalty (stable-step bound)
+    // Everything but the surface (fixed); erosion adds points and switches facets.
+    void archive(StateArchive& a) {
+      a.values(sharp, free_edges, off, active, depth, facet_gap, facet_min_edge, node_area,
+               facet_km, facet_part, node_facet_start, node_facets, point_facet, point_node,
+               point_xi, point_eta, point_weight, point_pfac, point_ks, point_share, point_depth,
+               point_thickness, point_gap, point_min_edge, max_point_gap, max_facet_gap, point_part,
+               node_free, max_point_depth, max_km, max_pfac);
+    }
     std::array<std::int32_t, 4> point_nodes(std::size_t p) const {
       const std::int32_t n = point_node[p];
       return n >= 0 ? std::array<std::int32_t, 4>{n, n, n, n} : surface.facets[point_facet[p]];
@@ -188,6 +200,13 @@ class ContactInterface {
     // the search distance too) and the conductance h A of the point [power / temperature].
     std::vector<std::int32_t> heat_facet;
     std::vector<double> heat_xi, heat_eta, heat_conductance;
+    void archive(StateArchive& a) {
+      a.values(own, target, weight, grid, candidates, qx, qy, qz, state, sliding, adhered, offset,
+               shift, htx, hty, htz, tie_facet, tie_xi, tie_eta, hit, hit_facet, hit_xi, hit_eta,
+               fx, fy, fz, area, pressure, slip_speed, normal_force, tangential_force, energy,
+               damping_work, slip_work, penetration, omega2, pair_gap, heat_facet, heat_xi,
+               heat_eta, heat_conductance);
+    }
   };
 
   // Where a contact point is now.
@@ -255,6 +274,8 @@ class ContactInterface {
   bool rebuild_pending_ = false;      // points or facets changed (erosion)
   std::size_t gap_pairs_ = 0;         // pairs counted in stats_.gap_min / gap_max
   std::optional<EdgeContact> edges_;  // edge-to-edge contact (EdgeSettings)
+  // Contact points per side as built (erosion adds more): what a restart file must match.
+  std::vector<std::uint64_t> initial_points_;
   std::vector<double> x0_, y0_, z0_;  // initial coordinates (Igap 2 only)
   ContactStats stats_;
 };

@@ -38,6 +38,8 @@
 
 namespace abut {
 
+class StateArchive;
+
 struct ShellNodalState {
   const double* x;  // coordinates x^n
   const double* y;
@@ -101,6 +103,8 @@ class ShellBlock {
   void set_erosion(const ErosionCriteria& criteria);
   const std::vector<std::uint8_t>& eroded() const;
   void set_element_ids(std::vector<std::int64_t> ids);
+  // Saves or loads the evolving state for a restart (state_archive.hpp), as SolidBlock.
+  void archive(StateArchive& a);
 
  private:
   struct Impl;

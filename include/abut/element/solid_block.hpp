@@ -20,6 +20,8 @@
 
 namespace abut {
 
+class StateArchive;
+
 struct NodalState {
   const double* x;  // current coordinates x^n
   const double* y;
@@ -124,6 +126,9 @@ class SolidBlock {
   // User element ids (one per hex) so that an InstabilityError names the element as the user
   // knows it; without them the message gives the index in the block.
   void set_element_ids(std::vector<std::int64_t> ids);
+  // Saves or loads the evolving state (stresses, histories, erosion, energies) for a restart
+  // (state_archive.hpp).
+  void archive(StateArchive& a);
 
  private:
   struct Impl;

@@ -16,6 +16,8 @@
 
 namespace abut {
 
+class StateArchive;
+
 class CsvHistory {
  public:
   using Value = std::variant<std::int64_t, double>;
@@ -32,6 +34,9 @@ class CsvHistory {
 
   const std::vector<std::string>& columns() const { return columns_; }
   const std::filesystem::path& path() const { return path_; }
+  // Restart: saving keeps the text of the file so far; loading writes it back (its header must
+  // be this history's) and goes on appending to it.
+  void archive(StateArchive& a);
 
  private:
   std::filesystem::path path_;

@@ -4,17 +4,18 @@
 // its pid) for as long as it writes, and a second run stops with an error naming the first.
 // Once it owns the directory, the run removes the files a previous run wrote there, and only
 // those: results.pvd, states/state_NNNN.vtu, energy.csv, parts.csv, contact.csv,
-// increments.csv, results.dat and summary.json. Other files in the directory are left alone.
+// increments.csv, results.dat, summary.json and restart.abr. Other files in the directory are left alone.
 #include <filesystem>
 
 namespace abut {
 
 class OutputDirectory {
  public:
-  // Creates `dir` (and its parents) if missing, locks it and cleans it. Throws InputError when
-  // the directory cannot be created or written, or another run holds it: the user chooses
-  // another with -o.
-  explicit OutputDirectory(std::filesystem::path dir);
+  // Creates `dir` (and its parents) if missing, locks it and cleans it (unless `clean` is false:
+  // a restart continues the files of the run it continues). Throws InputError when the
+  // directory cannot be created or written, or another run holds it: the user chooses another
+  // with -o.
+  explicit OutputDirectory(std::filesystem::path dir, bool clean = true);
   ~OutputDirectory();  // releases the lock and removes the lock file
   OutputDirectory(const OutputDirectory&) = delete;
   OutputDirectory& operator=(const OutputDirectory&) = delete;

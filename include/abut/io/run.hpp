@@ -3,6 +3,7 @@
 //   results.pvd + states/state_NNNN.vtu  (ParaView series; the final state always included)
 //   energy.csv, parts.csv                (time histories)
 //   summary.json                         (cycles, times, speed, final energies, parts)
+//   restart.abr                          (when interrupted, or at RunOptions::restart_interval)
 #include <filesystem>
 #include <functional>
 #include <iosfwd>
@@ -19,6 +20,12 @@ struct RunOptions {
   // Polled after every cycle (explicit) or increment (static): true stops the run there, with
   // a final state and summary.json written (RunReport::interrupted). Empty: never.
   std::function<bool()> stop_requested = {};
+  // Restart files (issue 13; explicit runs): a run writes `restart.abr` in its output directory
+  // when it is interrupted, and with restart_interval > 0 also every restart_interval of model
+  // time and at its end. A run given restart_from continues from that file, bitwise identically,
+  // in output_dir, whose histories and states it continues.
+  double restart_interval = 0.0;
+  std::filesystem::path restart_from = {};
 };
 
 struct RunReport {

@@ -17,6 +17,8 @@
 
 namespace abut {
 
+class StateArchive;
+
 // VTK's cell type ids (vtkCellType.h: VTK_HEXAHEDRON = 12, VTK_QUAD = 9, VTK_TRIANGLE = 5).
 inline constexpr unsigned char kVtkHexahedron = 12;
 inline constexpr unsigned char kVtkQuad = 9;
@@ -66,11 +68,15 @@ class PvdSeries {
 
   const std::filesystem::path& path() const { return path_; }
   std::size_t size() const { return states_.size(); }
+  // Restart: saves or loads the list of states; loading keeps those whose file is on disk
+  // beside the .pvd and rewrites it.
+  void archive(StateArchive& a);
 
  private:
   struct State {
     double time;
     std::string file;
+    void archive(StateArchive& a);
   };
   std::filesystem::path path_;
   std::vector<State> states_;

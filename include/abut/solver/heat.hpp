@@ -21,6 +21,8 @@
 
 namespace abut {
 
+class StateArchive;
+
 // Whether part `part_id` carries a temperature: its material has thermal properties (a thpid).
 bool is_thermal_part(const Model& model, std::int64_t part_id);
 // Per node, 1 when it carries a temperature: a node of a hexahedron or shell of a thermal part.
@@ -73,6 +75,8 @@ class HeatSolver {
   const HeatBalance& balance() const;
   // Heat flowing into each node by conduction at the last advance [power] (for output).
   std::span<const double> conduction_rate() const;
+  // Saves or loads the temperatures and the heat balance for a restart (state_archive.hpp).
+  void archive(StateArchive& a);
 
  private:
   struct Impl;

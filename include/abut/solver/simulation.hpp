@@ -22,6 +22,8 @@
 
 namespace abut {
 
+class StateArchive;
+
 struct Energies {
   double kinetic = 0.0;
   double internal = 0.0;
@@ -116,6 +118,12 @@ class Simulation {
   // Heat flowing into each node by conduction at the last thermal step [power] (empty without
   // thermal properties).
   std::span<const double> heat_flow() const;
+
+  // Restart (issue 13): saves the complete state at t^n to `a`, or loads it into a simulation
+  // built from the same model (StateArchiveError when it does not fit). Continuing from a loaded
+  // state is bitwise identical to the run that saved it. The wall time spent in contact is not
+  // part of the state.
+  void archive(StateArchive& a);
 
   // The state saved before the step that failed (positions and velocities), for output.
   const std::vector<double>& last_good_x() const;

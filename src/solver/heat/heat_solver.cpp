@@ -1,4 +1,5 @@
 // The temperature field: see heat.hpp. The solver's state is in heat_impl.hpp.
+#include "abut/core/state_archive.hpp"
 #include "heat_impl.hpp"
 
 namespace abut {
@@ -18,5 +19,13 @@ void HeatSolver::advance(double t, double dt, std::span<const double> x, std::sp
 }
 const HeatBalance& HeatSolver::balance() const { return impl_->balance; }
 std::span<const double> HeatSolver::conduction_rate() const { return impl_->conduction; }
+
+// The element flows of the conduction are recomputed at every step; the rest is fixed.
+void HeatSolver::archive(StateArchive& a) {
+  a.mark("heat");
+  a.expect(static_cast<std::uint64_t>(impl_->t.size()), "the node count of the heat");
+  a.fixed(impl_->t, impl_->rate, impl_->conduction);
+  a.values(impl_->balance, impl_->stable);
+}
 
 }  // namespace abut
