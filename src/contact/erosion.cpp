@@ -49,7 +49,13 @@ void ContactInterface::erode(std::span<const std::uint8_t> eroded) {
       side.point_weight.push_back(0.0);
       init_point(side, side.point_facet.size() - 1, no_free_edges, 1.0);
       for (Pass& pass : passes_)
-        if (pass.own == static_cast<int>(side_index)) size_pass(pass, side.point_facet.size());
+        if (pass.own == static_cast<int>(side_index)) {
+          // A freed node may touch with the stiffest bound of its pass (its facets are gone).
+          const double bound =
+              *std::max_element(pass.approach_omega2.begin(), pass.approach_omega2.end());
+          size_pass(pass, side.point_facet.size());
+          pass.approach_omega2.back() = bound;
+        }
     }
   }
 }

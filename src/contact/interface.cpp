@@ -202,8 +202,22 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   stats_.active_points = 0;
   stats_.heat_flow = 0.0;
   stats_.stable_step = kInfinity;
-  for (auto i : surface_nodes_) pressure_[i] = 0.0;
-  if (in.time < settings_.begin_time || in.time > settings_.end_time) {
+  // Far from every facet a point cannot touch before the next broad-phase build sees it, as long
+  // as no node crosses a quarter of the search margin in one step; at rest (no speed to judge
+  // by) the bound before touching holds as before contact.
+  double speed2 = 0.0;
+  for (auto i : surface_nodes_) {
+    pressure_[i] = 0.0;
+    if (!in.vx.empty())
+      speed2 = std::max(speed2, in.vx[i] * in.vx[i] + in.vy[i] * in.vy[i] + in.vz[i] * in.vz[i]);
+  }
+  // Edge-to-edge springs and contacts outside their time window (points may lie anywhere when it
+  // opens) keep the bound everywhere.
+  const bool outside_window = in.time < settings_.begin_time || in.time > settings_.end_time;
+  stats_.approach_step = speed2 > 0.0 && !edges_ && !outside_window
+                             ? std::max(initial_stable_step_, 0.25 * margin_ / std::sqrt(speed2))
+                             : initial_stable_step_;
+  if (outside_window) {
     for (Pass& pass : passes_) {  // outside the window: no forces and no friction memory
       std::fill(pass.htx.begin(), pass.htx.end(), 0.0);
       std::fill(pass.hty.begin(), pass.hty.end(), 0.0);

@@ -390,6 +390,7 @@ void ContactInterface::size_pass(Pass& pass, std::size_t n) {
                   &pass.heat_xi,
                   &pass.heat_eta,
                   &pass.heat_conductance,
+                  &pass.approach_omega2,
                   &pass.qx,
                   &pass.qy,
                   &pass.qz})
@@ -477,6 +478,18 @@ void ContactInterface::initial_state(const ContactInput& in) {
       }
     }
     for (double w : per_facet) omega2_max = std::max(omega2_max, w);
+    // Each point may touch with its facet's bound (N2S: the largest of its node's facets).
+    for (std::size_t p = 0; p < n; ++p) {
+      const std::int32_t node = own.point_node.empty() ? -1 : own.point_node[p];
+      if (node < 0) {
+        pass.approach_omega2[p] = per_facet[own.point_facet[p]];
+        continue;
+      }
+      double w = 0.0;
+      for (std::int32_t k = own.node_facet_start[node]; k < own.node_facet_start[node + 1]; ++k)
+        w = std::max(w, per_facet[own.node_facets[k]]);
+      pass.approach_omega2[p] = w;
+    }
   }
   if (omega2_max > 0.0) initial_stable_step_ = 2.0 / std::sqrt(omega2_max);
 }

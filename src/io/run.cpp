@@ -280,6 +280,7 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
   json.member("contact_share_of_wall_time",
               report.wall_seconds > 0 ? sim.contact_seconds() / report.wall_seconds : 0.0);
   json.member("initial_time_step", sim.initial_time_step());
+  json.member("time_step_lost_to_contact", sim.contact_step_loss());
   json.member("initial_time_step_limited_by", initial_limit);
   json.member("final_time_step_limited_by", sim.time_step_limit());
   const Energies e = sim.energies();
@@ -488,8 +489,9 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
     log << fmt::format("abut: energy balance error {:.3f}%\n", 100.0 * report.energy_balance_error);
     if (thermal_output::active(sim)) log << thermal_output::end_line(sim, report.cycles);
     if (sim.has_contact())
-      log << fmt::format("abut: contact took {:.0f}% of the wall time\n",
-                         100.0 * sim.contact_seconds() / report.wall_seconds);
+      log << fmt::format(
+          "abut: contact took {:.0f}% of the wall time and shortened the time step by {:.1f}%\n",
+          100.0 * sim.contact_seconds() / report.wall_seconds, 100.0 * sim.contact_step_loss());
   } else {
     log << "abut: the run went UNSTABLE and stopped: " << report.message << "\n"
         << fmt::format("abut: the last good state (t = {:.6g}) is in the ParaView series\n",

@@ -542,8 +542,8 @@ void ContactSet::erode(std::span<const std::uint8_t> eroded) {
 double ContactSet::stable_step(std::int64_t* limiting_contact) const {
   double step = std::numeric_limits<double>::infinity();
   for (std::size_t c = 0; c < interfaces_.size(); ++c) {
-    const double s =
-        std::min(interfaces_[c].initial_stable_step(), interfaces_[c].stats().stable_step);
+    const ContactStats& stats = interfaces_[c].stats();
+    const double s = std::min(stats.stable_step, stats.approach_step);
     if (s < step) {
       step = s;
       if (limiting_contact) *limiting_contact = reports_[c].id;

@@ -106,9 +106,14 @@ void Simulation::Impl::compute_forces(double dt) {
   std::int64_t contact_id = -1;
   const double contact_step = contacts->stable_step(&contact_id);
   limiting_contact = -1;
+  const double element_step = stable;
   if (contact_step < stable) {
     stable = contact_step;
     limiting_contact = contact_id;
+  }
+  if (std::isfinite(element_step)) {
+    step_sum += stable;
+    element_step_sum += element_step;
   }
   energy.contact = contacts->elastic_and_damping_energy();
   energy.friction = contacts->friction_energy();
@@ -152,8 +157,8 @@ void Simulation::Impl::kick() {
   const double scaled = model.time.step_scale * stable;
   // NaN would compare false below and end the run as if it had reached the end time.
   if (n > 0 && !(scaled > 0.0))
-    throw InstabilityError(fmt::format("the stable time step became {:.4g} (limited by {})",
-                                       scaled, limit_description()));
+    throw InstabilityError(fmt::format("the stable time step became {:.4g} (limited by {})", scaled,
+                                       limit_description()));
   dt_next = std::min({scaled, model.time.max_step, model.time.end_time - t});
   if (scaled < model.time.min_step)
     throw InstabilityError(fmt::format(
@@ -515,6 +520,10 @@ double Simulation::end_time() const { return impl_->model.time.end_time; }
 std::int64_t Simulation::cycle() const { return impl_->n; }
 double Simulation::time_step() const { return impl_->dt_next; }
 double Simulation::initial_time_step() const { return impl_->dt_initial; }
+double Simulation::contact_step_loss() const {
+  const Impl& s = *impl_;
+  return s.element_step_sum > 0.0 ? 1.0 - s.step_sum / s.element_step_sum : 0.0;
+}
 std::string Simulation::Impl::limit_description() const {
   if (limiting_contact >= 0) return "contact " + std::to_string(limiting_contact) + " springs";
   if (limiting_shell_block >= 0)

@@ -67,6 +67,8 @@ struct Simulation::Impl {
   std::vector<std::uint8_t> element_eroded;  // per element, hexes then shells
   std::int64_t limiting_contact = -1;
   double contact_seconds = 0.0;  // wall time spent in contact (for the summary)
+  // Sums over the cycles of the stable step and of the step the elements alone would allow.
+  double step_sum = 0.0, element_step_sum = 0.0;
 
   std::vector<RigidBody> bodies;
   std::vector<PartInfo> parts;

@@ -390,6 +390,38 @@ TEST(ContactInterface, UndampedBounceReturnsTheImpactSpeed) {
   EXPECT_LT(contact.initial_stable_step(), dt_seen);  // the bound before contact is conservative
 }
 
+// The bound before touching limits the step only where a spring may act in the next step (issue
+// 12): while the surfaces are further apart than the search margin the step only keeps the nodes
+// from crossing a quarter of the margin (at rest, with no speed to judge by, the bound holds);
+// near a facet the bound holds; the springs that touch give stable_step as before.
+TEST(ContactInterface, TheApproachBoundActsOnlyNearAFacet) {
+  Pair pair(10.0, 1e6, 1e6, false, 1.0, 1.0);
+  ContactInterface contact = pair.make(undamped(2));
+  const double margin = contact.search_margin();
+  ASSERT_LT(margin, 5.0);
+  ContactForces out = pair.w.forces();
+  contact.apply(pair.w.input(0.0, 1e-6), out);
+  EXPECT_EQ(contact.stats().approach_step, contact.initial_stable_step());  // at rest
+  const double v = 0.01 * margin / contact.initial_stable_step();  // slow: a long step is safe
+  for (std::int32_t i = pair.upper_first; i < pair.end; ++i) pair.w.vz[i] = -v;
+  contact.apply(pair.w.input(0.0, 1e-6), out);
+  EXPECT_DOUBLE_EQ(contact.stats().approach_step, 0.25 * margin / v);
+  EXPECT_EQ(contact.stats().stable_step, std::numeric_limits<double>::infinity());
+  pair.move_upper(0, 0, -10.0 + 0.25 * contact.search_margin());  // near, open
+  out = pair.w.forces();
+  contact.apply(pair.w.input(0.0, 1e-6), out);
+  EXPECT_EQ(contact.stats().active_points, 0u);
+  EXPECT_DOUBLE_EQ(contact.stats().approach_step, contact.initial_stable_step());
+  EXPECT_EQ(contact.stats().stable_step, std::numeric_limits<double>::infinity());
+  pair.move_upper(0, 0, -0.25 * contact.search_margin() - 0.001);  // touching
+  pair.w.clear_forces();
+  out = pair.w.forces();
+  contact.apply(pair.w.input(0.0, 1e-6), out);
+  EXPECT_GT(contact.stats().active_points, 0u);
+  EXPECT_DOUBLE_EQ(contact.stats().approach_step, contact.initial_stable_step());
+  EXPECT_GT(contact.stats().stable_step, contact.initial_stable_step());
+}
+
 // OpenMP over points with per-point results and a serial scatter: bitwise the same forces and
 // energies with 1 and 2 threads.
 TEST(ContactInterface, BitwiseIdenticalForOneAndTwoThreads) {

@@ -60,6 +60,13 @@ struct ContactStats {
   double gap_min = 0.0, gap_max = 0.0;
   std::size_t active_points = 0;
   double stable_step = std::numeric_limits<double>::infinity();  // 2/omega of the stiffest spring
+  // The bound before touching (initial_stable_step) over the points that touch, are tied or have
+  // a facet within the broad phase's reach: those whose springs may act in the next step. The
+  // others are at least half the search margin from every facet: they cannot touch before the
+  // next broad-phase build sees them while no surface node moves more than a quarter of the
+  // margin in a step (margin / (4 v_max); at rest the bound holds everywhere). A caller's step is
+  // min(stable_step, approach_step).
+  double approach_step = std::numeric_limits<double>::infinity();
 };
 
 // The spring a part pair gets (after the stiffness rule and pair scaling), for reports.
@@ -103,7 +110,8 @@ class ContactInterface {
   void erode(std::span<const std::uint8_t> eroded);
 
   const ContactStats& stats() const { return stats_; }
-  // Stable step bound before any contact: 2 / sqrt(max over points of 2 k / m_min).
+  // Stable step bound of every spring that may act, 2 / sqrt(max over points of 2 k / m_min), as
+  // if every point touched (stats().approach_step takes it over the points near a facet only).
   double initial_stable_step() const { return initial_stable_step_; }
   // Accumulated wear depth and current contact pressure per node (0 away from the surfaces).
   std::span<const double> wear() const { return wear_; }
@@ -184,6 +192,9 @@ class ContactInterface {
     std::vector<double> qx, qy, qz;  // point positions for the broad-phase query
     // History per point.
     std::vector<std::uint8_t> state, sliding, adhered;
+    // Per point: the bound on the square of its spring's frequency while it may touch (its
+    // facet's springs on the facet's lightest node, 2 k / m_min; initial_state).
+    std::vector<double> approach_omega2;
     std::vector<double> offset;           // initial penetration subtracted until separation
     std::vector<double> shift;            // permanent gap shift (clearance)
     std::vector<double> htx, hty, htz;    // tangential spring force (friction history)
@@ -201,11 +212,11 @@ class ContactInterface {
     std::vector<std::int32_t> heat_facet;
     std::vector<double> heat_xi, heat_eta, heat_conductance;
     void archive(StateArchive& a) {
-      a.values(own, target, weight, grid, candidates, qx, qy, qz, state, sliding, adhered, offset,
-               shift, htx, hty, htz, tie_facet, tie_xi, tie_eta, hit, hit_facet, hit_xi, hit_eta,
-               fx, fy, fz, area, pressure, slip_speed, normal_force, tangential_force, energy,
-               damping_work, slip_work, penetration, omega2, pair_gap, heat_facet, heat_xi,
-               heat_eta, heat_conductance);
+      a.values(own, target, weight, grid, candidates, qx, qy, qz, state, sliding, adhered,
+               approach_omega2, offset, shift, htx, hty, htz, tie_facet, tie_xi, tie_eta, hit,
+               hit_facet, hit_xi, hit_eta, fx, fy, fz, area, pressure, slip_speed, normal_force,
+               tangential_force, energy, damping_work, slip_work, penetration, omega2, pair_gap,
+               heat_facet, heat_xi, heat_eta, heat_conductance);
     }
   };
 

@@ -65,8 +65,11 @@ class Simulation {
   double time() const;
   double end_time() const;
   std::int64_t cycle() const;
-  double time_step() const;             // dt^{n+1/2} that the next advance() uses
-  double initial_time_step() const;     // scaled stable step at t = 0
+  double time_step() const;          // dt^{n+1/2} that the next advance() uses
+  double initial_time_step() const;  // scaled stable step at t = 0
+  // How much the contact springs shortened the stable step over the cycles so far:
+  // 1 - sum(dt) / sum(dt of the elements alone); 0 when contact never limited it.
+  double contact_step_loss() const;
   std::string time_step_limit() const;  // what limits the step now (e.g. "part 2 element 17")
 
   const Model& model() const;
