@@ -334,6 +334,25 @@ TEST(DeckReliability, RefinementOfSlenderAndFarMeshesKeepsItsNodes) {
   EXPECT_EQ(refined_nodes(0.02, 1e5), reference);
 }
 
+TEST(DeckReliability, MergeDefaultToleranceFollowsTheLocalSpacing) {
+  // Two 10 000 km long, 1 cm square boxes side by side along their length (99 nodes each, 5 mm
+  // apart across): the default tolerance of *MERGE_DUPLICATED_NODES follows the 5 mm spacing at
+  // the nodes, so the 33 nodes of the common face merge and no other. It used to be 1e-6 of the
+  // model's diagonal (10 m, more than the elements across): "would join two corners", at line 15.
+  const std::string boxes =
+      "*TIME\n1\n*COMPONENT_BOX\n1, 1, 10, 2, 2\n0, 0, 0, 1e7, 0.01, 0.01\n"
+      "*COMPONENT_BOX\n2, 2, 10, 2, 2\n0, 0.01, 0, 1e7, 0.02, 0.01\n"
+      "*MAT_ELASTIC\n1, 7800, 2e11, 0.3\n*PART\n1, 1\n2, 1\n*MERGE_DUPLICATED_NODES\n";
+  const DeckResult r = read(boxes + "P, 2, P, 1\n");
+  EXPECT_EQ(r.model.mesh.nodes.size(), 2u * 99u - 33u);
+  EXPECT_THAT(r.notes, ::testing::Contains(HasSubstr("merged 33 nodes")));
+  // An explicit tolerance is taken as given: within 1 cm, the nodes of box 2 one element (5 mm)
+  // away from the common face would join the face nodes they share hexahedra with.
+  const InputError e = error_of(boxes + "P, 2, P, 1, 0.01\n");
+  EXPECT_EQ(e.where().line, 15u);
+  EXPECT_THAT(e.message(), HasSubstr("would join two corners"));
+}
+
 // Sets an environment variable for the life of the object, then restores it.
 class ScopedEnvironment {
  public:
