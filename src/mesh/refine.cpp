@@ -328,8 +328,7 @@ std::vector<std::string> refine_and_smooth(Mesh& mesh, const std::vector<OrderCh
       }
     }
   }
-  check_conformity(mesh, order, order_where);
-  if (check) {
+  if (check) {  // first: the conformity check alone takes seconds on a mesh too large
     // A structured block of order-p hexes gains (p-1)^3 interior, 3 (p-1)^2 face and 3 (p-1) edge
     // nodes per hex: p^3 - 1, like its hexes.
     MeshSize added;
@@ -342,6 +341,7 @@ std::vector<std::string> refine_and_smooth(Mesh& mesh, const std::vector<OrderCh
     added.nodes = added.elements;
     if (added.elements > 0.0) check(added, *order_where[highest]);
   }
+  check_conformity(mesh, order, order_where);
 
   // 2. Curved edges of the *SMOOTH_MESH surfaces (exterior faces of hexes without exact shape).
   const auto faces = face_uses(mesh);
