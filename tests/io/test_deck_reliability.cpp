@@ -402,5 +402,18 @@ TEST(DeckReliability, MemoryLimitOfTheEnvironmentCapsTheBudget) {
   EXPECT_THAT(e.message(), HasSubstr("available"));
 }
 
+TEST(DeckReliability, InpWithoutElementsIsAnErrorAtItsLastCard) {
+  // deck_libfuzzer_inp_reader: a step without a mesh was "the input has no *ELEMENT" with no line.
+  try {
+    read_inp_string_with_notes(
+        "*BOUNDARY\n1, ENCASTRE\n2, XSYMM\n3, YASYMM\n*STEP\n*STATIC\n*END STEP\n", "t.inp");
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().file, "t.inp");
+    EXPECT_EQ(e.where().line, 7u);  // *END STEP, the last card
+    EXPECT_THAT(e.message(), HasSubstr("the input has no *ELEMENT"));
+  }
+}
+
 }  // namespace
 }  // namespace abut
