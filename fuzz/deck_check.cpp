@@ -10,12 +10,13 @@
 
 namespace abut::fuzz {
 
-Outcome check_deck(std::string_view text, DeckFormat format) {
+Outcome check_deck(std::string_view text, DeckFormat format, Stage stage) {
   try {
     const std::string deck(text);
     const DeckResult result = format == DeckFormat::inp
                                   ? read_inp_string_with_notes(deck, "fuzz.inp")
                                   : read_deck_string_with_notes(deck, "fuzz.k");
+    if (stage == Stage::read) return {};
     if (!result.model.static_steps.empty()) {
       const StaticSolver solver(result.model);
     } else {

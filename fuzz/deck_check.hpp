@@ -21,8 +21,13 @@ struct Outcome {
   std::string message;  // what() of the exception, empty when accepted
 };
 
+// How far check_deck goes: the reader alone (read, parse, finalize into a Model: fast enough for
+// a million coverage-guided inputs), or what `abut check` does (the reader, then the set-up of the
+// explicit or static solver the deck asks for).
+enum class Stage { read, set_up };
+
 // Never throws. Deck text is read as if it were the file "fuzz.k" (or "fuzz.inp").
-Outcome check_deck(std::string_view text, DeckFormat format);
+Outcome check_deck(std::string_view text, DeckFormat format, Stage stage = Stage::set_up);
 
 const char* verdict_name(Verdict v);
 

@@ -12,6 +12,7 @@
 #include "abut/solver/contact_surfaces.hpp"
 #include "abut/solver/pressure_loads.hpp"
 #include "deck_reader.hpp"
+#include "memory_budget.hpp"
 
 namespace abut::deck {
 
@@ -248,7 +249,14 @@ DeckResult DeckReader::finish() {
     smoothings.push_back(std::move(c));
   }
   if (!order_changes.empty() || !smoothings.empty()) {
-    for (std::string& note : refine_and_smooth(mesh, order_changes, smoothings))
+    // Order 3 makes 27 hexes of one: counted against the memory like a generated component.
+    const auto fits = [&](const MeshSize& added, const SourceLocation& where) {
+      const MeshSize total{
+          static_cast<double>(mesh.hex_count() + mesh.shell_count()) + added.elements,
+          static_cast<double>(mesh.nodes.size()) + added.nodes};
+      require_memory(total, available_memory(), where);
+    };
+    for (std::string& note : refine_and_smooth(mesh, order_changes, smoothings, fits))
       notes.push_back(std::move(note));
   }
 

@@ -5,6 +5,8 @@
 // the reader's id look-up have to follow the new numbering.
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <sstream>
 
 #include "abut/mesh/node_removal.hpp"
@@ -27,8 +29,8 @@ std::string number(double v) {
   return s.str();
 }
 
-// The default tolerance: far below any element size, far above round-off in the coordinates.
-double default_tolerance(const Nodes& nodes) {
+// Nodes in no element: 10^-6 of the model's diagonal (its extent is all there is to go by).
+double free_node_tolerance(const Nodes& nodes) {
   if (nodes.size() == 0) return 1.0;
   Vec3 lo = nodes.position(0), hi = lo;
   for (std::size_t i = 1; i < nodes.size(); ++i) {
@@ -42,14 +44,62 @@ double default_tolerance(const Nodes& nodes) {
   return extent > 0.0 ? 1e-6 * extent : 1.0;
 }
 
+// Fraction of the shortest edge at a node within which another node is the same node: far below
+// any element, far above the rounding of coordinates written with 8 or more digits.
+constexpr double kEdgeFraction = 1e-4;
+// Relative rounding of a coordinate (a few hundred ulps): the tolerance is never below it, so
+// that fine meshes far from the origin still join.
+constexpr double kRounding = 1e-13;
+
+// The default tolerance of every node: a fraction of the shortest edge of the hexahedra and shells
+// that meet at it (the local node spacing, not the model's size, so that the nodes of a slender
+// model stay apart), never below the rounding of its coordinates. A pair of nodes merges within
+// the smaller of their two tolerances (coincident_replacements).
+std::vector<double> default_tolerances(const Mesh& mesh) {
+  const Nodes& nodes = mesh.nodes;
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  std::vector<double> shortest(nodes.size(), kNone);
+  const auto edge = [&](std::int32_t a, std::int32_t b) {
+    const auto i = static_cast<std::size_t>(a), j = static_cast<std::size_t>(b);
+    const double length = norm(nodes.position(i) - nodes.position(j));
+    // A zero edge (a degenerate element) or one that overflows says nothing about the spacing.
+    if (!(length > 0.0) || !std::isfinite(length)) return;
+    shortest[i] = std::min(shortest[i], length);
+    shortest[j] = std::min(shortest[j], length);
+  };
+  // The 12 edges of a hexahedron (VTK_HEXAHEDRON order).
+  constexpr int kEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                 {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+  for (const Hex8& h : mesh.hexes) {
+    for (const auto& e : kEdges) edge(h[e[0]], h[e[1]]);
+  }
+  for (const Quad4& q : mesh.shells) {
+    const int corners = is_triangle(q) ? 3 : 4;
+    for (int k = 0; k < corners; ++k) edge(q[k], q[(k + 1) % corners]);
+  }
+  std::vector<double> tolerance(nodes.size());
+  std::optional<double> free_node;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    if (shortest[i] == kNone) {
+      if (!free_node) free_node = free_node_tolerance(nodes);
+      tolerance[i] = *free_node;
+      continue;
+    }
+    const Vec3 p = nodes.position(i);
+    const double reach = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+    tolerance[i] = std::max(kEdgeFraction * shortest[i], kRounding * reach);
+  }
+  return tolerance;
+}
+
 // An element that would lose a corner to the merge has no volume (or area) left: the tolerance
 // is larger than the element, which is an error of the deck rather than something to run.
 void require_distinct_corners(const Mesh& mesh, const std::vector<std::int32_t>& new_index,
-                              const PendingMerge& m, double tol) {
+                              const PendingMerge& m, const std::string& tol) {
   const auto fail = [&](const std::string& element) {
     throw InputError(with_field(m.where, "tol"),
-                     "merging nodes within " + number(tol) + " would join two corners of " +
-                         element + ": give a tolerance smaller than the elements");
+                     "merging nodes within " + tol + " would join two corners of " + element +
+                         ": give a tolerance smaller than the elements");
   };
   const auto index = [&](std::int32_t n) { return new_index[static_cast<std::size_t>(n)]; };
   for (std::size_t h = 0; h < mesh.hex_count(); ++h) {
@@ -96,15 +146,20 @@ void DeckReader::merge_duplicated_nodes() {
     if (secondary.empty())
       notes.push_back(command + ": " + describe(m.secondary) + " has no nodes");
     if (main.empty()) notes.push_back(command + ": " + describe(m.main) + " has no nodes");
-    const double tol = m.tolerance.value_or(default_tolerance(mesh.nodes));
+    // The tolerance as the notes and errors give it.
+    const std::string tol = m.tolerance ? number(*m.tolerance)
+                                        : "the default tolerance (" + number(kEdgeFraction) +
+                                              " of the shortest edge at each node)";
     const std::vector<std::int32_t> replacement =
-        coincident_replacements(mesh.nodes, secondary, main, tol);
+        m.tolerance
+            ? coincident_replacements(mesh.nodes, secondary, main, *m.tolerance)
+            : coincident_replacements(mesh.nodes, secondary, main, default_tolerances(mesh));
     const auto merged = static_cast<std::size_t>(std::count_if(
         replacement.begin(), replacement.end(), [](std::int32_t r) { return r >= 0; }));
     if (merged == 0) {
       if (!secondary.empty() && !main.empty()) {
         notes.push_back(command + " merged no nodes: no node of " + describe(m.secondary) +
-                        " lies within " + number(tol) + " of a node of " + describe(m.main));
+                        " lies within " + tol + " of a node of " + describe(m.main));
       }
       continue;
     }

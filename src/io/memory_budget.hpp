@@ -11,7 +11,9 @@
 namespace abut::deck {
 
 // Bytes the machine can still give: MemAvailable of /proc/meminfo on Linux, else the free
-// physical pages; empty when unknown (then nothing is refused).
+// physical pages; at most ABUT_MEMORY_MB megabytes when that environment variable is a positive
+// number (a batch slot, a shared machine, the fuzzer's memory limit); empty when unknown (then
+// nothing is refused).
 std::optional<double> available_memory();
 
 // Estimated peak bytes of `abut run` for a mesh of this size (solver state included).

@@ -58,7 +58,8 @@ std::int32_t NodeMerger::find(const Vec3& p, double tolerance) const {
   return -1;
 }
 
-std::int32_t NodeMerger::nearest(const Vec3& p) const {
+std::int32_t NodeMerger::nearest(
+    const Vec3& p, const std::function<bool(std::int32_t node, double distance)>& accept) const {
   const Cell c = cell_of(p);
   std::int32_t best = -1;
   double best_distance = 0.0;
@@ -69,7 +70,7 @@ std::int32_t NodeMerger::nearest(const Vec3& p) const {
         if (it == cells_.end()) continue;
         for (const Entry& e : it->second) {
           const double d = norm(e.p - p);
-          if (d > tolerance_) continue;
+          if (d > tolerance_ || !accept(e.node, d)) continue;
           // Hash collisions may list a cell twice; the order of the scan must not matter.
           if (best < 0 || d < best_distance || (d == best_distance && e.node < best)) {
             best = e.node;

@@ -2,6 +2,7 @@
 // Spatial hash that finds an existing node within a distance tolerance of a point, so that
 // structured blocks and refined hexes share the nodes on their common boundaries.
 #include <cstdint>
+#include <functional>
 #include <unordered_map>
 #include <vector>
 
@@ -22,7 +23,13 @@ class NodeMerger {
   std::int32_t find(const Vec3& p) const { return find(p, tolerance_); }
   std::int32_t find(const Vec3& p, double tolerance) const;
   // The nearest node within tolerance of p (ties: the lowest index), or -1.
-  std::int32_t nearest(const Vec3& p) const;
+  std::int32_t nearest(const Vec3& p) const {
+    return nearest(p, [](std::int32_t, double) { return true; });
+  }
+  // The same among the nodes n at distance d for which accept(n, d) holds (a tolerance of each
+  // pair of nodes, at most the merger's).
+  std::int32_t nearest(const Vec3& p,
+                       const std::function<bool(std::int32_t node, double distance)>& accept) const;
   // The node within tolerance of p; a new node (user id next_id++) when there is none.
   std::int32_t find_or_add(Nodes& nodes, const Vec3& p, std::int64_t& next_id) {
     return find_or_add(nodes, p, next_id, tolerance_);

@@ -28,6 +28,39 @@ std::vector<std::int32_t> coincident_replacements(const Nodes& nodes,
   return replacement;
 }
 
+std::vector<std::int32_t> coincident_replacements(const Nodes& nodes,
+                                                  const std::vector<std::int32_t>& secondary,
+                                                  const std::vector<std::int32_t>& main,
+                                                  const std::vector<double>& tolerance) {
+  if (tolerance.size() != nodes.size())
+    throw std::invalid_argument("coincident_replacements: one tolerance per node expected");
+  double largest = 0.0;
+  for (const auto& entity : {secondary, main}) {
+    for (const std::int32_t n : entity) {
+      const double t = tolerance[static_cast<std::size_t>(n)];
+      if (!(t > 0.0)) throw std::invalid_argument("coincident_replacements: tolerance <= 0");
+      largest = std::max(largest, t);
+    }
+  }
+  std::vector<std::int32_t> replacement(nodes.size(), -1);
+  if (secondary.empty() || main.empty()) return replacement;
+  std::vector<std::uint8_t> in_main(nodes.size(), 0);
+  detail::NodeMerger candidates(largest);
+  for (const std::int32_t m : main) {
+    in_main[static_cast<std::size_t>(m)] = 1;
+    candidates.insert(m, nodes.position(static_cast<std::size_t>(m)));
+  }
+  for (const std::int32_t s : secondary) {
+    const auto i = static_cast<std::size_t>(s);
+    if (in_main[i]) continue;
+    const double own = tolerance[i];
+    replacement[i] = candidates.nearest(nodes.position(i), [&](std::int32_t m, double d) {
+      return d <= std::min(own, tolerance[static_cast<std::size_t>(m)]);
+    });
+  }
+  return replacement;
+}
+
 std::vector<std::int32_t> remove_nodes(Mesh& mesh, const std::vector<std::int32_t>& replacement) {
   Nodes& nodes = mesh.nodes;
   if (replacement.size() != nodes.size())

@@ -3,8 +3,10 @@
 #include <gmock/gmock.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -330,6 +332,87 @@ TEST(DeckReliability, RefinementOfSlenderAndFarMeshesKeepsItsNodes) {
   EXPECT_EQ(reference, 5u * 3u * 3u);
   EXPECT_EQ(refined_nodes(1e7, 0.0), reference);
   EXPECT_EQ(refined_nodes(0.02, 1e5), reference);
+}
+
+TEST(DeckReliability, MergeDefaultToleranceFollowsTheLocalSpacing) {
+  // Two 10 000 km long, 1 cm square boxes side by side along their length (99 nodes each, 5 mm
+  // apart across): the default tolerance of *MERGE_DUPLICATED_NODES follows the 5 mm spacing at
+  // the nodes, so the 33 nodes of the common face merge and no other. It used to be 1e-6 of the
+  // model's diagonal (10 m, more than the elements across): "would join two corners", at line 15.
+  const std::string boxes =
+      "*TIME\n1\n*COMPONENT_BOX\n1, 1, 10, 2, 2\n0, 0, 0, 1e7, 0.01, 0.01\n"
+      "*COMPONENT_BOX\n2, 2, 10, 2, 2\n0, 0.01, 0, 1e7, 0.02, 0.01\n"
+      "*MAT_ELASTIC\n1, 7800, 2e11, 0.3\n*PART\n1, 1\n2, 1\n*MERGE_DUPLICATED_NODES\n";
+  const DeckResult r = read(boxes + "P, 2, P, 1\n");
+  EXPECT_EQ(r.model.mesh.nodes.size(), 2u * 99u - 33u);
+  EXPECT_THAT(r.notes, ::testing::Contains(HasSubstr("merged 33 nodes")));
+  // An explicit tolerance is taken as given: within 1 cm, the nodes of box 2 one element (5 mm)
+  // away from the common face would join the face nodes they share hexahedra with.
+  const InputError e = error_of(boxes + "P, 2, P, 1, 0.01\n");
+  EXPECT_EQ(e.where().line, 15u);
+  EXPECT_THAT(e.message(), HasSubstr("would join two corners"));
+}
+
+// Sets an environment variable for the life of the object, then restores it.
+class ScopedEnvironment {
+ public:
+  ScopedEnvironment(const char* name, const char* value) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old;
+    setenv(name, value, 1);
+  }
+  ~ScopedEnvironment() {
+    if (old_) {
+      setenv(name_.c_str(), old_->c_str(), 1);
+    } else {
+      unsetenv(name_.c_str());
+    }
+  }
+  ScopedEnvironment(const ScopedEnvironment&) = delete;
+  ScopedEnvironment& operator=(const ScopedEnvironment&) = delete;
+
+ private:
+  std::string name_;
+  std::optional<std::string> old_;
+};
+
+TEST(DeckReliability, MemoryLimitOfTheEnvironmentCapsTheBudget) {
+  const ScopedEnvironment limit("ABUT_MEMORY_MB", "100");
+  ASSERT_TRUE(deck::available_memory().has_value());
+  EXPECT_EQ(*deck::available_memory(), 100.0 * 1024 * 1024);
+  {
+    const ScopedEnvironment nonsense("ABUT_MEMORY_MB", "lots");  // ignored
+    EXPECT_GT(*deck::available_memory(), 0.0);
+  }
+  // 64 000 hexes fit in 100 MB; 27 000 hexes refined to order 3 (729 000) do not: refused at the
+  // *CHANGE_P-ORDER line before the refinement allocates (deck_fuzz / libFuzzer: -rss_limit_mb).
+  const std::string box =
+      "*TIME\n1\n*COMPONENT_BOX\n1, 1, %n, %n, %n\n0, 0, 0, 1, 1, 1\n"
+      "*MAT_ELASTIC\n1, 7800, 2e11, 0.3\n*PART\n1, 1\n";
+  const auto sized = [&](const char* n) {
+    std::string deck = box;
+    for (std::size_t at = deck.find("%n"); at != std::string::npos; at = deck.find("%n"))
+      deck.replace(at, 2, n);
+    return deck;
+  };
+  EXPECT_EQ(read(sized("40")).model.mesh.hex_count(), 64000u);
+  const InputError e = error_of(sized("30") + "*CHANGE_P-ORDER\nP, 1, 3\n");
+  EXPECT_EQ(e.where().line, 11u);
+  EXPECT_EQ(e.where().keyword, "*CHANGE_P-ORDER");
+  EXPECT_THAT(e.message(), HasSubstr("729000 elements"));
+  EXPECT_THAT(e.message(), HasSubstr("available"));
+}
+
+TEST(DeckReliability, InpWithoutElementsIsAnErrorAtItsLastCard) {
+  // deck_libfuzzer_inp_reader: a step without a mesh was "the input has no *ELEMENT" with no line.
+  try {
+    read_inp_string_with_notes(
+        "*BOUNDARY\n1, ENCASTRE\n2, XSYMM\n3, YASYMM\n*STEP\n*STATIC\n*END STEP\n", "t.inp");
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().file, "t.inp");
+    EXPECT_EQ(e.where().line, 7u);  // *END STEP, the last card
+    EXPECT_THAT(e.message(), HasSubstr("the input has no *ELEMENT"));
+  }
 }
 
 }  // namespace

@@ -39,6 +39,22 @@ TEST(CoincidentReplacements, NothingBeyondTheTolerance) {
   EXPECT_THROW(coincident_replacements(nodes, {0}, {1}, 0.0), std::invalid_argument);
 }
 
+TEST(CoincidentReplacements, EachPairWithinTheSmallerOfItsTwoTolerances) {
+  // Node 0 (secondary, tolerance 0.1) and main nodes 1 (0.05 away, tolerance 0.01) and 2 (0.08
+  // away, tolerance 1): 1 is nearer but beyond its own tolerance, so 2 takes the place.
+  const Nodes nodes = line_of_nodes({1.0, 1.05, 0.92, 1.5});
+  const std::vector<double> tol{0.1, 0.01, 1.0, 1.0};
+  EXPECT_EQ(coincident_replacements(nodes, {0}, {1, 2}, tol),
+            (std::vector<std::int32_t>{2, -1, -1, -1}));
+  // Node 3 has a large tolerance, but node 0's own is the smaller of the pair.
+  EXPECT_EQ(coincident_replacements(nodes, {3}, {0}, tol),
+            (std::vector<std::int32_t>{-1, -1, -1, -1}));
+  EXPECT_THROW(coincident_replacements(nodes, {0}, {1}, std::vector<double>{0.1, 0.0, 1.0, 1.0}),
+               std::invalid_argument);
+  EXPECT_THROW(coincident_replacements(nodes, {0}, {1}, std::vector<double>{0.1}),
+               std::invalid_argument);
+}
+
 TEST(RemoveNodes, TwoBoxesShareTheirCommonFace) {
   Mesh mesh;
   BoxComponent a;

@@ -17,6 +17,13 @@ std::vector<std::int32_t> coincident_replacements(const Nodes& nodes,
                                                   const std::vector<std::int32_t>& secondary,
                                                   const std::vector<std::int32_t>& main,
                                                   double tolerance);
+// The same with a tolerance of each node (one entry per node of `nodes`, > 0 for the nodes of
+// `secondary` and `main`): a pair of nodes is within tolerance when their distance is at most the
+// smaller of their two tolerances.
+std::vector<std::int32_t> coincident_replacements(const Nodes& nodes,
+                                                  const std::vector<std::int32_t>& secondary,
+                                                  const std::vector<std::int32_t>& main,
+                                                  const std::vector<double>& tolerance);
 
 // Removes every node i with replacement[i] >= 0 and puts replacement[i] in its place in every hex
 // and shell. The replacing node takes over the constraints of the node it replaces (the DofMask

@@ -4,11 +4,13 @@
 // New nodes on the exterior follow the exact shape of generated components and, where
 // *SMOOTH_MESH applies, a smooth surface through the original exterior nodes.
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "abut/core/error.hpp"
+#include "abut/mesh/generators.hpp"
 #include "abut/mesh/geometry.hpp"
 #include "abut/mesh/mesh.hpp"
 
@@ -29,10 +31,17 @@ struct SurfaceSmoothing {     // *SMOOTH_MESH, or the alpha_max of *PART, resolv
   SourceLocation where;  // the deck line, for errors (empty: the message says the keyword)
 };
 
+// Called once the order of every hex is known and before anything is built: `added` is what the
+// split will add (p^3 - 1 hexes and about as many nodes per hex of order p), `where` the
+// *CHANGE_P-ORDER line that asked for the highest order. It may throw to refuse a refinement that
+// would not fit in memory (the deck reader's memory budget).
+using RefinementCheck = std::function<void(const MeshSize& added, const SourceLocation& where)>;
+
 // Applies all smoothing and order changes of the deck to the mesh (node and hex ids of new
 // entities continue after the largest existing ones). Returns one plain-English note per
 // action for the user (e.g. "part 1: 189 hexes split 3x3x3 into 5103 (order 3 ...)").
 std::vector<std::string> refine_and_smooth(Mesh& mesh, const std::vector<OrderChange>& orders,
-                                           const std::vector<SurfaceSmoothing>& smoothing);
+                                           const std::vector<SurfaceSmoothing>& smoothing,
+                                           const RefinementCheck& check = {});
 
 }  // namespace abut

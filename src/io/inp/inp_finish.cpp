@@ -253,8 +253,8 @@ std::vector<std::int32_t> hexes_of(const Reader& r, const Item& item, const std:
 }
 
 void finish_mesh(Reader& r) {
-  if (r.elements.empty()) {
-    throw InputError(r.where(Loc{}, ""),
+  if (r.elements.empty()) {  // at the end of the input, like a missing *STEP
+    throw InputError(r.where(r.last_card.line > 0 ? r.last_card : Loc{0, 1}, ""),
                      "the input has no *ELEMENT: abut needs C3D8 or C3D8R hexahedra");
   }
   resolve_sets(r);
