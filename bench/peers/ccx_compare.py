@@ -327,8 +327,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--model", choices=["bars", "blocks", "all"], default="all",
                     help="bars: two-bar impact; blocks: two blocks colliding (default: both)")
-    ap.add_argument("--nx", type=int, help="bars: elements along each bar (default 100)")
-    ap.add_argument("--ny", type=int, help="bars: elements across, in y and z (default 4)")
+    ap.add_argument("--nx", type=int, help="elements along x in each body (default: bars 100, blocks 4)")
+    ap.add_argument("--ny", type=int, help="elements across, in y and z (default: bars 4, blocks 10)")
     ap.add_argument("--pfac", type=float, default=2.1e14,
                     help="penalty [Pa/m], abut pfac = ccx LINEAR slope (default 2.1e14 = E / 1 mm)")
     ap.add_argument("--samples", type=int, default=300, help="velocity samples per accuracy run")
