@@ -3,6 +3,7 @@
 // point masses (Abaqus/Explicit without nodal erosion, seed 001) or leave with them (nodal
 // erosion; Radioss Idel 1 and 2, seed 004).
 #include <algorithm>
+#include <cmath>
 
 #include "abut/contact/interface.hpp"
 
@@ -50,9 +51,10 @@ void ContactInterface::erode(std::span<const std::uint8_t> eroded) {
       init_point(side, side.point_facet.size() - 1, no_free_edges, 1.0);
       for (Pass& pass : passes_)
         if (pass.own == static_cast<int>(side_index)) {
-          // A freed node may touch with the stiffest bound of its pass (its facets are gone).
-          const double bound =
-              *std::max_element(pass.approach_omega2.begin(), pass.approach_omega2.end());
+          // A freed node (its facets are gone) may touch with the interface's stiffest bound.
+          const double bound = std::isfinite(initial_stable_step_)
+                                   ? 4.0 / (initial_stable_step_ * initial_stable_step_)
+                                   : 0.0;
           size_pass(pass, side.point_facet.size());
           pass.approach_omega2.back() = bound;
         }

@@ -49,14 +49,17 @@ void append_value(std::string& line, const CsvHistory::Value& value) {
 
 CsvHistory::CsvHistory(std::filesystem::path path, std::vector<std::string> columns)
     : path_(std::move(path)), columns_(std::move(columns)), out_(output_file::open(path_)) {
-  line_ = "time";
-  for (const std::string& name : columns_) {
-    line_ += ',';
-    append_name(line_, name);
-  }
-  line_ += '\n';
-  out_ << line_ << std::flush;
+  out_ << header() << std::flush;
   output_file::check(out_, path_);
+}
+
+std::string CsvHistory::header() const {
+  std::string line = "time";
+  for (const std::string& name : columns_) {
+    line += ',';
+    append_name(line, name);
+  }
+  return line + '\n';
 }
 
 void CsvHistory::write_row(double time, std::span<const Value> values) {
@@ -77,12 +80,7 @@ void CsvHistory::write_row(double time, std::span<const Value> values) {
 }
 
 void CsvHistory::archive(StateArchive& a) {
-  std::string header = "time";
-  for (const std::string& name : columns_) {
-    header += ',';
-    append_name(header, name);
-  }
-  header += '\n';
+  const std::string header_line = header();
   std::string text;
   if (a.saving()) {
     out_.flush();
@@ -91,7 +89,7 @@ void CsvHistory::archive(StateArchive& a) {
   }
   a.value(text);
   if (a.saving()) return;
-  if (text.compare(0, header.size(), header) != 0)
+  if (text.compare(0, header_line.size(), header_line) != 0)
     a.fail("the columns of " + path_.filename().string() + " differ from the restart file's");
   out_.close();
   out_ = output_file::open(path_);

@@ -39,6 +39,8 @@ class CsvHistory {
   void archive(StateArchive& a);
 
  private:
+  std::string header() const;  // "time,<columns...>\n"
+
   std::filesystem::path path_;
   std::vector<std::string> columns_;
   std::ofstream out_;
