@@ -103,6 +103,7 @@ void ContactInterface::rebuild_broad_phase(const ContactInput& in) {
     pass.grid.query(pass.qx, pass.qy, pass.qz, pass.candidates, keep);
   }
   rebuild_pending_ = false;
+  update_near_bound();
   if (edges_) edges_->rebuild(in.x, in.y, in.z);
   bx_.resize(surface_nodes_.size());
   by_.resize(surface_nodes_.size());
@@ -131,6 +132,16 @@ void ContactInterface::update_moving_region(const ContactInput& in) {
 
 // The settings, surfaces, parts and initial coordinates come from the caller; everything else
 // evolves (erosion adds points and switches facets off; the region switches facets off).
+// The points with a candidate facet change only at a broad-phase build: their bound before
+// touching is gathered then, not at every step (scatter adds the points that touch).
+void ContactInterface::update_near_bound() {
+  near_omega2_ = 0.0;
+  for (const Pass& pass : passes_)
+    for (std::size_t p = 0; p + 1 < pass.candidates.offsets.size(); ++p)
+      if (pass.candidates.offsets[p] != pass.candidates.offsets[p + 1])
+        near_omega2_ = std::max(near_omega2_, pass.approach_omega2[p]);
+}
+
 void ContactInterface::archive(StateArchive& a) {
   a.mark("contact interface");
   a.expect(static_cast<std::uint64_t>(sides_.size()), "the side count of a contact");
@@ -142,6 +153,7 @@ void ContactInterface::archive(StateArchive& a) {
   a.expect(settings_.thermal.any(), "whether a contact exchanges heat");
   a.values(sides_, passes_, mass_, bx_, by_, bz_, wear_, pressure_, margin_, initial_stable_step_,
            builds_, rebuild_pending_, gap_pairs_, edges_, stats_);
+  if (!a.saving()) update_near_bound();
 }
 
 std::vector<PairStiffness> ContactInterface::pair_stiffness() const {

@@ -492,6 +492,7 @@ void ContactInterface::initial_state(const ContactInput& in) {
     }
   }
   if (omega2_max > 0.0) initial_stable_step_ = 2.0 / std::sqrt(omega2_max);
+  update_near_bound();  // the build above came before the bounds
 }
 
 }  // namespace abut

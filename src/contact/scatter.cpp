@@ -11,17 +11,14 @@ namespace abut {
 void ContactInterface::scatter(const ContactInput& in, ContactForces& out) {
   const WearRateFunction* wear_rate[2] = {&settings_.wear_rate1, &settings_.wear_rate2};
   if (self_contact() && !settings_.wear_rate1) wear_rate[0] = &settings_.wear_rate2;
-  double omega2_max = 0.0, approach_omega2 = 0.0;
+  // ContactStats::approach_step: the points near a facet (update_near_bound) and those that touch.
+  double omega2_max = 0.0, approach_omega2 = near_omega2_;
   // Serial, in point order: the sums do not depend on the thread count.
   for (const Pass& pass : passes_) {
     const Side& own = sides_[pass.own];
     const Side& target = sides_[pass.target];
     const double w = pass.weight;
     for (std::size_t p = 0; p < pass.hit.size(); ++p) {
-      // ContactStats::approach_step: the points whose springs may act in the next step.
-      if (pass.hit[p] || pass.state[p] == kTied ||
-          pass.candidates.offsets[p] != pass.candidates.offsets[p + 1])
-        approach_omega2 = std::max(approach_omega2, pass.approach_omega2[p]);
       if (!pass.hit[p]) continue;
       const auto own_nodes = own.point_nodes(p);
       const auto& target_nodes = target.surface.facets[pass.hit_facet[p]];
@@ -52,6 +49,7 @@ void ContactInterface::scatter(const ContactInput& in, ContactForces& out) {
       ++gap_pairs_;
       ++stats_.active_points;
       omega2_max = std::max(omega2_max, pass.omega2[p]);
+      approach_omega2 = std::max(approach_omega2, pass.approach_omega2[p]);
 
       // Nodal pressure and wear: area-weighted averages over each node's tributary area.
       const double load = w * pass.area[p];

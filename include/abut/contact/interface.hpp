@@ -60,12 +60,12 @@ struct ContactStats {
   double gap_min = 0.0, gap_max = 0.0;
   std::size_t active_points = 0;
   double stable_step = std::numeric_limits<double>::infinity();  // 2/omega of the stiffest spring
-  // The bound before touching (initial_stable_step) over the points that touch, are tied or have
-  // a facet within the broad phase's reach: those whose springs may act in the next step. The
-  // others are at least half the search margin from every facet: they cannot touch before the
-  // next broad-phase build sees them while no surface node moves more than a quarter of the
-  // margin in a step (margin / (4 v_max); at rest the bound holds everywhere). A caller's step is
-  // min(stable_step, approach_step).
+  // The bound before touching (initial_stable_step) over the points that touch (a tie that holds
+  // included) or have a facet within the broad phase's reach: those whose springs may act in the
+  // next step. The others are at least half the search margin from every facet: they cannot
+  // touch before the next broad-phase build sees them while no surface node moves more than a
+  // quarter of the margin in a step (margin / (4 v_max); at rest the bound holds everywhere). A
+  // caller's step is min(stable_step, approach_step).
   double approach_step = std::numeric_limits<double>::infinity();
 };
 
@@ -246,6 +246,7 @@ class ContactInterface {
   void build_passes();
   void build_edges(const ContactInput& in);  // edge_selection.cpp
   void rebuild_broad_phase(const ContactInput& in);
+  void update_near_bound();  // near_omega2_ from the candidates of the last build
   bool needs_rebuild(const ContactInput& in) const;
   PointFrame frame(const Side& side, std::size_t p, const ContactInput& in) const;
   // The narrow phase's view of a side's facets with a detection depth per facet, and its rules for
@@ -287,6 +288,8 @@ class ContactInterface {
   std::optional<EdgeContact> edges_;  // edge-to-edge contact (EdgeSettings)
   // Contact points per side as built (erosion adds more): what a restart file must match.
   std::vector<std::uint64_t> initial_points_;
+  // The largest approach_omega2 of the points with a candidate facet at the last build.
+  double near_omega2_ = 0.0;
   std::vector<double> x0_, y0_, z0_;  // initial coordinates (Igap 2 only)
   ContactStats stats_;
 };
