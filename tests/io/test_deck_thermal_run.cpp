@@ -14,9 +14,12 @@
 #include "abut/io/run.hpp"
 #include "abut/solver/simulation.hpp"
 #include "test_deck_helpers.hpp"
+#include "test_files.hpp"
 
 namespace abut {
 namespace {
+
+using testing::file_text;
 
 using ::testing::HasSubstr;
 using testing::model_of;
@@ -50,13 +53,6 @@ ALL, 0, 20.0
 *BC_TEMPERATURE
 G, 1, , 120.0
 )";
-
-std::string file_text(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 TEST(DeckThermalRun, HeldEndFollowsTheErfSolution) {
   const Model m = model_of(kBar);

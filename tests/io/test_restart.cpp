@@ -18,11 +18,14 @@
 #include "abut/io/deck.hpp"
 #include "abut/io/run.hpp"
 #include "abut/solver/simulation.hpp"
+#include "test_files.hpp"
 
 namespace abut {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::file_text;
+using testing::fresh_dir;
 
 // A metal block sliding with Coulomb friction and wear over an elastic plate, both free.
 const char* const kFrictionSlide = R"(*UNIT_SYSTEM
@@ -267,19 +270,6 @@ INSTANTIATE_TEST_SUITE_P(Restart, RestartOf,
                          [](const auto& param_info) { return std::string(param_info.param.name); });
 
 // ---------------------------------------------------------------------------------------------
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  return dir;
-}
-
-std::string file_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // The run stops after `cycles` cycles (as at a SIGINT), writing restart.abr.
 RunOptions stopping_after(const fs::path& dir, int cycles) {

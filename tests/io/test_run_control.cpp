@@ -14,11 +14,15 @@
 #include "abut/io/deck.hpp"
 #include "abut/io/output_directory.hpp"
 #include "abut/io/run.hpp"
+#include "test_files.hpp"
 
 namespace abut {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::file_text;
+using testing::fresh_dir;
+using testing::write_text;
 
 // A free steel cube of 2 x 2 x 2 elements moving at 1 m/s; its end time takes ~10^5 cycles.
 const char* const kCube = R"(*UNIT_SYSTEM
@@ -37,24 +41,6 @@ SI
 P, 1, 1.0, 0.0, 0.0
 *END
 )";
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  return dir;
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-void write_text(const fs::path& path, const std::string& text) {
-  fs::create_directories(path.parent_path());
-  std::ofstream(path) << text;
-}
 
 std::size_t count_of(const std::string& text, const std::string& what) {
   std::size_t n = 0;
@@ -89,9 +75,9 @@ TEST(OutputDirectory, RemovesAPreviousRunsFilesAndKeepsTheUsers) {
                            "states/state_0099.vtu", "notes.txt", "mine.csv", "states/mine.vtu"})
     write_text(dir / name, "old\n");
   { const OutputDirectory output(dir); }
-  for (const char* name : {"results.pvd", "summary.json", "results.dat", "energy.csv", "parts.csv",
-                           "contact.csv", "increments.csv", "states/state_0000.vtu",
-                           "states/state_0099.vtu"})
+  for (const char* name :
+       {"results.pvd", "summary.json", "results.dat", "energy.csv", "parts.csv", "contact.csv",
+        "increments.csv", "states/state_0000.vtu", "states/state_0099.vtu"})
     EXPECT_FALSE(fs::exists(dir / name)) << name;
   for (const char* name : {"notes.txt", "mine.csv", "states/mine.vtu"})
     EXPECT_TRUE(fs::exists(dir / name)) << name;
@@ -121,7 +107,7 @@ TEST(RunControl, ARerunLeavesOnlyItsOwnStates) {
   run_simulation(model, options, log);
   EXPECT_FALSE(fs::exists(dir / "states/state_0500.vtu"));
   EXPECT_FALSE(fs::exists(dir / "contact.csv"));  // the cube has no contact
-  const std::string pvd = read_text(dir / "results.pvd");
+  const std::string pvd = file_text(dir / "results.pvd");
   std::size_t files = 0;
   for (const fs::directory_entry& e : fs::directory_iterator(dir / "states")) {
     ++files;
@@ -142,10 +128,10 @@ TEST(RunControl, AnExplicitRunStopsAtTheEndOfACycle) {
   EXPECT_TRUE(report.stable);
   EXPECT_EQ(report.cycles, 100);
   EXPECT_LT(report.end_time, model.time.end_time);
-  const std::string summary = read_text(dir / "summary.json");
+  const std::string summary = file_text(dir / "summary.json");
   EXPECT_NE(summary.find("\"status\": \"interrupted\""), std::string::npos) << summary;
   // The initial state and the final one, at the time it stopped.
-  const std::string pvd = read_text(dir / "results.pvd");
+  const std::string pvd = file_text(dir / "results.pvd");
   EXPECT_EQ(count_of(pvd, "<DataSet"), 2u) << pvd;
   EXPECT_TRUE(fs::exists(dir / "states/state_0001.vtu"));
   EXPECT_NE(log.str().find("INTERRUPTED after 100 cycles"), std::string::npos) << log.str();
@@ -164,9 +150,9 @@ TEST(RunControl, AStaticRunStopsAtTheEndOfAnIncrement) {
   const RunReport report = run_simulation(model, options, log);
   EXPECT_TRUE(report.interrupted);
   EXPECT_EQ(report.cycles, 1);  // one increment
-  const std::string summary = read_text(dir / "summary.json");
+  const std::string summary = file_text(dir / "summary.json");
   EXPECT_NE(summary.find("\"status\": \"interrupted\""), std::string::npos) << summary;
-  EXPECT_EQ(count_of(read_text(dir / "results.pvd"), "<DataSet"), 2u);  // t = 0 and the increment
+  EXPECT_EQ(count_of(file_text(dir / "results.pvd"), "<DataSet"), 2u);  // t = 0 and the increment
   fs::remove_all(dir);
 }
 

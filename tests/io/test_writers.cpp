@@ -16,19 +16,15 @@
 #include "abut/io/json_writer.hpp"
 #include "abut/io/progress.hpp"
 #include "abut/io/vtu_writer.hpp"
+#include "test_files.hpp"
 
 namespace abut {
 namespace {
 
+using testing::file_text;
+
 std::string base64_of(std::string_view text) {
   return base64_encode(std::as_bytes(std::span<const char>(text.data(), text.size())));
-}
-
-std::string file_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 std::filesystem::path scratch_dir(const std::string& name) {
@@ -218,8 +214,9 @@ TEST(ProgressReporter, RedrawsTheTerminalBarAtMostTenTimesASecond) {
   // Draws at cycles 0, 4, ..., 96 (25) and the final one.
   EXPECT_EQ(std::count(text.begin(), text.end(), '\r'), 26);
   // The final redraw carries the wall time and ends the line; nothing repeats it.
-  EXPECT_TRUE(text.ends_with("\r[##############################] 100%  t=1.00e+00  cycle 100  "
-                             "wall 0:00:03\n"))
+  EXPECT_TRUE(
+      text.ends_with("\r[##############################] 100%  t=1.00e+00  cycle 100  "
+                     "wall 0:00:03\n"))
       << text;
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1);
 }

@@ -16,16 +16,12 @@
 #include <vector>
 
 #include "abut/io/vtu_writer.hpp"
+#include "test_files.hpp"
 
 namespace abut {
 namespace {
 
-std::string file_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using testing::file_text;
 
 // Test-side decoder (RFC 4648, section 4), independent of the writer's encoder.
 std::vector<unsigned char> base64_decode(const std::string& text) {
