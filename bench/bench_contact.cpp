@@ -3,6 +3,8 @@
 // 2x2 points per facet (ns per point-cycle), node-to-surface (ns per node-cycle). The shell
 // variants: the same plates as two-sided shells 2 mm thick (each side's surface at h/2 from the
 // mid-surface), pressed by 1e-4 beyond the gap; half of the points face away (the far sides).
+// Idle points (BM_ContactIdlePointCycle): the same S2S plates held apart, 5 mm (within the search
+// margin: every point has candidate facets, none touches) or 10 cm (beyond it: no candidates).
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
@@ -47,8 +49,9 @@ struct Plates {
   abut::ContactInput input(double t) const { return {x, y, z, vx, vy, vz, t, 1e-7, {}}; }
 };
 
+// `lift`: the upper plate's move from 1e-4 above the lower one (-2e-4: 1e-4 penetration).
 void run(benchmark::State& state, abut::Discretisation discretisation, const char* counter,
-         bool shells = false) {
+         bool shells = false, double lift = -2e-4) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
   Plates p(100, shells);
   abut::ContactSettings s;
@@ -56,8 +59,7 @@ void run(benchmark::State& state, abut::Discretisation discretisation, const cha
   s.tangential_law = abut::Coulomb{0.2, 0.2, {}, {}};
   abut::ContactInterface contact(s, p.upper, p.lower, p.mass, p.input(0.0));
   const std::size_t upper_first = (101 * 101);
-  for (std::size_t i = upper_first; i < p.x.size(); ++i)
-    p.z[i] -= 2e-4, p.vx[i] = 1.0;  // 1e-4 penetration
+  for (std::size_t i = upper_first; i < p.x.size(); ++i) p.z[i] += lift, p.vx[i] = 1.0;
   abut::ContactForces out{p.fx, p.fy, p.fz, {}, {}};
   double t = 0.0;
   for (auto _ : state) {
@@ -66,7 +68,8 @@ void run(benchmark::State& state, abut::Discretisation discretisation, const cha
     t += 1e-7;
     benchmark::DoNotOptimize(p.fx.data());
   }
-  if (contact.stats().active_points == 0) state.SkipWithError("no contact");
+  if ((contact.stats().active_points == 0) != (lift > 0.0))
+    state.SkipWithError(lift > 0.0 ? "unexpected contact" : "no contact");
   const auto points = static_cast<double>(contact.point_count());
   state.counters["points"] = points;
   state.counters["active"] = static_cast<double>(contact.stats().active_points);
@@ -95,5 +98,15 @@ void BM_ShellContactNodeCycle(benchmark::State& state) {
   run(state, abut::Discretisation::NodeToSurface, "ns_per_node_cycle", true);
 }
 BENCHMARK(BM_ShellContactNodeCycle)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_ContactIdlePointCycle(benchmark::State& state) {
+  run(state, abut::Discretisation::SurfaceToSurface, "ns_per_point_cycle", false,
+      static_cast<double>(state.range(1)) * 1e-3);
+}
+BENCHMARK(BM_ContactIdlePointCycle)
+    ->ArgsProduct({{1, 2}, {5, 100}})  // threads, gap in mm
+    ->ArgNames({"threads", "gap_mm"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
