@@ -174,6 +174,9 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     lose_partner();
     return;
   }
+  // Many more are near a facet but clearly open (open_points.cpp): the full path would only find
+  // that again.
+  if (last_partner < 0 && pass.state[p] != kTied && surely_open(pass, p, in)) return;
   const PointFrame f = frame(own, p, in);
   if (!f.active) return;
   const ContactSettings& s = settings_;

@@ -104,6 +104,7 @@ void ContactInterface::rebuild_broad_phase(const ContactInput& in) {
   }
   rebuild_pending_ = false;
   update_near_bound();
+  update_near_facets();
   if (edges_) edges_->rebuild(in.x, in.y, in.z);
   bx_.resize(surface_nodes_.size());
   by_.resize(surface_nodes_.size());
@@ -153,7 +154,10 @@ void ContactInterface::archive(StateArchive& a) {
   a.expect(settings_.thermal.any(), "whether a contact exchanges heat");
   a.values(sides_, passes_, mass_, bx_, by_, bz_, wear_, pressure_, margin_, initial_stable_step_,
            builds_, rebuild_pending_, gap_pairs_, edges_, stats_);
-  if (!a.saving()) update_near_bound();
+  if (!a.saving()) {
+    update_near_bound();
+    update_near_facets();
+  }
 }
 
 std::vector<PairStiffness> ContactInterface::pair_stiffness() const {
@@ -239,6 +243,7 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   }
   update_moving_region(in);
   if (rebuild_pending_ || needs_rebuild(in)) rebuild_broad_phase(in);
+  update_bands(in);
   for (Pass& pass : passes_) {
     const std::size_t n = pass.state.size();
 #pragma omp parallel for schedule(dynamic, \

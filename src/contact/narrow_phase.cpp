@@ -30,6 +30,15 @@ bool initially_within(const PartnerRules& rules, const std::array<std::int32_t, 
 
 }  // namespace
 
+PairReach pair_reach(const TargetFacets& target, std::int32_t f, const PartnerRules& rules) {
+  PairReach r;
+  r.below = std::max(target.depth[f], rules.point_depth);
+  r.gap = pair_gap(rules.point_gap, target.gap[f], rules.point_min_edge, target.min_edge[f],
+                   rules.mesh_fraction);
+  r.reach = std::max({r.below, rules.depth_above, rules.edge_tolerance}) + r.gap;
+  return r;
+}
+
 Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> candidates,
                      const std::array<std::int32_t, 4>& own_nodes, const Vec3& x_p, const Vec3& n_p,
                      const PartnerRules& rules) {
@@ -42,13 +51,10 @@ Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> c
     if (share_a_node(own_nodes, nodes)) continue;
     QuadCorners c;
     for (int a = 0; a < 4; ++a) c[a] = {target.x[nodes[a]], target.y[nodes[a]], target.z[nodes[a]]};
-    const double below = std::max(target.depth[f], rules.point_depth);
-    const double g = pair_gap(rules.point_gap, target.gap[f], rules.point_min_edge,
-                              target.min_edge[f], rules.mesh_fraction);
+    const auto [g, below, reach] = pair_reach(target, f, rules);
     if (!rules.x0.empty() && initially_within(rules, nodes, 2.0 * g)) continue;
     // The distance to the facet's bounding box bounds the distance to the facet from below:
     // skip facets that cannot be within reach or closer than the best one so far.
-    const double reach = std::max({below, rules.depth_above, rules.edge_tolerance}) + g;
     double box_distance2 = 0.0;
     for (int i = 0; i < 3; ++i) {
       const double lo = std::min({c[0][i], c[1][i], c[2][i], c[3][i]});

@@ -21,6 +21,7 @@
 #include "abut/contact/broad_phase.hpp"
 #include "abut/contact/edge_contact.hpp"
 #include "abut/contact/narrow_phase.hpp"
+#include "abut/contact/penetration_zone.hpp"
 #include "abut/contact/settings.hpp"
 #include "abut/contact/surface.hpp"
 #include "abut/core/state_archive.hpp"
@@ -211,6 +212,10 @@ class ContactInterface {
     // the search distance too) and the conductance h A of the point [power / temperature].
     std::vector<std::int32_t> heat_facet;
     std::vector<double> heat_xi, heat_eta, heat_conductance;
+    // Derived, not archived: the target facets that are some point's candidate at the last
+    // build, and their bands of this step (indexed by facet; open_points.cpp).
+    std::vector<std::int32_t> near_facets;
+    std::vector<FacetBand> bands;
     void archive(StateArchive& a) {
       a.values(own, target, weight, grid, candidates, qx, qy, qz, state, sliding, adhered,
                approach_omega2, offset, shift, htx, hty, htz, tie_facet, tie_xi, tie_eta, hit,
@@ -261,6 +266,13 @@ class ContactInterface {
   double spring(const Side& own, std::size_t p, double area, const Side& target,
                 std::int32_t f) const;
   void evaluate_point(Pass& pass, std::size_t p, const ContactInput& in);
+  // Open points (open_points.cpp): whether this contact may skip them at all, the bands of the
+  // facets near some point (after each build: which facets; at each step: their bands), and
+  // whether the full evaluation of point p would surely find it open and change nothing.
+  bool skips_open_points() const;
+  void update_near_facets();
+  void update_bands(const ContactInput& in);
+  bool surely_open(const Pass& pass, std::size_t p, const ContactInput& in) const;
   void scatter(const ContactInput& in, ContactForces& out);
   // Thermal contact (heat_exchange.cpp): the conductance of point p with its partner, and the
   // heat of every pass to the nodes, serially in point order.

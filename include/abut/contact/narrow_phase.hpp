@@ -63,6 +63,13 @@ struct Partner {
   Vec3 normal;  // the push direction: the facet's normal, or around a shell's edge the radial one
 };
 
+// What the rules above allow for point and facet f: the pair's gap g, the detection depth below
+// the facet, and the reach: no point further than it from the facet's bounding box is accepted.
+struct PairReach {
+  double gap = 0.0, below = 0.0, reach = 0.0;
+};
+PairReach pair_reach(const TargetFacets& target, std::int32_t f, const PartnerRules& rules);
+
 // `own_nodes`: the nodes of the point's facet (a node-to-surface point: its node four times);
 // `normal`: the point's outward normal, or zero for a bare node.
 Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> candidates,

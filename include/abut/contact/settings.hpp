@@ -132,6 +132,9 @@ struct ContactSettings {
   ThermalContactSettings thermal;
   std::optional<double>
       search_margin;  // broad-phase margin; default: half the smallest detection depth
+  // Speed only, results are the same either way (tested): points that are surely open are skipped
+  // before their projections (penetration_zone.hpp). Off: every point near a facet is projected.
+  bool skip_open_points = true;
 };
 
 // A setting the library cannot work with; `setting` names the ContactSettings member (or the

@@ -1,0 +1,51 @@
+// The band test of penetration_zone.hpp.
+#include "abut/contact/penetration_zone.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace abut {
+
+FacetBand facet_band(const QuadCorners& c) {
+  FacetBand band;
+  for (int i = 0; i < 3; ++i) {
+    band.lo[i] = std::min({c[0][i], c[1][i], c[2][i], c[3][i]});
+    band.hi[i] = std::max({c[0][i], c[1][i], c[2][i], c[3][i]});
+  }
+  band.diag = norm(band.hi - band.lo);
+  const Vec3 a = (c[1] - c[0] + c[2] - c[3]) * 0.25;
+  const Vec3 b = (c[3] - c[0] + c[2] - c[1]) * 0.25;
+  const Vec3 h = (c[0] - c[1] + c[2] - c[3]) * 0.25;
+  const Vec3 axb = cross(a, b);
+  const double area = norm(axb);
+  if (!(area > 0.0)) return band;
+  // The local normal deviates from a x b by xi u + eta v, largest at a corner.
+  const Vec3 u = cross(a, h), v = cross(h, b);
+  band.tilt = std::max(norm(u + v), norm(u - v)) / area;
+  band.normal = axb / area;
+  band.centre = (c[0] + c[1] + c[2] + c[3]) * 0.25;
+  band.warp = std::abs(dot(h, band.normal));
+  band.usable = band.tilt <= 0.5;
+  return band;
+}
+
+bool outside_penetration_zone(const FacetBand& band, const Vec3& x, double g, double below,
+                              double reach) {
+  constexpr double kSqrt3 = 1.7320508075688772;
+  // The narrow phase's gap and this height are rounded differently: a point that touches exactly
+  // (a node on a matched mesh) stays with the narrow phase.
+  constexpr double kRoundOff = 1e-9;
+  double box2 = 0.0;  // as the narrow phase computes it, so that (a) decides alike
+  for (int i = 0; i < 3; ++i) {
+    const double out = std::max({band.lo[i] - x[i], x[i] - band.hi[i], 0.0});
+    box2 += out * out;
+  }
+  if (box2 > reach * reach) return true;  // (a)
+  if (!band.usable) return false;
+  const double s = dot(x - band.centre, band.normal);
+  const double rho = band.diag + 2.0 * kSqrt3 * reach;
+  const double sigma = band.warp + rho * band.tilt + kRoundOff * rho;
+  return s >= g + sigma || s < std::min(g - below, -g) - sigma;  // (b)
+}
+
+}  // namespace abut

@@ -1,0 +1,103 @@
+// outside_penetration_zone (penetration_zone.hpp): a point it declares outside must not be a
+// penetrating partner of the facet for the narrow phase itself (find_partner), on random warped
+// and turned facets with random gaps, depths, edge rules and points all around. The band must
+// also be of use: on a flat or slightly warped facet it lets through points just above it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "abut/contact/narrow_phase.hpp"
+#include "abut/contact/penetration_zone.hpp"
+
+namespace abut {
+namespace {
+
+struct OneFacet {
+  std::vector<std::array<std::int32_t, 4>> nodes{{0, 1, 2, 3}};
+  std::vector<std::uint8_t> sharp{0}, active{1}, free_edges{0};
+  std::vector<double> depth{0.0}, gap{0.0}, min_edge{1.0};
+  std::vector<std::int32_t> twin{-1};
+  std::vector<double> x = std::vector<double>(4), y = x, z = x;
+  TargetFacets view() const {
+    return {nodes, sharp, active, depth, twin, free_edges, gap, min_edge, x, y, z};
+  }
+  void set(const QuadCorners& c) {
+    for (int a = 0; a < 4; ++a) x[a] = c[a].x, y[a] = c[a].y, z[a] = c[a].z;
+  }
+};
+
+bool penetrates(const OneFacet& facet, const Vec3& x, const PartnerRules& rules) {
+  const std::int32_t candidate = 0;
+  const Partner p = find_partner(facet.view(), {&candidate, 1}, {9, 9, 9, 9}, x, {}, rules);
+  return p.facet >= 0 && p.gap < 0.0;
+}
+
+Vec3 random_in_ball(std::mt19937& rng, double radius) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (;;) {
+    const Vec3 v{u(rng), u(rng), u(rng)};
+    if (dot(v, v) <= 1.0) return v * radius;
+  }
+}
+
+// Rotation of v about the unit axis k by angle t (Rodrigues).
+Vec3 turn(const Vec3& v, const Vec3& k, double t) {
+  return v * std::cos(t) + cross(k, v) * std::sin(t) + k * (dot(k, v) * (1.0 - std::cos(t)));
+}
+
+TEST(PenetrationZone, APointOutsideIsNeverAPenetratingPartner) {
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int outside = 0, inside = 0;
+  for (int trial = 0; trial < 200000; ++trial) {
+    // A facet of size 0.5 to 1.5, its corners moved by up to `warp` of its size, turned at random.
+    const double size = 0.5 + u(rng);
+    const double warp = trial % 2 ? 0.02 : 0.2;
+    QuadCorners c = {Vec3{0, 0, 0}, Vec3{size, 0, 0}, Vec3{size, size, 0}, Vec3{0, size, 0}};
+    for (auto& corner : c) corner = corner + random_in_ball(rng, warp * size);
+    const Vec3 axis = normalized(random_in_ball(rng, 1.0) + Vec3{0, 0, 1e-3});
+    const double angle = u(rng) * std::numbers::pi;
+    for (auto& corner : c) corner = turn(corner, axis, angle);
+    OneFacet facet;
+    facet.set(c);
+    facet.depth[0] = size * (0.1 + 0.6 * u(rng));
+    facet.gap[0] = u(rng) < 0.5 ? 0.0 : 0.05 * size * u(rng);
+    facet.sharp[0] = u(rng) < 0.5 ? 0 : 0xF;
+    PartnerRules rules;
+    rules.point_gap = u(rng) < 0.5 ? 0.0 : 0.05 * size * u(rng);
+    rules.edge_tolerance = 0.1 * size * u(rng);
+    rules.smooth_reach = std::tan(1.2 * u(rng));
+    const PairReach pr = pair_reach(facet.view(), 0, rules);
+    // A point anywhere near: above, below, beside, within reach or not.
+    const Vec3 centre = (c[0] + c[1] + c[2] + c[3]) * 0.25;
+    const Vec3 x = centre + random_in_ball(rng, 1.5 * size);
+    if (!outside_penetration_zone(c, x, pr.gap, pr.below, pr.reach)) {
+      ++inside;
+      continue;
+    }
+    ++outside;
+    EXPECT_FALSE(penetrates(facet, x, rules)) << "trial " << trial;
+  }
+  // Not vacuous: both outcomes are frequent.
+  EXPECT_GT(outside, 50000);
+  EXPECT_GT(inside, 20000);
+}
+
+// Of use where it matters: a point 0.5 mm above a flat 1 cm facet of a solid whose detection
+// depth, 5 mm, puts it within the narrow phase's reach is outside; 0.5 mm below it is inside.
+// With the corners warped by 0.1 mm, a point 2 mm above is still outside.
+TEST(PenetrationZone, LetsThroughPointsJustAboveAFacet) {
+  QuadCorners c = {Vec3{0, 0, 0}, Vec3{0.01, 0, 0}, Vec3{0.01, 0.01, 0}, Vec3{0, 0.01, 0}};
+  EXPECT_TRUE(outside_penetration_zone(c, {0.005, 0.005, 5e-4}, 0.0, 0.005, 0.005));
+  EXPECT_FALSE(outside_penetration_zone(c, {0.005, 0.005, -5e-4}, 0.0, 0.005, 0.005));
+  EXPECT_FALSE(outside_penetration_zone(c, {0.005, 0.005, 0.0}, 0.0, 0.005, 0.005));  // touching
+  // A shell pair's gap of 1 mm: 0.5 mm above the mid-surface is inside.
+  EXPECT_FALSE(outside_penetration_zone(c, {0.005, 0.005, 5e-4}, 0.001, 0.005, 0.006));
+  c[0].z = c[2].z = 1e-4;
+  EXPECT_TRUE(outside_penetration_zone(c, {0.005, 0.005, 0.002}, 0.0, 0.005, 0.005));
+}
+
+}  // namespace
+}  // namespace abut
