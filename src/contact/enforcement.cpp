@@ -68,7 +68,7 @@ ContactInterface::PointFrame ContactInterface::frame(const Side& side, std::size
 }
 
 TargetFacets ContactInterface::target_facets(const Side& target, std::span<const double> depth,
-                                             const ContactInput& in) const {
+                                             const ContactInput& in, bool banded) const {
   return {target.surface.facets,
           target.sharp,
           target.active,
@@ -79,7 +79,8 @@ TargetFacets ContactInterface::target_facets(const Side& target, std::span<const
           target.facet_min_edge,
           in.x,
           in.y,
-          in.z};
+          in.z,
+          banded ? std::span<const FacetBand>(target.bands) : std::span<const FacetBand>()};
 }
 
 PartnerRules ContactInterface::partner_rules(const Side& own, std::size_t p) const {
@@ -108,12 +109,13 @@ Partner ContactInterface::partner_of(const Pass& pass, std::size_t p, const Poin
                                      const ContactInput& in, std::int32_t previous) const {
   const Side& own = sides_[pass.own];
   const Side& target = sides_[pass.target];
-  // The regular search: within the facets' own detection depth.
-  const TargetFacets facets = target_facets(target, target.depth, in);
+  // The regular search: within the facets' own detection depth, among the candidates, whose boxes
+  // of this step are at hand while the interface applies (not yet in initial_state).
+  const TargetFacets facets = target_facets(target, target.depth, in, bands_current_);
   PartnerRules rules = partner_rules(own, p);
   const auto first = pass.candidates.offsets[p], last = pass.candidates.offsets[p + 1];
   const Partner h = find_partner(facets, {pass.candidates.facets.data() + first, last - first},
-                                 f.nodes, f.x, f.normal, rules);
+                                 f.nodes, f.x, f.normal, rules, previous);
   if (h.facet >= 0 || previous < 0) return h;
   // A point in contact last step that is now deeper than the other side's detection depth (its
   // facets are thinner than the point's own elements) keeps its partner or a neighbour of it, down
@@ -131,7 +133,9 @@ Partner ContactInterface::partner_of(const Pass& pass, std::size_t p, const Poin
   std::sort(near.begin(),
             near.begin() + static_cast<std::ptrdiff_t>(count));  // facet order, as the broad phase
   rules.point_depth = own.point_depth[p];  // as deep as either side's elements reach
-  return find_partner(facets, {near.data(), count}, f.nodes, f.x, f.normal, rules);
+  TargetFacets around = facets;
+  around.bands = {};  // the neighbours need not be anyone's candidates
+  return find_partner(around, {near.data(), count}, f.nodes, f.x, f.normal, rules, previous);
 }
 
 double ContactInterface::spring(const Side& own, std::size_t p, double area, const Side& target,

@@ -244,12 +244,14 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   update_moving_region(in);
   if (rebuild_pending_ || needs_rebuild(in)) rebuild_broad_phase(in);
   update_bands(in);
+  bands_current_ = true;
   for (Pass& pass : passes_) {
     const std::size_t n = pass.state.size();
 #pragma omp parallel for schedule(dynamic, \
                                   256) if (n >= static_cast <std::size_t>(kParallelMinimum) / 4)
     for (std::size_t p = 0; p < n; ++p) evaluate_point(pass, p, in);
   }
+  bands_current_ = false;
   scatter(in, out);
   if (settings_.thermal.any()) scatter_heat(in, out);
   if (edges_) {

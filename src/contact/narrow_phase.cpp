@@ -30,48 +30,47 @@ bool initially_within(const PartnerRules& rules, const std::array<std::int32_t, 
 
 }  // namespace
 
-PairReach pair_reach(const TargetFacets& target, std::int32_t f, const PartnerRules& rules) {
-  PairReach r;
-  r.below = std::max(target.depth[f], rules.point_depth);
-  r.gap = pair_gap(rules.point_gap, target.gap[f], rules.point_min_edge, target.min_edge[f],
-                   rules.mesh_fraction);
-  r.reach = std::max({r.below, rules.depth_above, rules.edge_tolerance}) + r.gap;
-  return r;
-}
-
 Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> candidates,
                      const std::array<std::int32_t, 4>& own_nodes, const Vec3& x_p, const Vec3& n_p,
-                     const PartnerRules& rules) {
+                     const PartnerRules& rules, std::int32_t first) {
   Partner best;
   double best_distance = std::numeric_limits<double>::infinity();
   const bool has_normal = n_p.x != 0.0 || n_p.y != 0.0 || n_p.z != 0.0;
-  for (const std::int32_t f : candidates) {
-    if (!target.active[f]) continue;
+  const auto consider = [&](std::int32_t f) {
+    if (!target.active[f]) return;
     const auto& nodes = target.nodes[f];
-    if (share_a_node(own_nodes, nodes)) continue;
     QuadCorners c;
-    for (int a = 0; a < 4; ++a) c[a] = {target.x[nodes[a]], target.y[nodes[a]], target.z[nodes[a]]};
+    const auto gather = [&] {
+      for (int a = 0; a < 4; ++a)
+        c[a] = {target.x[nodes[a]], target.y[nodes[a]], target.z[nodes[a]]};
+    };
     const auto [g, below, reach] = pair_reach(target, f, rules);
-    if (!rules.x0.empty() && initially_within(rules, nodes, 2.0 * g)) continue;
     // The distance to the facet's bounding box bounds the distance to the facet from below:
     // skip facets that cannot be within reach or closer than the best one so far.
     double box_distance2 = 0.0;
+    const bool banded = !target.bands.empty();
+    if (!banded) gather();
     for (int i = 0; i < 3; ++i) {
-      const double lo = std::min({c[0][i], c[1][i], c[2][i], c[3][i]});
-      const double hi = std::max({c[0][i], c[1][i], c[2][i], c[3][i]});
+      const double lo =
+          banded ? target.bands[f].lo[i] : std::min({c[0][i], c[1][i], c[2][i], c[3][i]});
+      const double hi =
+          banded ? target.bands[f].hi[i] : std::max({c[0][i], c[1][i], c[2][i], c[3][i]});
       const double out = std::max({lo - x_p[i], x_p[i] - hi, 0.0});
       box_distance2 += out * out;
     }
     const double closer = best_distance + g;  // nearer than this to beat the best one so far
-    if (box_distance2 > reach * reach || closer < 0.0 || box_distance2 > closer * closer) continue;
+    if (box_distance2 > reach * reach || closer < 0.0 || box_distance2 > closer * closer) return;
+    if (share_a_node(own_nodes, nodes)) return;
+    if (!rules.x0.empty() && initially_within(rules, nodes, 2.0 * g)) return;
+    if (banded) gather();
     const QuadProjection q = project_onto_quad(c, x_p);
-    if (target.twin[f] >= 0 && q.gap < 0.0) continue;  // the other side of the shell
+    if (target.twin[f] >= 0 && q.gap < 0.0) return;  // the other side of the shell
     const bool shell = target.twin[f] >= 0;
     double gap = q.gap - g;
     Vec3 push = q.normal;
     if (has_normal) {
       const double facing = dot(n_p, q.normal);
-      if (rules.from_behind ? facing <= 0.0 : facing >= 0.0) continue;
+      if (rules.from_behind ? facing <= 0.0 : facing >= 0.0) return;
     }
     if (q.crossed_edges != 0) {
       const bool sharp = (q.crossed_edges & target.sharp[f]) != 0;
@@ -89,18 +88,25 @@ Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> c
         const double allowed =
             sharp ? rules.edge_tolerance
                   : std::max(rules.edge_tolerance, std::abs(q.gap) * rules.smooth_reach);
-        if (q.overshoot > allowed && !on_edge) continue;
+        if (q.overshoot > allowed && !on_edge) return;
       }
     }
     // The far side: deeper than the pair's detection depth (or, from behind, further out).
     const double inward = rules.from_behind ? gap : -gap;
-    if (inward > below || -inward > std::max(rules.depth_above, below)) continue;
-    if (q.distance - g < best_distance) {
-      best_distance = q.distance - g;
+    if (inward > below || -inward > std::max(rules.depth_above, below)) return;
+    // The closest; of equally close ones the first in facet order (the candidates' order).
+    const double distance = q.distance - g;
+    if (distance < best_distance || (distance == best_distance && f < best.facet)) {
+      best_distance = distance;
       best = {f, q.xi, q.eta, gap, g, push};
     }
-  }
+  };
+  // The facet given first (last step's partner) makes the best distance small at once, so that
+  // the box test passes over most of the others without projecting the point on them.
+  const bool listed = first >= 0 && std::binary_search(candidates.begin(), candidates.end(), first);
+  if (listed) consider(first);
+  for (const std::int32_t f : candidates)
+    if (!listed || f != first) consider(f);
   return best;
 }
-
 }  // namespace abut

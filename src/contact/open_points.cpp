@@ -15,27 +15,26 @@ bool ContactInterface::skips_open_points() const {
 }
 
 void ContactInterface::update_near_facets() {
-  for (Pass& pass : passes_) {
-    const std::size_t facets = sides_[pass.target].surface.size();
-    std::vector<std::uint8_t> near(facets, 0);
-    for (const std::int32_t f : pass.candidates.facets) near[static_cast<std::size_t>(f)] = 1;
-    pass.near_facets.clear();
-    for (std::size_t f = 0; f < facets; ++f)
-      if (near[f]) pass.near_facets.push_back(static_cast<std::int32_t>(f));
-    pass.bands.resize(facets);
+  for (Side& side : sides_) {
+    std::vector<std::uint8_t> near(side.surface.size(), 0);
+    for (const Pass& pass : passes_)
+      if (&sides_[pass.target] == &side)
+        for (const std::int32_t f : pass.candidates.facets) near[static_cast<std::size_t>(f)] = 1;
+    side.near_facets.clear();
+    for (std::size_t f = 0; f < near.size(); ++f)
+      if (near[f]) side.near_facets.push_back(static_cast<std::int32_t>(f));
+    side.bands.resize(near.size());
   }
 }
 
 void ContactInterface::update_bands(const ContactInput& in) {
-  if (!skips_open_points()) return;
-  for (Pass& pass : passes_) {
-    const Side& target = sides_[pass.target];
-    const auto n = static_cast<std::int64_t>(pass.near_facets.size());
+  for (Side& side : sides_) {
+    const auto n = static_cast<std::int64_t>(side.near_facets.size());
 #pragma omp parallel for schedule(static) if (n >= kParallelMinimum / 4)
     for (std::int64_t k = 0; k < n; ++k) {
-      const std::int32_t f = pass.near_facets[static_cast<std::size_t>(k)];
-      pass.bands[static_cast<std::size_t>(f)] =
-          facet_band(quad_corners(target.surface.facets[f], in.x, in.y, in.z));
+      const std::int32_t f = side.near_facets[static_cast<std::size_t>(k)];
+      side.bands[static_cast<std::size_t>(f)] =
+          facet_band(quad_corners(side.surface.facets[f], in.x, in.y, in.z));
     }
   }
 }
@@ -65,7 +64,7 @@ bool ContactInterface::surely_open(const Pass& pass, std::size_t p, const Contac
     const std::int32_t f = pass.candidates.facets[k];
     if (!target.active[f]) continue;
     const PairReach r = pair_reach(facets, f, rules);
-    if (!outside_penetration_zone(pass.bands[static_cast<std::size_t>(f)], x, r.gap, r.below,
+    if (!outside_penetration_zone(target.bands[static_cast<std::size_t>(f)], x, r.gap, r.below,
                                   r.reach))
       return false;
   }

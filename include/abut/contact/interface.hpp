@@ -171,6 +171,10 @@ class ContactInterface {
     double max_point_depth = 0.0;
     double max_km = 0.0;    // stiffest main segment (stable-step bound)
     double max_pfac = 0.0;  // stiffest facet penalty (stable-step bound)
+    // Derived, not archived (open_points.cpp): the facets that are some point's candidate at the
+    // last build, and their bands (boxes, mean planes) of this step, indexed by facet.
+    std::vector<std::int32_t> near_facets;
+    std::vector<FacetBand> bands;
     // Everything but the surface (fixed); erosion adds points and switches facets.
     void archive(StateArchive& a) {
       a.values(sharp, free_edges, off, active, depth, facet_gap, facet_min_edge, node_area,
@@ -212,10 +216,6 @@ class ContactInterface {
     // the search distance too) and the conductance h A of the point [power / temperature].
     std::vector<std::int32_t> heat_facet;
     std::vector<double> heat_xi, heat_eta, heat_conductance;
-    // Derived, not archived: the target facets that are some point's candidate at the last
-    // build, and their bands of this step (indexed by facet; open_points.cpp).
-    std::vector<std::int32_t> near_facets;
-    std::vector<FacetBand> bands;
     void archive(StateArchive& a) {
       a.values(own, target, weight, grid, candidates, qx, qy, qz, state, sliding, adhered,
                approach_omega2, offset, shift, htx, hty, htz, tie_facet, tie_xi, tie_eta, hit,
@@ -254,10 +254,11 @@ class ContactInterface {
   void update_near_bound();  // near_omega2_ from the candidates of the last build
   bool needs_rebuild(const ContactInput& in) const;
   PointFrame frame(const Side& side, std::size_t p, const ContactInput& in) const;
-  // The narrow phase's view of a side's facets with a detection depth per facet, and its rules for
+  // The narrow phase's view of a side's facets with a detection depth per facet (with their
+  // bands of this step when `banded`: only for candidates of the last build), and its rules for
   // point p (enforcement.cpp).
   TargetFacets target_facets(const Side& target, std::span<const double> depth,
-                             const ContactInput& in) const;
+                             const ContactInput& in, bool banded = false) const;
   PartnerRules partner_rules(const Side& own, std::size_t p) const;
   // The partner among the broad-phase candidates; failing that, near `previous` (last step's
   // partner, or -1).
@@ -267,8 +268,9 @@ class ContactInterface {
                 std::int32_t f) const;
   void evaluate_point(Pass& pass, std::size_t p, const ContactInput& in);
   // Open points (open_points.cpp): whether this contact may skip them at all, the bands of the
-  // facets near some point (after each build: which facets; at each step: their bands), and
-  // whether the full evaluation of point p would surely find it open and change nothing.
+  // facets near some point (after each build: which facets; at each step: their bands, which the
+  // narrow phase's box test uses too), and whether the full evaluation of point p would surely
+  // find it open and change nothing.
   bool skips_open_points() const;
   void update_near_facets();
   void update_bands(const ContactInput& in);
@@ -300,6 +302,7 @@ class ContactInterface {
   std::optional<EdgeContact> edges_;  // edge-to-edge contact (EdgeSettings)
   // Contact points per side as built (erosion adds more): what a restart file must match.
   std::vector<std::uint64_t> initial_points_;
+  bool bands_current_ = false;  // the sides' bands are of this step (while apply evaluates)
   // The largest approach_omega2 of the points with a candidate facet at the last build.
   double near_omega2_ = 0.0;
   std::vector<double> x0_, y0_, z0_;  // initial coordinates (Igap 2 only)

@@ -18,11 +18,14 @@
 //    the pair's gap, along the radial direction, at any overshoot; only its free border cuts off
 //    at edge_tolerance. Folds that sharpen as a shell crushes then stay continuous.
 // The closest accepted facet (distance less the pair's gap) is the partner.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
 #include <span>
 
+#include "abut/contact/gap.hpp"
+#include "abut/contact/penetration_zone.hpp"
 #include "abut/contact/quad.hpp"
 
 namespace abut {
@@ -38,6 +41,9 @@ struct TargetFacets {
   std::span<const double> gap;               // g_m, capped (gap.hpp)
   std::span<const double> min_edge;          // g_m_l: its shortest edge
   std::span<const double> x, y, z;           // current nodal coordinates
+  // Per facet, this step's box (penetration_zone.hpp), for the facets that may be asked for; empty:
+  // the boxes come from the corners.
+  std::span<const FacetBand> bands = {};
 };
 
 struct PartnerRules {
@@ -68,12 +74,21 @@ struct Partner {
 struct PairReach {
   double gap = 0.0, below = 0.0, reach = 0.0;
 };
-PairReach pair_reach(const TargetFacets& target, std::int32_t f, const PartnerRules& rules);
+inline PairReach pair_reach(const TargetFacets& target, std::int32_t f, const PartnerRules& rules) {
+  PairReach r;
+  r.below = std::max(target.depth[f], rules.point_depth);
+  r.gap = pair_gap(rules.point_gap, target.gap[f], rules.point_min_edge, target.min_edge[f],
+                   rules.mesh_fraction);
+  r.reach = std::max({r.below, rules.depth_above, rules.edge_tolerance}) + r.gap;
+  return r;
+}
 
 // `own_nodes`: the nodes of the point's facet (a node-to-surface point: its node four times);
-// `normal`: the point's outward normal, or zero for a bare node.
+// `normal`: the point's outward normal, or zero for a bare node. `candidates` in ascending facet
+// order; `first`, when among them, is looked at first (last step's partner: for speed only, the
+// result is the same).
 Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> candidates,
                      const std::array<std::int32_t, 4>& own_nodes, const Vec3& x,
-                     const Vec3& normal, const PartnerRules& rules);
+                     const Vec3& normal, const PartnerRules& rules, std::int32_t first = -1);
 
 }  // namespace abut
