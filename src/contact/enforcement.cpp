@@ -167,11 +167,14 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   // Most points have no candidate and no partner to keep: nothing to evaluate (the outcome of the
   // full path below when no partner is found).
   // A point without a partner forgets its friction history, initial offset and adhesive bond.
+  // Written only when not yet clear: most points stay without a partner step after step, and a
+  // store per field and point would cost more than the load.
   auto lose_partner = [&pass, p] {
-    pass.htx[p] = pass.hty[p] = pass.htz[p] = 0.0;
-    pass.sliding[p] = 0;
-    pass.offset[p] = 0.0;
-    pass.adhered[p] = 0;
+    if (pass.htx[p] != 0.0 || pass.hty[p] != 0.0 || pass.htz[p] != 0.0)
+      pass.htx[p] = pass.hty[p] = pass.htz[p] = 0.0;
+    if (pass.sliding[p] != 0) pass.sliding[p] = 0;
+    if (pass.offset[p] != 0.0) pass.offset[p] = 0.0;
+    if (pass.adhered[p] != 0) pass.adhered[p] = 0;
   };
   if (last_partner < 0 && pass.state[p] != kTied &&
       pass.candidates.offsets[p] == pass.candidates.offsets[p + 1]) {
