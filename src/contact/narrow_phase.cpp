@@ -10,6 +10,7 @@ namespace abut {
 namespace {
 
 constexpr double kEdgeRoundOff = 1e-9;
+constexpr double kFacingRoundOff = 1e-9;
 
 bool share_a_node(const std::array<std::int32_t, 4>& a, const std::array<std::int32_t, 4>& b) {
   for (auto i : a)
@@ -62,6 +63,17 @@ Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> c
     if (box_distance2 > reach * reach || closer < 0.0 || box_distance2 > closer * closer) return;
     if (share_a_node(own_nodes, nodes)) return;
     if (!rules.x0.empty() && initially_within(rules, nodes, 2.0 * g)) return;
+    // The facing test below, decided before the projection where the band shows that every local
+    // normal of the facet faces the same way as the point (its own surface further along, in self
+    // contact): |N - n| <= sqrt(2 (1 - cos theta)) for local normals N within theta of the mean
+    // normal n (penetration_zone.hpp).
+    if (banded && has_normal && target.bands[f].usable) {
+      const FacetBand& band = target.bands[f];
+      const double tilt = band.tilt * band.tilt;
+      const double spread = std::sqrt(2.0 * (1.0 - std::sqrt(1.0 - tilt))) + kFacingRoundOff;
+      const double facing = dot(n_p, band.normal);
+      if (rules.from_behind ? facing < -spread : facing > spread) return;
+    }
     if (banded) gather();
     const QuadProjection q = project_onto_quad(c, x_p);
     if (target.twin[f] >= 0 && q.gap < 0.0) return;  // the other side of the shell
