@@ -47,28 +47,44 @@ Vec3 turn(const Vec3& v, const Vec3& k, double t) {
   return v * std::cos(t) + cross(k, v) * std::sin(t) + k * (dot(k, v) * (1.0 - std::cos(t)));
 }
 
+// A facet of size 0.5 to 1.5, its corners moved by up to `warp` of its size, turned at random,
+// with random depth, gaps, sharp edges, edge tolerance and smooth-edge reach.
+struct Case {
+  double size = 0.0;
+  QuadCorners corners;
+  OneFacet facet;
+  PartnerRules rules;
+};
+Case random_case(std::mt19937& rng, double warp) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Case k;
+  k.size = 0.5 + u(rng);
+  const double size = k.size;
+  QuadCorners& c = k.corners;
+  c = {Vec3{0, 0, 0}, Vec3{size, 0, 0}, Vec3{size, size, 0}, Vec3{0, size, 0}};
+  for (auto& corner : c) corner = corner + random_in_ball(rng, warp * size);
+  const Vec3 axis = normalized(random_in_ball(rng, 1.0) + Vec3{0, 0, 1e-3});
+  const double angle = u(rng) * std::numbers::pi;
+  for (auto& corner : c) corner = turn(corner, axis, angle);
+  k.facet.set(c);
+  k.facet.depth[0] = size * (0.1 + 0.6 * u(rng));
+  k.facet.gap[0] = u(rng) < 0.5 ? 0.0 : 0.05 * size * u(rng);
+  k.facet.sharp[0] = u(rng) < 0.5 ? 0 : 0xF;
+  k.rules.point_gap = u(rng) < 0.5 ? 0.0 : 0.05 * size * u(rng);
+  k.rules.edge_tolerance = 0.1 * size * u(rng);
+  k.rules.smooth_reach = std::tan(1.2 * u(rng));
+  return k;
+}
+
 TEST(PenetrationZone, APointOutsideIsNeverAPenetratingPartner) {
   std::mt19937 rng(2026);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
   int outside = 0, inside = 0;
   for (int trial = 0; trial < 200000; ++trial) {
-    // A facet of size 0.5 to 1.5, its corners moved by up to `warp` of its size, turned at random.
-    const double size = 0.5 + u(rng);
-    const double warp = trial % 2 ? 0.02 : 0.2;
-    QuadCorners c = {Vec3{0, 0, 0}, Vec3{size, 0, 0}, Vec3{size, size, 0}, Vec3{0, size, 0}};
-    for (auto& corner : c) corner = corner + random_in_ball(rng, warp * size);
-    const Vec3 axis = normalized(random_in_ball(rng, 1.0) + Vec3{0, 0, 1e-3});
-    const double angle = u(rng) * std::numbers::pi;
-    for (auto& corner : c) corner = turn(corner, axis, angle);
-    OneFacet facet;
-    facet.set(c);
-    facet.depth[0] = size * (0.1 + 0.6 * u(rng));
-    facet.gap[0] = u(rng) < 0.5 ? 0.0 : 0.05 * size * u(rng);
-    facet.sharp[0] = u(rng) < 0.5 ? 0 : 0xF;
-    PartnerRules rules;
-    rules.point_gap = u(rng) < 0.5 ? 0.0 : 0.05 * size * u(rng);
-    rules.edge_tolerance = 0.1 * size * u(rng);
-    rules.smooth_reach = std::tan(1.2 * u(rng));
+    const Case k = random_case(rng, trial % 2 ? 0.02 : 0.2);
+    const QuadCorners& c = k.corners;
+    const OneFacet& facet = k.facet;
+    const PartnerRules& rules = k.rules;
+    const double size = k.size;
     const PairReach pr = pair_reach(facet.view(), 0, rules);
     // A point anywhere near: above, below, beside, within reach or not.
     const Vec3 centre = (c[0] + c[1] + c[2] + c[3]) * 0.25;
@@ -89,18 +105,14 @@ TEST(PenetrationZone, APointOutsideIsNeverAPenetratingPartner) {
 // same partner as without them, for random facets, points, point normals and contact senses.
 TEST(PenetrationZone, BandsLeaveTheNarrowPhaseUnchanged) {
   std::mt19937 rng(11);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
   int found = 0, facing_away = 0;
   for (int trial = 0; trial < 100000; ++trial) {
-    const double size = 0.5 + u(rng);
-    QuadCorners c = {Vec3{0, 0, 0}, Vec3{size, 0, 0}, Vec3{size, size, 0}, Vec3{0, size, 0}};
-    for (auto& corner : c) corner = corner + random_in_ball(rng, (trial % 2 ? 0.02 : 0.2) * size);
-    OneFacet facet;
-    facet.set(c);
-    facet.depth[0] = size * (0.1 + 0.6 * u(rng));
-    PartnerRules rules;
-    rules.edge_tolerance = 0.1 * size * u(rng);
-    rules.from_behind = trial % 3 == 0;
+    Case k = random_case(rng, trial % 2 ? 0.02 : 0.2);
+    const QuadCorners& c = k.corners;
+    const OneFacet& facet = k.facet;
+    k.rules.from_behind = trial % 3 == 0;
+    const PartnerRules& rules = k.rules;
+    const double size = k.size;
     const Vec3 x = (c[0] + c[1] + c[2] + c[3]) * 0.25 + random_in_ball(rng, 0.8 * size);
     // Point normals near the facet's own (facing away from it) and anywhere.
     const Vec3 own = normalized(cross(c[2] - c[0], c[3] - c[1]));
