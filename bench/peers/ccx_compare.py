@@ -27,6 +27,7 @@ Usage: python3 bench/peers/ccx_compare.py [--nx 100 --ny 4] [--keep DIR]
 Environment: ABUT_EXE, else the abut of ABUT_BUILD_DIR or of ./build.
 """
 import argparse
+import json
 import math
 import os
 import re
@@ -37,15 +38,12 @@ import tempfile
 import time
 from pathlib import Path
 
+# abut's executable, the .dat number format and the one-thread environment, as the conformance
+# tests find and use them (tests/conformance/test_ccx_conformance.py).
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tests" / "conformance"))
+from test_ccx_conformance import find_abut, single_thread_env, to_float  # noqa: E402
+
 E, RHO = 210.0e9, 7850.0
-
-
-def find_abut():
-    exe = os.environ.get("ABUT_EXE")
-    if exe:
-        return exe
-    build = os.environ.get("ABUT_BUILD_DIR") or str(Path(__file__).resolve().parents[2] / "build")
-    return str(Path(build) / "apps" / "abut" / "abut")
 
 
 # ---- the model --------------------------------------------------------------------------------
@@ -213,7 +211,6 @@ def run_abut(abut, m, work, samples):
     d.mkdir(parents=True, exist_ok=True)
     (d / "bars.k").write_text(m.abut_deck(min(m.t_end / samples, m.tc / 50)))
     wall, log = run([abut, "run", "bars.k", "--threads", "1", "-q"], d)
-    import json
     s = json.loads((d / "bars_out" / "summary.json").read_text())
     parts = read_csv(d / "bars_out" / "parts.csv")
     hist = {1: [], 2: []}
@@ -226,13 +223,6 @@ def run_abut(abut, m, work, samples):
 
 
 HEADER = re.compile(r"velocities \(vx,vy,vz\) for set (\S+) and time\s+(\S+)")
-
-
-def to_float(tok):
-    """A .dat number; Fortran drops the E of a three-digit exponent: 0.323044-153."""
-    tok = tok.replace("D", "E").replace("d", "E")
-    m = re.match(r"^([-+]?\d*\.\d*)([-+]\d{3})$", tok)
-    return float(m.group(1) + "E" + m.group(2) if m else tok)
 
 
 def parse_ccx_dat(text):
@@ -253,8 +243,7 @@ def parse_ccx_dat(text):
 def run_ccx(m, work, samples, timing):
     d = work / ("ccx_timing" if timing else "ccx_accuracy")
     d.mkdir(parents=True, exist_ok=True)
-    env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1",
-               NUMBER_OF_PROCESSORS="1")
+    env = single_thread_env()
     # ccx picks its own increment; print every `freq` increments, from a first guess of it.
     h = min(m.L / m.nx, m.a / m.ny)
     guess = 0.15 * h / m.c
