@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "abut/material/point_law.hpp"
 
@@ -25,34 +26,69 @@ double FlowStress::operator()(double plastic_strain, double plastic_strain_rate)
     v.epsp = plastic_strain;
     return thermal_factor_ * table_->value(p.flow_curve, plastic_strain, v);
   }
-  // Johnson & Cook (1983): the rate factor only strengthens, from the reference rate on.
-  const double hardening = p.a + (plastic_strain > 0.0 ? p.b * std::pow(plastic_strain, p.n) : 0.0);
+  // Johnson & Cook (1983): the rate factor only strengthens, from the reference rate on. No pow
+  // without hardening (B = 0) and no log without a rate term (C = 0): the same values, cheaper.
+  const double hardening =
+      p.a + (plastic_strain > 0.0 && p.b != 0.0 ? p.b * std::pow(plastic_strain, p.n) : 0.0);
   const double ratio = plastic_strain_rate / p.rate0;
-  return thermal_factor_ * hardening * (ratio > 1.0 ? 1.0 + p.c * std::log(ratio) : 1.0);
+  return thermal_factor_ * hardening *
+         (ratio > 1.0 && p.c != 0.0 ? 1.0 + p.c * std::log(ratio) : 1.0);
+}
+
+FlowPoint FlowStress::along_step(double plastic_strain, double dp, double dt) const {
+  const double strain = plastic_strain + dp;
+  const double rate = dt > 0.0 ? dp / dt : 0.0;
+  const MetalParams& p = *p_;
+  if (!p.johnson_cook) return {(*this)(strain, rate), 0.0, false};
+  // sigma_y = T H R with H = A + B eps^n, R = 1 + C ln(rate / rate0) above the reference rate:
+  // d sigma_y / d dp = T (H' R + H R'), H' = n B eps^n / eps, R' = C / dp (rate = dp / dt).
+  // At eps = 0, H' is unbounded for n < 1; the caller's bracket takes over from Newton there.
+  double power = 0.0, hardening_slope = 0.0;
+  if (p.b != 0.0) {
+    if (strain > 0.0) {
+      power = p.b * std::pow(strain, p.n);
+      hardening_slope = p.n * power / strain;
+    } else {
+      hardening_slope =
+          p.n < 1.0 ? std::numeric_limits<double>::infinity() : (p.n == 1.0 ? p.b : 0.0);
+    }
+  }
+  const double hardening = p.a + power;
+  const double ratio = rate / p.rate0;
+  const bool rate_hardens = ratio > 1.0 && p.c != 0.0;
+  const double rate_factor = rate_hardens ? 1.0 + p.c * std::log(ratio) : 1.0;
+  const double rate_slope = rate_hardens ? p.c / dp : 0.0;
+  return {thermal_factor_ * hardening * rate_factor,
+          thermal_factor_ * (hardening_slope * rate_factor + hardening * rate_slope), true};
 }
 
 PlasticUpdate radial_return(const Sym3& trial, double shear_modulus, double plastic_strain,
                             double dt, const FlowStress& flow) {
   const Sym3 s = deviator(trial);
   const double q = std::sqrt(1.5 * double_dot(s, s));
-  const auto yield = [&](double dp) { return flow(plastic_strain + dp, dt > 0.0 ? dp / dt : 0.0); };
-  if (q <= yield(0.0)) return {trial, 0.0};
+  FlowPoint y = flow.along_step(plastic_strain, 0.0, dt);
+  if (q <= y.stress) return {trial, 0.0};
   const double g3 = 3.0 * shear_modulus;
   // f(dp) = q - 3 G dp - sigma_y(dp): f(0) > 0, f(q / 3G) = -sigma_y < 0 (sigma_y >= 0).
-  auto f = [&](double dp) { return q - g3 * dp - yield(dp); };
+  // Newton with f' = -3G - sigma_y', sigma_y' in closed form (Johnson-Cook) or by a forward
+  // difference (a curve); bisection when a step leaves the bracket.
   double lo = 0.0, hi = q / g3, dp = 0.0;
   for (int iteration = 0; iteration < 60; ++iteration) {
-    const double value = f(dp);
+    const double value = q - g3 * dp - y.stress;
     if (value > 0.0)
       lo = dp;
     else
       hi = dp;
     if (std::abs(value) <= 1e-12 * q || hi - lo <= 1e-15 * (hi + lo)) break;
-    const double h = std::max(1e-8 * (plastic_strain + dp), 1e-14);
-    const double slope = (f(dp + h) - value) / h;  // < 0: -3G - H
+    double slope = -g3 - y.slope;  // < 0: -3G - H
+    if (!y.has_slope) {
+      const double h = std::max(1e-8 * (plastic_strain + dp), 1e-14);
+      slope = (q - g3 * (dp + h) - flow.along_step(plastic_strain, dp + h, dt).stress - value) / h;
+    }
     double next = slope < 0.0 ? dp - value / slope : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     dp = next;
+    y = flow.along_step(plastic_strain, dp, dt);
   }
   const double scale = (q - g3 * dp) / q;
   const double pressure = trace(trial) / 3.0;

@@ -81,6 +81,52 @@ TEST(FlowStress, JohnsonCookRateFactorFromTheReferenceRateOn) {
   EXPECT_NEAR(flow(0.04, 100.0), (100e6 + 200e6 * 0.2) * (1.0 + 0.1 * std::log(100.0)), 1e-6);
 }
 
+// The slope the radial return's Newton steps use: d sigma_y / d dp of sigma_y(epsp + dp, dp / dt)
+// against a central difference of the flow stress itself, for power laws below, at and above
+// n = 1, with and without the rate term, and thermally softened.
+TEST(FlowStress, JohnsonCookSlopeAlongAStepIsTheDerivativeOfTheFlowStress) {
+  struct Case {
+    double a, b, n, c, epsp, dp, dt;
+  };
+  const Case cases[] = {{90e6, 292e6, 0.31, 0.025, 0.05, 1e-4, 1e-7},
+                        {300e6, 1e9, 1.0, 0.0, 0.01, 2e-3, 0.0},
+                        {200e6, 500e6, 1.7, 0.1, 0.2, 5e-5, 1e-6},
+                        {300e6, 0.0, 0.5, 0.0, 0.3, 1e-3, 1e-7},
+                        {100e6, 50e6, 0.2, 0.05, 0.0, 1e-3, 1e-5}};
+  for (const Case& k : cases) {
+    MetalParams p = johnson_cook(k.a, k.b, k.n, k.c);
+    p.softening_m = 1.0, p.room_temperature = 293.0, p.melting_temperature = 1793.0;
+    const FlowStress flow = FlowStress(p, nullptr).at_temperature(593.0);  // T* = 0.2
+    const auto sigma = [&](double dp) { return flow(k.epsp + dp, k.dt > 0.0 ? dp / k.dt : 0.0); };
+    const FlowPoint y = flow.along_step(k.epsp, k.dp, k.dt);
+    ASSERT_TRUE(y.has_slope);
+    EXPECT_EQ(y.stress, sigma(k.dp));
+    const double h = 1e-6 * k.dp;
+    const double difference = (sigma(k.dp + h) - sigma(k.dp - h)) / (2.0 * h);
+    EXPECT_NEAR(y.slope, difference, 1e-6 * std::abs(difference) + 1e-9 * k.a) << k.n;
+  }
+  // A curve has no closed-form slope: the return differentiates it.
+  MetalParams curve;
+  FunctionTable table;
+  table.add_curve(1, Curve{{0.0, 1.0}, {250e6, 450e6}}, SourceLocation{});
+  table.resolve();
+  curve.flow_curve = table.find(1, SourceLocation{});
+  EXPECT_FALSE(FlowStress(curve, &table).along_step(0.1, 0.0, 0.0).has_slope);
+}
+
+// Elastic-perfectly plastic (B = 0): sigma_y = A after the return, any trial (the closed form of
+// the return is dp = (q - A) / 3G).
+TEST(RadialReturn, PerfectlyPlasticReturnsOntoTheYieldStress) {
+  const MetalParams p = johnson_cook(300e6, 0.0, 0.5);
+  const FlowStress flow(p, nullptr);
+  const Sym3 trial{{700e6, -100e6, 20e6, 150e6, -40e6, 60e6}};
+  const Sym3 s = deviator(trial);
+  const double q = std::sqrt(1.5 * double_dot(s, s));
+  const PlasticUpdate u = radial_return(trial, kG, 0.02, 1e-7, flow);
+  EXPECT_NEAR(u.plastic_strain_increment, (q - 300e6) / (3.0 * kG), 1e-12 * q / kG);
+  EXPECT_NEAR(von_mises(u.stress), 300e6, 1e-9 * 300e6);
+}
+
 // *MAT_METAL's flow curve from a function table: a *FUNCTION of epsp, and a *CURVE.
 TEST(FlowStress, MetalCurveFromTheFunctionTable) {
   FunctionTable table;

@@ -21,12 +21,24 @@ double thermal_softening(const MetalParams& params, double temperature);
 // T* = (T - T0) / (Tm - T0) clamped to [0, 1]; 0 without a melting temperature above T0.
 double homologous_temperature(const MetalParams& params, double temperature);
 
+// The flow stress at a plastic strain and rate, and its derivative along a step's increment dp
+// (the strain epsp + dp at the rate dp / dt): d sigma_y / d dp = d/d epsp + (1 / dt) d/d rate.
+// `has_slope` false: a curve, whose slope the caller takes by a difference.
+struct FlowPoint {
+  double stress = 0.0;
+  double slope = 0.0;
+  bool has_slope = false;
+};
+
 // sigma_y(epsp, epsp_rate) of a metal; the table evaluates *MAT_METAL's curve. The same factor
 // 1 - T*^m multiplies *MAT_METAL's curve and Johnson-Cook's product (at_temperature).
 class FlowStress {
  public:
   FlowStress(const MetalParams& params, const FunctionTable* table) : p_(&params), table_(table) {}
   double operator()(double plastic_strain, double plastic_strain_rate) const;
+  // At epsp + dp, flowing at dp / dt (rate 0 for dt = 0); Johnson-Cook with its slope in closed
+  // form.
+  FlowPoint along_step(double plastic_strain, double dp, double dt) const;
   // The flow stress of the same metal at a temperature (softened when the metal softens).
   FlowStress at_temperature(double temperature) const {
     FlowStress f = *this;
