@@ -63,6 +63,10 @@ Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> c
     if (box_distance2 > reach * reach || closer < 0.0 || box_distance2 > closer * closer) return;
     if (share_a_node(own_nodes, nodes)) return;
     if (!rules.x0.empty() && initially_within(rules, nodes, 2.0 * g)) return;
+    // The far side of a shell, decided before the projection where the band shows it
+    // (penetration_zone.hpp); the test after the projection decides the others alike.
+    const bool shell = target.twin[f] >= 0;
+    if (banded && shell && surely_behind(target.bands[f], x_p)) return;
     // The facing test below, decided before the projection where the band shows that every local
     // normal of the facet faces the same way as the point (its own surface further along, in self
     // contact): |N - n| <= sqrt(2 (1 - cos theta)) for local normals N within theta of the mean
@@ -76,8 +80,7 @@ Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> c
     }
     if (banded) gather();
     const QuadProjection q = project_onto_quad(c, x_p);
-    if (target.twin[f] >= 0 && q.gap < 0.0) return;  // the other side of the shell
-    const bool shell = target.twin[f] >= 0;
+    if (shell && q.gap < 0.0) return;  // the other side of the shell
     double gap = q.gap - g;
     Vec3 push = q.normal;
     if (has_normal) {

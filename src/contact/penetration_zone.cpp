@@ -12,7 +12,6 @@ FacetBand facet_band(const QuadCorners& c) {
     band.lo[i] = std::min({c[0][i], c[1][i], c[2][i], c[3][i]});
     band.hi[i] = std::max({c[0][i], c[1][i], c[2][i], c[3][i]});
   }
-  band.diag = norm(band.hi - band.lo);
   const Vec3 a = (c[1] - c[0] + c[2] - c[3]) * 0.25;
   const Vec3 b = (c[3] - c[0] + c[2] - c[1]) * 0.25;
   const Vec3 h = (c[0] - c[1] + c[2] - c[3]) * 0.25;
@@ -24,17 +23,29 @@ FacetBand facet_band(const QuadCorners& c) {
   band.tilt = std::max(norm(u + v), norm(u - v)) / area;
   band.normal = axb / area;
   band.centre = (c[0] + c[1] + c[2] + c[3]) * 0.25;
+  for (const Vec3& corner : c) band.radius = std::max(band.radius, norm(corner - band.centre));
   band.warp = std::abs(dot(h, band.normal));
   band.usable = band.tilt <= 0.5;
   return band;
 }
 
+namespace {
+
+// sigma of penetration_zone.hpp plus a margin: the narrow phase's gap and the height are rounded
+// differently (both from coordinates of the facet's magnitude), so a point that touches exactly
+// (a node on a matched mesh) stays with the narrow phase.
+double band_slack(const FacetBand& band, const Vec3& x) {
+  constexpr double kRoundOff = 1e-9, kCoordinateRoundOff = 1e-13;
+  const double rho = norm(x - band.centre) + band.radius;
+  const double magnitude =
+      std::abs(band.centre.x) + std::abs(band.centre.y) + std::abs(band.centre.z);
+  return band.warp + rho * band.tilt + kRoundOff * rho + kCoordinateRoundOff * magnitude;
+}
+
+}  // namespace
+
 bool outside_penetration_zone(const FacetBand& band, const Vec3& x, double g, double below,
                               double reach) {
-  constexpr double kSqrt3 = 1.7320508075688772;
-  // The narrow phase's gap and this height are rounded differently: a point that touches exactly
-  // (a node on a matched mesh) stays with the narrow phase.
-  constexpr double kRoundOff = 1e-9;
   double box2 = 0.0;  // as the narrow phase computes it, so that (a) decides alike
   for (int i = 0; i < 3; ++i) {
     const double out = std::max({band.lo[i] - x[i], x[i] - band.hi[i], 0.0});
@@ -43,9 +54,12 @@ bool outside_penetration_zone(const FacetBand& band, const Vec3& x, double g, do
   if (box2 > reach * reach) return true;  // (a)
   if (!band.usable) return false;
   const double s = dot(x - band.centre, band.normal);
-  const double rho = band.diag + 2.0 * kSqrt3 * reach;
-  const double sigma = band.warp + rho * band.tilt + kRoundOff * rho;
+  const double sigma = band_slack(band, x);
   return s >= g + sigma || s < std::min(g - below, -g) - sigma;  // (b)
+}
+
+bool surely_behind(const FacetBand& band, const Vec3& x) {
+  return band.usable && dot(x - band.centre, band.normal) < -band_slack(band, x);
 }
 
 }  // namespace abut

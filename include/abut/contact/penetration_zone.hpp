@@ -12,8 +12,8 @@
 // within an angle theta of n, sin theta <= eps = max(|u + v|, |u - v|) / |a x b| with u = a x h,
 // v = h x b (the deviation xi u + eta v is largest at a corner). With
 // x - q = q.gap N + t (N the unit normal at q, t in its tangent plane, |t| <= |x - q| <= rho =
-// diag + 2 sqrt(3) reach when (a) holds: x and q lie in the box grown by reach), the height of x
-// above the mean plane, s = (x - x0) . n, then satisfies
+// |x - x0| + r, r the largest distance from x0 to a corner: the bilinear facet lies in the convex
+// hull of its corners), the height of x above the mean plane, s = (x - x0) . n, then satisfies
 //   min(g - below, -g) - sigma <= s < g + sigma,   sigma = |h . n| + rho eps,
 // when (b) holds (for eps <= 1/2, so that N . n > 0 and q.gap cos theta keeps the sign and
 // bound of q.gap). A point outside that band, or beyond the reach, cannot penetrate the facet.
@@ -28,7 +28,7 @@ struct FacetBand {
   Vec3 centre, normal;  // x0 and n
   double warp = 0.0;    // |h . n|
   double tilt = 0.0;    // eps
-  double diag = 0.0;    // the box's diagonal
+  double radius = 0.0;  // r: the largest distance from the centre to a corner
   bool usable = false;  // a nonzero area and eps <= 1/2: the band holds
 };
 FacetBand facet_band(const QuadCorners& c);
@@ -41,5 +41,10 @@ inline bool outside_penetration_zone(const QuadCorners& c, const Vec3& x, double
                                      double reach) {
   return outside_penetration_zone(facet_band(c), x, g, below, reach);
 }
+
+// True when every closest point q of the facet to x has q.gap < 0 (usable bands only): from the
+// same decomposition, s >= q.gap N . n - sigma, so q.gap >= 0 needs s >= -sigma. A shell's side
+// is no partner of a point behind it.
+bool surely_behind(const FacetBand& band, const Vec3& x);
 
 }  // namespace abut
