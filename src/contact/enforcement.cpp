@@ -160,7 +160,7 @@ double ContactInterface::spring(const Side& own, std::size_t p, double area, con
 void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactInput& in) {
   const std::int32_t last_partner = pass.hit[p] ? pass.hit_facet[p] : -1;
   pass.hit[p] = 0;
-  pass.heat_facet[p] = -1;
+  if (!pass.heat_facet.empty()) pass.heat_facet[p] = -1;
   const Side& own = sides_[pass.own];
   const Side& target = sides_[pass.target];
   if (pass.state[p] == kReleased) return;
@@ -304,7 +304,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     if (tied()) return;
     pass.state[p] = kUntied;
   }
-  const double penetration = -gap - pass.offset[p] - pass.shift[p];
+  const double penetration = -gap - pass.offset[p] - pass.shift_at(p);
   // Outside: no force, unless the contact is bilateral or the point is adhered and still within
   // the adhesive zone (Radioss IVIS2 = -1: the bond breaks at its border).
   bool adhesive = false;

@@ -53,7 +53,8 @@ std::vector<DeepStart> ContactInterface::deep_initial_points(const ContactInput&
           if (a == b) return false;
       return true;
     };
-    grid.query(pass.qx, pass.qy, pass.qz, candidates, apart);
+    const PointPositions q = point_positions(own, in);
+    grid.query(q.x, q.y, q.z, candidates, apart);
     const TargetFacets deep = target_facets(target, layer, in);
     for (std::size_t p = 0; p < own.point_facet.size(); ++p) {
       const PointFrame f = frame(own, p, in);

@@ -58,6 +58,25 @@ bool ContactInterface::needs_rebuild(const ContactInput& in) const {
   return moved2 > 0.25 * margin_ * margin_;
 }
 
+ContactInterface::PointPositions ContactInterface::point_positions(const Side& own,
+                                                                   const ContactInput& in) const {
+  const std::size_t n = own.point_facet.size();
+  PointPositions q{std::vector<double>(n), std::vector<double>(n), std::vector<double>(n)};
+#pragma omp parallel for schedule(static) if (n >= static_cast <std::size_t>(kParallelMinimum))
+  for (std::size_t p = 0; p < n; ++p) {
+    const std::int32_t node = own.point_node[p];
+    const Vec3 x =
+        node >= 0
+            ? Vec3{in.x[node], in.y[node], in.z[node]}
+            : quad_point(quad_corners(own.surface.facets[own.point_facet[p]], in.x, in.y, in.z),
+                         own.point_xi[p], own.point_eta[p]);
+    q.x[p] = x.x;
+    q.y[p] = x.y;
+    q.z[p] = x.z;
+  }
+  return q;
+}
+
 void ContactInterface::rebuild_broad_phase(const ContactInput& in) {
   const double above =
       std::max(settings_.adhesion ? settings_.adhesion->zone() : 0.0, settings_.edge_tolerance);
@@ -77,19 +96,7 @@ void ContactInterface::rebuild_broad_phase(const ContactInput& in) {
       }
     }
     pass.grid.build(boxes);
-    const std::size_t n = own.point_facet.size();
-#pragma omp parallel for schedule(static) if (n >= static_cast <std::size_t>(kParallelMinimum))
-    for (std::size_t p = 0; p < n; ++p) {
-      const std::int32_t node = own.point_node[p];
-      const Vec3 x =
-          node >= 0
-              ? Vec3{in.x[node], in.y[node], in.z[node]}
-              : quad_point(quad_corners(own.surface.facets[own.point_facet[p]], in.x, in.y, in.z),
-                           own.point_xi[p], own.point_eta[p]);
-      pass.qx[p] = x.x;
-      pass.qy[p] = x.y;
-      pass.qz[p] = x.z;
-    }
+    const PointPositions q = point_positions(own, in);
     // Facets that share a node with the point's own never touch it (narrow_phase.hpp): dropped
     // here once per build instead of at every step, so that in self contact the points on a
     // smooth surface have no candidate at all.
@@ -100,7 +107,7 @@ void ContactInterface::rebuild_broad_phase(const ContactInput& in) {
           if (a == b) return false;
       return true;
     };
-    pass.grid.query(pass.qx, pass.qy, pass.qz, pass.candidates, keep);
+    pass.grid.query(q.x, q.y, q.z, pass.candidates, keep);
   }
   rebuild_pending_ = false;
   update_near_bound();

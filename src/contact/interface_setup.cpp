@@ -359,18 +359,21 @@ void ContactInterface::build_passes() {
 }
 
 // Per-point history and result slots for n points; points added later (free nodes) start empty.
-void ContactInterface::size_pass(Pass& pass, std::size_t n) {
+void ContactInterface::size_pass(Pass& pass, std::size_t n) const {
   for (auto* v : {&pass.state, &pass.sliding, &pass.adhered, &pass.hit}) v->resize(n, 0);
-  pass.tie_facet.resize(n, -1);
   pass.hit_facet.resize(n, -1);
-  pass.heat_facet.resize(n, -1);
+  const bool ties = settings_.freeze || settings_.stick_stress.has_value();
+  pass.tie_facet.resize(ties ? n : 0, -1);
+  pass.tie_xi.resize(ties ? n : 0, 0.0);
+  pass.tie_eta.resize(ties ? n : 0, 0.0);
+  pass.shift.resize(settings_.clearance ? n : 0, 0.0);
+  const bool heat = settings_.thermal.any();
+  pass.heat_facet.resize(heat ? n : 0, -1);
+  for (auto* v : {&pass.heat_xi, &pass.heat_eta, &pass.heat_conductance}) v->resize(heat ? n : 0);
   for (auto* v : {&pass.offset,
-                  &pass.shift,
                   &pass.htx,
                   &pass.hty,
                   &pass.htz,
-                  &pass.tie_xi,
-                  &pass.tie_eta,
                   &pass.hit_xi,
                   &pass.hit_eta,
                   &pass.fx,
@@ -387,13 +390,7 @@ void ContactInterface::size_pass(Pass& pass, std::size_t n) {
                   &pass.penetration,
                   &pass.omega2,
                   &pass.pair_gap,
-                  &pass.heat_xi,
-                  &pass.heat_eta,
-                  &pass.heat_conductance,
-                  &pass.approach_omega2,
-                  &pass.qx,
-                  &pass.qy,
-                  &pass.qz})
+                  &pass.approach_omega2})
     v->resize(n, 0.0);
 }
 

@@ -46,7 +46,7 @@ void ContactInterface::update_bands(const ContactInput& in) {
 bool ContactInterface::surely_open(const Pass& pass, std::size_t p, const ContactInput& in) const {
   if (!skips_open_points()) return false;
   if (pass.htx[p] != 0.0 || pass.hty[p] != 0.0 || pass.htz[p] != 0.0 || pass.sliding[p] ||
-      pass.offset[p] != 0.0 || pass.shift[p] != 0.0 || pass.adhered[p])
+      pass.offset[p] != 0.0 || pass.shift_at(p) != 0.0 || pass.adhered[p])
     return false;
   const Side& own = sides_[pass.own];
   const Side& target = sides_[pass.target];

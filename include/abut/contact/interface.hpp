@@ -194,17 +194,17 @@ class ContactInterface {
     double weight = 1.0;  // 1/2 when both sides' points act (symmetric and self contact)
     BucketGrid grid;
     CandidateList candidates;
-    std::vector<double> qx, qy, qz;  // point positions for the broad-phase query
     // History per point.
     std::vector<std::uint8_t> state, sliding, adhered;
     // Per point: the bound on the square of its spring's frequency while it may touch (its
     // facet's springs on the facet's lightest node, 2 k / m_min; initial_state).
     std::vector<double> approach_omega2;
     std::vector<double> offset;           // initial penetration subtracted until separation
-    std::vector<double> shift;            // permanent gap shift (clearance)
+    std::vector<double> shift;            // permanent gap shift (clearance; else empty)
     std::vector<double> htx, hty, htz;    // tangential spring force (friction history)
-    std::vector<std::int32_t> tie_facet;  // tied contact: fixed partner
+    std::vector<std::int32_t> tie_facet;  // tied contact: fixed partner (ties only; else empty)
     std::vector<double> tie_xi, tie_eta;
+    double shift_at(std::size_t p) const { return shift.empty() ? 0.0 : shift[p]; }
     // Results of the current step, one slot per point.
     std::vector<std::uint8_t> hit;
     std::vector<std::int32_t> hit_facet;
@@ -214,14 +214,15 @@ class ContactInterface {
     std::vector<double> energy, damping_work, slip_work, penetration, omega2, pair_gap;
     // Thermal contact: the partner the point exchanges heat with (-1: none; open points within
     // the search distance too) and the conductance h A of the point [power / temperature].
+    // Empty when the contact exchanges no heat.
     std::vector<std::int32_t> heat_facet;
     std::vector<double> heat_xi, heat_eta, heat_conductance;
     void archive(StateArchive& a) {
-      a.values(own, target, weight, grid, candidates, qx, qy, qz, state, sliding, adhered,
-               approach_omega2, offset, shift, htx, hty, htz, tie_facet, tie_xi, tie_eta, hit,
-               hit_facet, hit_xi, hit_eta, fx, fy, fz, area, pressure, slip_speed, normal_force,
-               tangential_force, energy, damping_work, slip_work, penetration, omega2, pair_gap,
-               heat_facet, heat_xi, heat_eta, heat_conductance);
+      a.values(own, target, weight, grid, candidates, state, sliding, adhered, approach_omega2,
+               offset, shift, htx, hty, htz, tie_facet, tie_xi, tie_eta, hit, hit_facet, hit_xi,
+               hit_eta, fx, fy, fz, area, pressure, slip_speed, normal_force, tangential_force,
+               energy, damping_work, slip_work, penetration, omega2, pair_gap, heat_facet, heat_xi,
+               heat_eta, heat_conductance);
     }
   };
 
@@ -246,11 +247,17 @@ class ContactInterface {
   // facets); `share`: its part of the spring (integration points: of their facet's area).
   void init_point(Side& side, std::size_t p, const std::vector<std::uint8_t>& on_free_edge,
                   double share);
-  static void size_pass(Pass& pass, std::size_t n);
+  // Slots a contact without ties, clearance or heat never uses stay empty (memory, issue 12).
+  void size_pass(Pass& pass, std::size_t n) const;
   void build_parts();
   void build_passes();
   void build_edges(const ContactInput& in);  // edge_selection.cpp
   void rebuild_broad_phase(const ContactInput& in);
+  // Where the points of a side are now (the broad phase's query points).
+  struct PointPositions {
+    std::vector<double> x, y, z;
+  };
+  PointPositions point_positions(const Side& own, const ContactInput& in) const;
   void update_near_bound();  // near_omega2_ from the candidates of the last build
   bool needs_rebuild(const ContactInput& in) const;
   PointFrame frame(const Side& side, std::size_t p, const ContactInput& in) const;
