@@ -19,6 +19,37 @@ double thermal_softening(const MetalParams& p, double temperature) {
   return 1.0 - std::pow(homologous_temperature(p, temperature), p.softening_m);
 }
 
+namespace {
+
+// Johnson & Cook (1983): sigma_y = T H R with H = A + B eps^n and R = 1 + C ln(rate / rate0) from
+// the reference rate on (it only strengthens). No pow without hardening (B = 0) and no log
+// without a rate term (C = 0). Also H' = dH / d eps = n B eps^n / eps, unbounded at eps = 0 for
+// n < 1 (the return's bracket takes over from Newton there).
+struct JohnsonCook {
+  double hardening = 0.0, hardening_slope = 0.0, rate_factor = 1.0;
+  bool rate_hardens = false;
+};
+JohnsonCook johnson_cook(const MetalParams& p, double strain, double rate) {
+  JohnsonCook jc;
+  double power = 0.0;
+  if (p.b != 0.0) {
+    if (strain > 0.0) {
+      power = p.b * std::pow(strain, p.n);
+      jc.hardening_slope = p.n * power / strain;
+    } else {
+      jc.hardening_slope =
+          p.n < 1.0 ? std::numeric_limits<double>::infinity() : (p.n == 1.0 ? p.b : 0.0);
+    }
+  }
+  jc.hardening = p.a + power;
+  const double ratio = rate / p.rate0;
+  jc.rate_hardens = ratio > 1.0 && p.c != 0.0;
+  if (jc.rate_hardens) jc.rate_factor = 1.0 + p.c * std::log(ratio);
+  return jc;
+}
+
+}  // namespace
+
 double FlowStress::operator()(double plastic_strain, double plastic_strain_rate) const {
   const MetalParams& p = *p_;
   if (!p.johnson_cook) {
@@ -26,13 +57,8 @@ double FlowStress::operator()(double plastic_strain, double plastic_strain_rate)
     v.epsp = plastic_strain;
     return thermal_factor_ * table_->value(p.flow_curve, plastic_strain, v);
   }
-  // Johnson & Cook (1983): the rate factor only strengthens, from the reference rate on. No pow
-  // without hardening (B = 0) and no log without a rate term (C = 0): the same values, cheaper.
-  const double hardening =
-      p.a + (plastic_strain > 0.0 && p.b != 0.0 ? p.b * std::pow(plastic_strain, p.n) : 0.0);
-  const double ratio = plastic_strain_rate / p.rate0;
-  return thermal_factor_ * hardening *
-         (ratio > 1.0 && p.c != 0.0 ? 1.0 + p.c * std::log(ratio) : 1.0);
+  const JohnsonCook jc = johnson_cook(p, plastic_strain, plastic_strain_rate);
+  return thermal_factor_ * jc.hardening * jc.rate_factor;
 }
 
 FlowPoint FlowStress::along_step(double plastic_strain, double dp, double dt) const {
@@ -40,26 +66,12 @@ FlowPoint FlowStress::along_step(double plastic_strain, double dp, double dt) co
   const double rate = dt > 0.0 ? dp / dt : 0.0;
   const MetalParams& p = *p_;
   if (!p.johnson_cook) return {(*this)(strain, rate), 0.0, false};
-  // sigma_y = T H R with H = A + B eps^n, R = 1 + C ln(rate / rate0) above the reference rate:
-  // d sigma_y / d dp = T (H' R + H R'), H' = n B eps^n / eps, R' = C / dp (rate = dp / dt).
-  // At eps = 0, H' is unbounded for n < 1; the caller's bracket takes over from Newton there.
-  double power = 0.0, hardening_slope = 0.0;
-  if (p.b != 0.0) {
-    if (strain > 0.0) {
-      power = p.b * std::pow(strain, p.n);
-      hardening_slope = p.n * power / strain;
-    } else {
-      hardening_slope =
-          p.n < 1.0 ? std::numeric_limits<double>::infinity() : (p.n == 1.0 ? p.b : 0.0);
-    }
-  }
-  const double hardening = p.a + power;
-  const double ratio = rate / p.rate0;
-  const bool rate_hardens = ratio > 1.0 && p.c != 0.0;
-  const double rate_factor = rate_hardens ? 1.0 + p.c * std::log(ratio) : 1.0;
-  const double rate_slope = rate_hardens ? p.c / dp : 0.0;
-  return {thermal_factor_ * hardening * rate_factor,
-          thermal_factor_ * (hardening_slope * rate_factor + hardening * rate_slope), true};
+  // d sigma_y / d dp = T (H' R + H R') with R' = C / dp (rate = dp / dt).
+  const JohnsonCook jc = johnson_cook(p, strain, rate);
+  const double rate_slope = jc.rate_hardens ? p.c / dp : 0.0;
+  return {thermal_factor_ * jc.hardening * jc.rate_factor,
+          thermal_factor_ * (jc.hardening_slope * jc.rate_factor + jc.hardening * rate_slope),
+          true};
 }
 
 PlasticUpdate radial_return(const Sym3& trial, double shear_modulus, double plastic_strain,
