@@ -58,18 +58,21 @@ bool ContactInterface::needs_rebuild(const ContactInput& in) const {
   return moved2 > 0.25 * margin_ * margin_;
 }
 
+Vec3 ContactInterface::point_at(const Side& own, std::size_t p, const ContactInput& in) const {
+  const std::int32_t node = own.point_node[p];
+  return node >= 0
+             ? Vec3{in.x[node], in.y[node], in.z[node]}
+             : quad_point(quad_corners(own.surface.facets[own.point_facet[p]], in.x, in.y, in.z),
+                          own.point_xi[p], own.point_eta[p]);
+}
+
 ContactInterface::PointPositions ContactInterface::point_positions(const Side& own,
                                                                    const ContactInput& in) const {
   const std::size_t n = own.point_facet.size();
   PointPositions q{std::vector<double>(n), std::vector<double>(n), std::vector<double>(n)};
 #pragma omp parallel for schedule(static) if (n >= static_cast <std::size_t>(kParallelMinimum))
   for (std::size_t p = 0; p < n; ++p) {
-    const std::int32_t node = own.point_node[p];
-    const Vec3 x =
-        node >= 0
-            ? Vec3{in.x[node], in.y[node], in.z[node]}
-            : quad_point(quad_corners(own.surface.facets[own.point_facet[p]], in.x, in.y, in.z),
-                         own.point_xi[p], own.point_eta[p]);
+    const Vec3 x = point_at(own, p, in);
     q.x[p] = x.x;
     q.y[p] = x.y;
     q.z[p] = x.z;
@@ -252,14 +255,29 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   if (rebuild_pending_ || needs_rebuild(in)) rebuild_broad_phase(in);
   update_bands(in);
   bands_current_ = true;
+  // While the surfaces move, a point near a facet holds the step to its spring's bound only once
+  // it may touch in the next step (approach_limit); at rest and with edge-to-edge springs the
+  // bound holds for every point near a facet (near_omega2_). So it does while the caller's step
+  // is below half that bound: the bound does not limit the caller then (its own safety factor on
+  // the step taken into account), and sparing the points' look at their candidates costs at most
+  // one step at the bound once the caller's other limits rise above it.
+  const double near_bound = near_omega2_ > 0.0 ? 2.0 / std::sqrt(near_omega2_) : kInfinity;
+  const bool per_point = speed2 > 0.0 && !edges_ && in.dt >= 0.5 * near_bound;
+  const double speed = std::sqrt(speed2);
+  double near_step = kInfinity;
   for (Pass& pass : passes_) {
     const std::size_t n = pass.state.size();
-#pragma omp parallel for schedule(dynamic, \
-                                  256) if (n >= static_cast <std::size_t>(kParallelMinimum) / 4)
-    for (std::size_t p = 0; p < n; ++p) evaluate_point(pass, p, in);
+#pragma omp parallel for schedule(dynamic, 256) \
+    reduction(min                               \
+              : near_step) if (n >= static_cast <std::size_t>(kParallelMinimum) / 4)
+    for (std::size_t p = 0; p < n; ++p) {
+      evaluate_point(pass, p, in);
+      if (per_point) near_step = std::min(near_step, approach_limit(pass, p, in, speed, near_step));
+    }
   }
   bands_current_ = false;
-  scatter(in, out);
+  scatter(in, out, !per_point);
+  stats_.approach_step = std::min(stats_.approach_step, near_step);
   if (settings_.thermal.any()) scatter_heat(in, out);
   if (edges_) {
     const EdgeContactResult e =

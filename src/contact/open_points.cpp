@@ -1,4 +1,8 @@
 // Points that are surely open: skipped before their frame and projections are evaluated.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include "abut/contact/interface.hpp"
 #include "abut/contact/penetration_zone.hpp"
 #include "abut/core/parallel.hpp"
@@ -50,12 +54,7 @@ bool ContactInterface::surely_open(const Pass& pass, std::size_t p, const Contac
     return false;
   const Side& own = sides_[pass.own];
   const Side& target = sides_[pass.target];
-  const std::array<std::int32_t, 4> nodes = own.point_nodes(p);
-  // Where the point is, as frame() finds it.
-  const std::int32_t node = own.point_node[p];
-  const Vec3 x = node >= 0 ? Vec3{in.x[node], in.y[node], in.z[node]}
-                           : quad_point(quad_corners(nodes, in.x, in.y, in.z), own.point_xi[p],
-                                        own.point_eta[p]);
+  const Vec3 x = point_at(own, p, in);  // where frame() finds it
   const TargetFacets facets = target_facets(target, target.depth, in);
   const PartnerRules rules = partner_rules(own, p);
   // The broad phase leaves out the facets that share a node with the point's own (its keep
@@ -69,6 +68,47 @@ bool ContactInterface::surely_open(const Pass& pass, std::size_t p, const Contac
       return false;
   }
   return true;
+}
+
+// A point near a facet but not touching it needs its spring's bound on the step only once it may
+// touch in the next step. The narrow phase accepts a facet only within `reach` of the facet's box
+// (pair_reach). In one step of length dt every node moves at most v dt (v the largest nodal speed
+// of the contact's surfaces), so each face of the box and the point (a combination of its nodes)
+// move at most v dt, and the point's distance d from the box shrinks by at most (1 + sqrt 3) v dt.
+// A step no longer than (d - reach) / (2 (1 + sqrt 3) v), a factor 2 for the speed changing within
+// the step (as for the points far from every facet), cannot bring it within reach of any
+// candidate; the broad phase's margin covers the facets that are not candidates. The step allowed
+// is the larger of that and the spring's bound. A point whose spring's bound is at least `least`
+// cannot lower the least step: it is not looked at (the least step is the same either way).
+double ContactInterface::approach_limit(const Pass& pass, std::size_t p, const ContactInput& in,
+                                        double speed, double least) const {
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  constexpr double kSqrt3 = 1.7320508075688772;
+  if (pass.hit[p] || pass.state[p] == kReleased) return kInfinity;  // scatter takes a hit's bound
+  const auto first = pass.candidates.offsets[p], last = pass.candidates.offsets[p + 1];
+  if (first == last) return kInfinity;  // beyond the margin (apply's rule for far points)
+  const double omega2 = pass.approach_omega2[p];
+  if (!(omega2 > 0.0)) return kInfinity;
+  const double spring = 2.0 / std::sqrt(omega2);
+  if (spring >= least) return kInfinity;
+  const Side& own = sides_[pass.own];
+  const Side& target = sides_[pass.target];
+  const Vec3 x = point_at(own, p, in);
+  const TargetFacets facets = target_facets(target, target.depth, in);
+  const PartnerRules rules = partner_rules(own, p);
+  double clearance = kInfinity;
+  for (auto k = first; k < last; ++k) {
+    const std::int32_t f = pass.candidates.facets[k];
+    if (!target.active[f]) continue;  // the narrow phase passes over it
+    const FacetBand& band = target.bands[static_cast<std::size_t>(f)];
+    double box2 = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      const double out = std::max({band.lo[i] - x[i], x[i] - band.hi[i], 0.0});
+      box2 += out * out;
+    }
+    clearance = std::min(clearance, std::sqrt(box2) - pair_reach(facets, f, rules).reach);
+  }
+  return std::max(spring, clearance / (4.0 * (1.0 + kSqrt3) * speed));
 }
 
 }  // namespace abut

@@ -8,11 +8,12 @@
 
 namespace abut {
 
-void ContactInterface::scatter(const ContactInput& in, ContactForces& out) {
+void ContactInterface::scatter(const ContactInput& in, ContactForces& out, bool near_bound) {
   const WearRateFunction* wear_rate[2] = {&settings_.wear_rate1, &settings_.wear_rate2};
   if (self_contact() && !settings_.wear_rate1) wear_rate[0] = &settings_.wear_rate2;
-  // ContactStats::approach_step: the points near a facet (update_near_bound) and those that touch.
-  double omega2_max = 0.0, approach_omega2 = near_omega2_;
+  // ContactStats::approach_step: the points that touch, and those near a facet (update_near_bound)
+  // where their bound holds throughout.
+  double omega2_max = 0.0, approach_omega2 = near_bound ? near_omega2_ : 0.0;
   // Serial, in point order: the sums do not depend on the thread count.
   for (const Pass& pass : passes_) {
     const Side& own = sides_[pass.own];

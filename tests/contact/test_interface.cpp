@@ -422,6 +422,42 @@ TEST(ContactInterface, TheApproachBoundActsOnlyNearAFacet) {
   EXPECT_GT(contact.stats().stable_step, contact.initial_stable_step());
 }
 
+// While the surfaces move, a point near a facet holds the step to the bound only once it may come
+// within the narrow phase's reach in the next step (open_points.cpp, approach_limit): a plate
+// closing in at constant speed, stepped at min(approach_step, stable_step, a long element step),
+// steps longer than the bound near the other plate, and is at the bound when it first touches.
+// (The rule is on while the caller's step is at least half the bound, as here.)
+TEST(ContactInterface, TheApproachBoundHoldsFromJustBeforeTheFirstTouch) {
+  Pair pair(10.0, 1e6, 1e6, false, 1.0, 1.0);
+  ContactInterface contact = pair.make(undamped(2));
+  const double margin = contact.search_margin();
+  const double bound = contact.initial_stable_step();
+  const double v = 0.01 * margin / bound;
+  for (std::int32_t i = pair.upper_first; i < pair.end; ++i) pair.w.vz[i] = -v;
+  const double element_step = 50.0 * bound;
+  int long_steps_near = 0;
+  double last_dt = bound;  // the caller's step, which the contact is told
+  for (int step = 0; step < 100000; ++step) {
+    pair.w.clear_forces();
+    ContactForces out = pair.w.forces();
+    contact.apply(pair.w.input(0.0, last_dt), out);
+    if (contact.stats().active_points > 0) {
+      // The move into contact was taken at the bound (or shorter).
+      EXPECT_LE(last_dt, bound * (1.0 + 1e-12)) << "step " << step;
+      EXPECT_GT(long_steps_near, 0);  // and the rule was of use before
+      return;
+    }
+    const double dt =
+        std::min({contact.stats().approach_step, contact.stats().stable_step, element_step});
+    // Near: some point has a candidate facet, so the step is below the far points' rule.
+    const bool near = contact.stats().approach_step < 0.25 * margin / v;
+    if (near && dt > 1.01 * bound) ++long_steps_near;
+    pair.move_upper(0, 0, -v * dt);
+    last_dt = dt;
+  }
+  ADD_FAILURE() << "the plates never touched";
+}
+
 // OpenMP over points with per-point results and a serial scatter: bitwise the same forces and
 // energies with 1 and 2 threads.
 // One step of 1e-4 s; appends the nodal forces, the energies and, last, the active points.

@@ -60,10 +60,13 @@ TEST(ContactStep, TheLossIsReportedOnceTheSpringsLimitTheStep) {
   }
   EXPECT_TRUE(touched);
   EXPECT_TRUE(contact_limited);
-  // In contact the bound before touching still holds near the facets (conservative, issue 12):
-  // a loss of a few per cent over this run, not tens.
+  // The springs hold the step while the blocks touch and while they may touch in the next step,
+  // not all the time they are within the search margin: at most 4%, the bound Abaqus/Explicit
+  // gives for its default penalty (seed 001, table 29.3.6-1: the increment with contact is at
+  // least 0.96 of that without; issue 12). It was 4.2% with the bound on every point near a
+  // facet.
   EXPECT_GT(sim.contact_step_loss(), 0.0);
-  EXPECT_LT(sim.contact_step_loss(), 0.2);
+  EXPECT_LT(sim.contact_step_loss(), 0.04);
 }
 
 }  // namespace

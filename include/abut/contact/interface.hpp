@@ -62,11 +62,14 @@ struct ContactStats {
   std::size_t active_points = 0;
   double stable_step = std::numeric_limits<double>::infinity();  // 2/omega of the stiffest spring
   // The bound before touching (initial_stable_step) over the points that touch (a tie that holds
-  // included) or have a facet within the broad phase's reach: those whose springs may act in the
-  // next step. The others are at least half the search margin from every facet: they cannot
-  // touch before the next broad-phase build sees them while no surface node moves more than a
-  // quarter of the margin in a step (margin / (4 v_max); at rest the bound holds everywhere). A
-  // caller's step is min(stable_step, approach_step).
+  // included) or may come within the narrow phase's reach of a candidate facet in the next step:
+  // a point at box distance d from its nearest candidate allows (d - reach) / (2 (1 + sqrt 3)
+  // 2 v_max) (open_points.cpp, approach_limit). The points without a candidate are at least half
+  // the search margin from every facet: they cannot touch before the next broad-phase build sees
+  // them while no surface node moves more than a quarter of the margin in a step
+  // (margin / (4 v_max)). At rest, with edge-to-edge contact, or while the caller's step (dt) is
+  // below half the bound, the bound holds for every point with a candidate. A caller's step is
+  // min(stable_step, approach_step).
   double approach_step = std::numeric_limits<double>::infinity();
 };
 
@@ -112,7 +115,7 @@ class ContactInterface {
 
   const ContactStats& stats() const { return stats_; }
   // Stable step bound of every spring that may act, 2 / sqrt(max over points of 2 k / m_min), as
-  // if every point touched (stats().approach_step takes it over the points near a facet only).
+  // if every point touched (stats().approach_step takes it over the points that may touch only).
   double initial_stable_step() const { return initial_stable_step_; }
   // Accumulated wear depth and current contact pressure per node (0 away from the surfaces).
   std::span<const double> wear() const { return wear_; }
@@ -282,7 +285,14 @@ class ContactInterface {
   void update_near_facets();
   void update_bands(const ContactInput& in);
   bool surely_open(const Pass& pass, std::size_t p, const ContactInput& in) const;
-  void scatter(const ContactInput& in, ContactForces& out);
+  // The step point p allows before it may touch (open_points.cpp); infinity when it cannot lower
+  // `least`, the least such step so far.
+  double approach_limit(const Pass& pass, std::size_t p, const ContactInput& in, double speed,
+                        double least) const;
+  Vec3 point_at(const Side& own, std::size_t p, const ContactInput& in) const;
+  // `near_bound`: the bound before touching holds for every point with a candidate (at rest, with
+  // edge-to-edge contact); otherwise only for the points that touch (apply takes the others).
+  void scatter(const ContactInput& in, ContactForces& out, bool near_bound);
   // Thermal contact (heat_exchange.cpp): the conductance of point p with its partner, and the
   // heat of every pass to the nodes, serially in point order.
   void conduct(Pass& pass, std::size_t p, std::int32_t facet, double xi, double eta,
