@@ -75,9 +75,9 @@ bool ContactInterface::surely_open(const Pass& pass, std::size_t p, const Contac
 // (pair_reach). In one step of length dt every node moves at most v dt (v the largest nodal speed
 // of the contact's surfaces), so each face of the box and the point (a combination of its nodes)
 // move at most v dt, and the point's distance d from the box shrinks by at most (1 + sqrt 3) v dt.
-// A step no longer than (d - reach) / (2 (1 + sqrt 3) v), a factor 2 for the speed changing within
-// the step (as for the points far from every facet), cannot bring it within reach of any
-// candidate; the broad phase's margin covers the facets that are not candidates. The step allowed
+// A step no longer than (d - reach) / (2 (1 + sqrt 3) v) cannot bring it within reach of any
+// candidate, with a factor 2 in reserve for the speeds changing within the step (v is that of the
+// last step); the broad phase's margin covers the facets that are not candidates. The step allowed
 // is the larger of that and the spring's bound. A point whose spring's bound is at least `least`
 // cannot lower the least step: it is not looked at (the least step is the same either way).
 double ContactInterface::approach_limit(const Pass& pass, std::size_t p, const ContactInput& in,
@@ -108,7 +108,7 @@ double ContactInterface::approach_limit(const Pass& pass, std::size_t p, const C
     }
     clearance = std::min(clearance, std::sqrt(box2) - pair_reach(facets, f, rules).reach);
   }
-  return std::max(spring, clearance / (4.0 * (1.0 + kSqrt3) * speed));
+  return std::max(spring, clearance / (2.0 * (1.0 + kSqrt3) * speed));
 }
 
 }  // namespace abut

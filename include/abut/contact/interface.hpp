@@ -64,7 +64,7 @@ struct ContactStats {
   // The bound before touching (initial_stable_step) over the points that touch (a tie that holds
   // included) or may come within the narrow phase's reach of a candidate facet in the next step:
   // a point at box distance d from its nearest candidate allows (d - reach) / (2 (1 + sqrt 3)
-  // 2 v_max) (open_points.cpp, approach_limit). The points without a candidate are at least half
+  // v_max) (open_points.cpp, approach_limit). The points without a candidate are at least half
   // the search margin from every facet: they cannot touch before the next broad-phase build sees
   // them while no surface node moves more than a quarter of the margin in a step
   // (margin / (4 v_max)). At rest, with edge-to-edge contact, or while the caller's step (dt) is
