@@ -261,8 +261,8 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   // is below half that bound: the bound does not limit the caller then (its own safety factor on
   // the step taken into account), and sparing the points' look at their candidates costs at most
   // one step at the bound once the caller's other limits rise above it.
-  const double near_bound = near_omega2_ > 0.0 ? 2.0 / std::sqrt(near_omega2_) : kInfinity;
-  const bool per_point = speed2 > 0.0 && !edges_ && in.dt >= 0.5 * near_bound;
+  const double near_spring_step = near_omega2_ > 0.0 ? 2.0 / std::sqrt(near_omega2_) : kInfinity;
+  const bool per_point = speed2 > 0.0 && !edges_ && in.dt >= 0.5 * near_spring_step;
   const double speed = std::sqrt(speed2);
   double near_step = kInfinity;
   for (Pass& pass : passes_) {

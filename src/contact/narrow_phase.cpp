@@ -48,19 +48,20 @@ Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> c
     const auto [g, below, reach] = pair_reach(target, f, rules);
     // The distance to the facet's bounding box bounds the distance to the facet from below:
     // skip facets that cannot be within reach or closer than the best one so far.
-    double box_distance2 = 0.0;
     const bool banded = !target.bands.empty();
-    if (!banded) gather();
-    for (int i = 0; i < 3; ++i) {
-      const double lo =
-          banded ? target.bands[f].lo[i] : std::min({c[0][i], c[1][i], c[2][i], c[3][i]});
-      const double hi =
-          banded ? target.bands[f].hi[i] : std::max({c[0][i], c[1][i], c[2][i], c[3][i]});
-      const double out = std::max({lo - x_p[i], x_p[i] - hi, 0.0});
-      box_distance2 += out * out;
+    Vec3 lo, hi;
+    if (banded) {
+      lo = target.bands[f].lo, hi = target.bands[f].hi;
+    } else {
+      gather();
+      for (int i = 0; i < 3; ++i) {
+        lo[i] = std::min({c[0][i], c[1][i], c[2][i], c[3][i]});
+        hi[i] = std::max({c[0][i], c[1][i], c[2][i], c[3][i]});
+      }
     }
+    const double box2 = box_distance2(lo, hi, x_p);
     const double closer = best_distance + g;  // nearer than this to beat the best one so far
-    if (box_distance2 > reach * reach || closer < 0.0 || box_distance2 > closer * closer) return;
+    if (box2 > reach * reach || closer < 0.0 || box2 > closer * closer) return;
     if (share_a_node(own_nodes, nodes)) return;
     if (!rules.x0.empty() && initially_within(rules, nodes, 2.0 * g)) return;
     // The far side of a shell, decided before the projection where the band shows it

@@ -101,12 +101,8 @@ double ContactInterface::approach_limit(const Pass& pass, std::size_t p, const C
     const std::int32_t f = pass.candidates.facets[k];
     if (!target.active[f]) continue;  // the narrow phase passes over it
     const FacetBand& band = target.bands[static_cast<std::size_t>(f)];
-    double box2 = 0.0;
-    for (int i = 0; i < 3; ++i) {
-      const double out = std::max({band.lo[i] - x[i], x[i] - band.hi[i], 0.0});
-      box2 += out * out;
-    }
-    clearance = std::min(clearance, std::sqrt(box2) - pair_reach(facets, f, rules).reach);
+    const double d = std::sqrt(box_distance2(band.lo, band.hi, x));
+    clearance = std::min(clearance, d - pair_reach(facets, f, rules).reach);
   }
   return std::max(spring, clearance / (2.0 * (1.0 + kSqrt3) * speed));
 }

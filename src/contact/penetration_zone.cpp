@@ -46,12 +46,7 @@ double band_slack(const FacetBand& band, const Vec3& x) {
 
 bool outside_penetration_zone(const FacetBand& band, const Vec3& x, double g, double below,
                               double reach) {
-  double box2 = 0.0;  // as the narrow phase computes it, so that (a) decides alike
-  for (int i = 0; i < 3; ++i) {
-    const double out = std::max({band.lo[i] - x[i], x[i] - band.hi[i], 0.0});
-    box2 += out * out;
-  }
-  if (box2 > reach * reach) return true;  // (a)
+  if (box_distance2(band.lo, band.hi, x) > reach * reach) return true;  // (a)
   if (!band.usable) return false;
   const double s = dot(x - band.centre, band.normal);
   const double sigma = band_slack(band, x);

@@ -76,6 +76,12 @@ Case random_case(std::mt19937& rng, double warp) {
   return k;
 }
 
+// A point within `radius` facet sizes of the facet's centre.
+Vec3 point_near(const Case& k, std::mt19937& rng, double radius) {
+  const QuadCorners& c = k.corners;
+  return (c[0] + c[1] + c[2] + c[3]) * 0.25 + random_in_ball(rng, radius * k.size);
+}
+
 TEST(PenetrationZone, APointOutsideIsNeverAPenetratingPartner) {
   std::mt19937 rng(2026);
   int outside = 0, inside = 0;
@@ -84,11 +90,8 @@ TEST(PenetrationZone, APointOutsideIsNeverAPenetratingPartner) {
     const QuadCorners& c = k.corners;
     const OneFacet& facet = k.facet;
     const PartnerRules& rules = k.rules;
-    const double size = k.size;
     const PairReach pr = pair_reach(facet.view(), 0, rules);
-    // A point anywhere near: above, below, beside, within reach or not.
-    const Vec3 centre = (c[0] + c[1] + c[2] + c[3]) * 0.25;
-    const Vec3 x = centre + random_in_ball(rng, 1.5 * size);
+    const Vec3 x = point_near(k, rng, 1.5);  // above, below, beside, within reach or not
     if (!outside_penetration_zone(c, x, pr.gap, pr.below, pr.reach)) {
       ++inside;
       continue;
@@ -109,7 +112,7 @@ TEST(PenetrationZone, APointSurelyBehindProjectsBehindTheFacet) {
   for (int trial = 0; trial < 200000; ++trial) {
     const Case k = random_case(rng, trial % 2 ? 0.02 : 0.2);
     const QuadCorners& c = k.corners;
-    const Vec3 x = (c[0] + c[1] + c[2] + c[3]) * 0.25 + random_in_ball(rng, 1.5 * k.size);
+    const Vec3 x = point_near(k, rng, 1.5);
     if (!surely_behind(facet_band(c), x)) {
       ++not_behind;
       continue;
@@ -136,8 +139,7 @@ TEST(PenetrationZone, BandsLeaveTheNarrowPhaseUnchanged) {
       k.facet.free_edges[0] = trial % 5 == 0 ? 0xF : 0;
     }
     const PartnerRules& rules = k.rules;
-    const double size = k.size;
-    const Vec3 x = (c[0] + c[1] + c[2] + c[3]) * 0.25 + random_in_ball(rng, 0.8 * size);
+    const Vec3 x = point_near(k, rng, 0.8);
     // Point normals near the facet's own (facing away from it) and anywhere.
     const Vec3 own = normalized(cross(c[2] - c[0], c[3] - c[1]));
     const Vec3 n =

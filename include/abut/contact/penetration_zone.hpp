@@ -18,6 +18,8 @@
 // when (b) holds (for eps <= 1/2, so that N . n > 0 and q.gap cos theta keeps the sign and
 // bound of q.gap). A point outside that band, or beyond the reach, cannot penetrate the facet.
 // tests/contact/test_penetration_zone.cpp checks this against find_partner.
+#include <algorithm>
+
 #include "abut/contact/quad.hpp"
 
 namespace abut {
@@ -32,6 +34,17 @@ struct FacetBand {
   bool usable = false;  // a nonzero area and eps <= 1/2: the band holds
 };
 FacetBand facet_band(const QuadCorners& c);
+
+// Squared distance from x to the box [lo, hi]: the narrow phase's box test (a) and the bounds
+// here compute it alike, so that they decide alike.
+inline double box_distance2(const Vec3& lo, const Vec3& hi, const Vec3& x) {
+  double d2 = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const double out = std::max({lo[i] - x[i], x[i] - hi[i], 0.0});
+    d2 += out * out;
+  }
+  return d2;
+}
 
 // True when point x cannot penetrate the facet, with pair gap g, detection depth below and reach
 // as in pair_reach (narrow_phase.hpp).
