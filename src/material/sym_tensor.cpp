@@ -10,32 +10,14 @@ double von_mises(const Sym3& stress) {
 }
 
 Sym3 rotate(const Mat3& q, const Sym3& s) {
-  const double a[9] = {s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2]};
-  double qa[9];
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      qa[3 * i + j] = q[3 * i] * a[j] + q[3 * i + 1] * a[3 + j] + q[3 * i + 2] * a[6 + j];
-    }
-  }
-  const auto entry = [&](int i, int j) {
-    return qa[3 * i] * q[3 * j] + qa[3 * i + 1] * q[3 * j + 1] + qa[3 * i + 2] * q[3 * j + 2];
-  };
-  return {{entry(0, 0), entry(1, 1), entry(2, 2), entry(0, 1), entry(1, 2), entry(2, 0)}};
+  Sym3 out;
+  rotate_sym(q.data(), s.c.data(), out.c.data());
+  return out;
 }
 
 Mat3 cayley_rotation(const Mat3& half_step_spin) {
-  // Axial vector of the skew tensor W dt/2: W_32, W_13, W_21.
-  const double wx = half_step_spin[7], wy = half_step_spin[2], wz = half_step_spin[3];
-  const double omega[9] = {0.0, -wz, wy, wz, 0.0, -wx, -wy, wx, 0.0};
-  const double factor = 2.0 / (1.0 + wx * wx + wy * wy + wz * wz);
-  Mat3 q{};
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      const double omega2 = omega[3 * i] * omega[j] + omega[3 * i + 1] * omega[3 + j] +
-                            omega[3 * i + 2] * omega[6 + j];
-      q[3 * i + j] = (i == j ? 1.0 : 0.0) + factor * (omega[3 * i + j] + omega2);
-    }
-  }
+  Mat3 q;
+  cayley_rotation_of(half_step_spin.data(), q.data());
   return q;
 }
 

@@ -55,23 +55,31 @@ void hex8_gradient(const Hex8Coords& x, Hex8Gradient& g);
 // unchanged). By orthogonality, for any nodal vector field u with modes u_k:
 //   sum_a u_a (x) b_a = 8 sum_k u_k (x) G_k,   sum_a b_a . b_a = 8 sum_k G_k . G_k,
 // which is how the element forms velocity gradients, F and the hourglass stiffness without b_a.
-struct Hex8Modes {
-  double x[8], y[8], z[8];
+//
+// T is double, or a SIMD vector of doubles holding one element per lane (lanes.hpp), so that the
+// kernel evaluates several elements with the same arithmetic, operation for operation.
+template <class T>
+struct Hex8ModesOf {
+  T x[8], y[8], z[8];
 };
-struct Hex8ModalGradient {
-  double gx[8], gy[8], gz[8];
-  double volume;
+template <class T>
+struct Hex8ModalGradientOf {
+  T gx[8], gy[8], gz[8];
+  T volume;
 };
+using Hex8Modes = Hex8ModesOf<double>;
+using Hex8ModalGradient = Hex8ModalGradientOf<double>;
 
 // Inline: the element kernel calls these for every element and step.
 // u_k = 1/8 sum_a phi_k(a) u_a.
-inline void hex8_to_modes(const double u[8], double m[8]) {
+template <class T>
+inline void hex8_to_modes(const T u[8], T m[8]) {
   // Butterflies along xi (node pairs 0-1, 3-2, 4-5, 7-6), eta, then zeta: each stage splits a
   // pair into its sum (factor 1) and its difference, + side minus - side (factor xi, eta or zeta).
-  const double a0 = u[1] + u[0], a1 = u[1] - u[0], a2 = u[2] + u[3], a3 = u[2] - u[3];
-  const double a4 = u[5] + u[4], a5 = u[5] - u[4], a6 = u[6] + u[7], a7 = u[6] - u[7];
-  const double b0 = a2 + a0, b2 = a2 - a0, b1 = a3 + a1, b3 = a3 - a1;  // zeta = -1 face
-  const double b4 = a6 + a4, b6 = a6 - a4, b5 = a7 + a5, b7 = a7 - a5;  // zeta = +1 face
+  const T a0 = u[1] + u[0], a1 = u[1] - u[0], a2 = u[2] + u[3], a3 = u[2] - u[3];
+  const T a4 = u[5] + u[4], a5 = u[5] - u[4], a6 = u[6] + u[7], a7 = u[6] - u[7];
+  const T b0 = a2 + a0, b2 = a2 - a0, b1 = a3 + a1, b3 = a3 - a1;  // zeta = -1 face
+  const T b4 = a6 + a4, b6 = a6 - a4, b5 = a7 + a5, b7 = a7 - a5;  // zeta = +1 face
   // In the order 1, xi, eta, zeta, eta zeta, zeta xi, xi eta, xi eta zeta.
   m[0] = 0.125 * (b4 + b0);
   m[1] = 0.125 * (b5 + b1);
@@ -84,12 +92,13 @@ inline void hex8_to_modes(const double u[8], double m[8]) {
 }
 
 // u_a = sum_k phi_k(a) u_k.
-inline void hex8_from_modes(const double m[8], double u[8]) {
+template <class T>
+inline void hex8_from_modes(const T m[8], T u[8]) {
   // The transpose of the butterflies above, stages in reverse order.
-  const double b0 = m[0] - m[3], b4 = m[0] + m[3], b1 = m[1] - m[5], b5 = m[1] + m[5];
-  const double b2 = m[2] - m[4], b6 = m[2] + m[4], b3 = m[6] - m[7], b7 = m[6] + m[7];
-  const double a0 = b0 - b2, a2 = b0 + b2, a1 = b1 - b3, a3 = b1 + b3;
-  const double a4 = b4 - b6, a6 = b4 + b6, a5 = b5 - b7, a7 = b5 + b7;
+  const T b0 = m[0] - m[3], b4 = m[0] + m[3], b1 = m[1] - m[5], b5 = m[1] + m[5];
+  const T b2 = m[2] - m[4], b6 = m[2] + m[4], b3 = m[6] - m[7], b7 = m[6] + m[7];
+  const T a0 = b0 - b2, a2 = b0 + b2, a1 = b1 - b3, a3 = b1 + b3;
+  const T a4 = b4 - b6, a6 = b4 + b6, a5 = b5 - b7, a7 = b5 + b7;
   u[0] = a0 - a1;
   u[1] = a0 + a1;
   u[2] = a2 + a3;
@@ -101,12 +110,13 @@ inline void hex8_from_modes(const double m[8], double u[8]) {
 }
 
 // G_k = (1/8) dV/dc_k of the closed form at hex8_gradient above.
-inline void hex8_modal_gradient(const Hex8Modes& c, Hex8ModalGradient& g) {
+template <class T>
+inline void hex8_modal_gradient(const Hex8ModesOf<T>& c, Hex8ModalGradientOf<T>& g) {
   // The twelve cross products c_A x c_B of the closed form, component by component over the
   // list so that the compiler can vectorise them; c7 (xi eta zeta) does not change the volume.
   constexpr int kA[12] = {2, 6, 3, 4, 1, 5, 6, 3, 4, 1, 2, 5};
   constexpr int kB[12] = {3, 5, 1, 6, 2, 4, 2, 5, 3, 6, 4, 1};
-  double px[12], py[12], pz[12];
+  T px[12], py[12], pz[12];
   for (int n = 0; n < 12; ++n) {
     const int a = kA[n], b = kB[n];
     px[n] = c.y[a] * c.z[b] - c.z[a] * c.y[b];
@@ -114,22 +124,22 @@ inline void hex8_modal_gradient(const Hex8Modes& c, Hex8ModalGradient& g) {
     pz[n] = c.x[a] * c.y[b] - c.y[a] * c.x[b];
   }
   constexpr double third = 1.0 / 3.0;
-  double* gs[3] = {g.gx, g.gy, g.gz};
-  const double* ps[3] = {px, py, pz};
+  T* gs[3] = {g.gx, g.gy, g.gz};
+  const T* ps[3] = {px, py, pz};
   for (int i = 0; i < 3; ++i) {
-    double* gi = gs[i];
-    const double* p = ps[i];
-    gi[0] = 0.0;
+    T* gi = gs[i];
+    const T* p = ps[i];
+    gi[0] = T{};
     gi[1] = p[0] + third * p[1];      // c2 x c3 + (c6 x c5) / 3
     gi[2] = p[2] + third * p[3];      // c3 x c1 + (c4 x c6) / 3
     gi[3] = p[4] + third * p[5];      // c1 x c2 + (c5 x c4) / 3
     gi[4] = third * (p[6] + p[7]);    // (c6 x c2 + c3 x c5) / 3
     gi[5] = third * (p[8] + p[9]);    // (c4 x c3 + c1 x c6) / 3
     gi[6] = third * (p[10] + p[11]);  // (c2 x c4 + c5 x c1) / 3
-    gi[7] = 0.0;
+    gi[7] = T{};
   }
   // V is homogeneous of degree 3 in the c_k (Euler): 3 V = sum_k c_k . dV/dc_k.
-  double v = 0.0;
+  T v{};
   for (int k = 1; k < 7; ++k) v += c.x[k] * g.gx[k] + c.y[k] * g.gy[k] + c.z[k] * g.gz[k];
   g.volume = (8.0 / 3.0) * v;
 }

@@ -1,0 +1,102 @@
+#pragma once
+// The state of a SolidBlock (solid_block.hpp), shared by its set-up (solid_block.cpp) and its
+// kernel (solid_block_kernel.cpp). Internal to the element layer.
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "abut/core/lanes.hpp"
+#include "abut/element/solid_block.hpp"
+#include "abut/material/metal.hpp"
+#include "abut/material/mooney_rivlin.hpp"
+#include "abut/material/point_law.hpp"
+
+namespace abut {
+
+enum SolidFailure : unsigned char { kOk = 0, kInverted = 1, kNonFinite = 2 };
+
+// The Mooney-Rivlin law of a block for one step.
+struct RubberLaw {
+  const MooneyRivlinParams* params;
+  ViscousStep viscous;  // factors for this step (count = number of active terms)
+};
+
+// "part <id>: ", the start of a block's messages. Built with append: GCC 12 reports a false
+// -Wrestrict for "literal" + std::string&&.
+inline std::string input_prefix(std::int64_t part_id) {
+  std::string s("part ");
+  s += std::to_string(part_id);
+  s += ": ";
+  return s;
+}
+
+struct SolidBlock::Impl {
+  std::int64_t part_id = 0;
+  MaterialParams material;
+  std::vector<Hex8> hexes;
+  std::vector<std::int64_t> element_ids;
+  double density = 0.0;
+  double shear_modulus = 0.0;
+  double wave_speed = 0.0;
+  double hourglass_coefficient = kDefaultHourglassCoefficient;
+  double bulk_viscosity_quadratic = kDefaultBulkViscosityQuadratic;
+  double bulk_viscosity_linear = kDefaultBulkViscosityLinear;
+  double newtonian_viscosity = 0.0;  // sum of alpha_k of the Mooney-Rivlin terms with beta_k = 0
+  double lame_lambda = 0.0,
+         lame_mu = 0.0;  // initial moduli for the stable step (mu with viscous terms)
+  int viscous_terms = 0;
+
+  std::vector<double> reference_volume;  // 1 per element
+  // Mooney-Rivlin only: R_k = 8 G0_k / V0 of the reference configuration for the modes k = 1..6,
+  // stored per element as R[6 j + k - 1] (component j), so that F = sum_k c_k (x) R_k.
+  static constexpr std::size_t kReferenceModes = 18;
+  std::vector<double> reference_gradient;
+  std::vector<double> stress;         // 6 per element (Sym3 order)
+  std::vector<double> viscous;        // 6 per active viscous term per element
+  std::vector<double> hourglass;      // generalized hourglass forces, 12 per element
+  std::vector<double> forces;         // 24 per element
+  std::vector<double> internal_work;  // per-element increments of the last step
+  std::vector<PointHistory> history;  // plastic strain and damage (metals)
+  bool fails_by_damage = false;       // a metal with a damage property: erodes at D >= 1
+  ErosionCriteria erosion;
+  std::vector<std::uint8_t> eroded;
+  std::vector<double> element_internal, element_hourglass;  // cumulative work per element (erosion)
+  std::vector<double> geometric_strain, volume_ratio;       // erosion measures at the last update
+  double eroded_energy = 0.0;
+  std::size_t eroded_count = 0;
+  const FunctionTable* functions = nullptr;  // flow curves of *MAT_METAL
+  std::vector<double> hourglass_work;
+  std::vector<double> stable;
+  std::vector<unsigned char> failure;
+
+  double internal_energy = 0.0;
+  double hourglass_energy = 0.0;
+
+  // Coupling to the temperature (issue 11; solid_block.hpp): off unless set_thermal made it on.
+  ThermalCoupling coupling;
+  bool coupled = false;
+  bool temperature_started = false;          // element_temperature holds the last temperatures
+  std::vector<double> element_temperature;   // at the last update, 1 per element (coupled)
+  std::vector<double> element_plastic_work;  // of the last step (coupling.plastic_work)
+
+  // kThermal: the block is coupled (decided once per block and step, so that the uncoupled
+  // kernel is unchanged).
+  // Updates the kLanes elements first, first + 1, ... (those below the block's size) at once.
+  template <class Law, bool kThermal>
+  void batch(std::size_t first, const NodalState& s, double dt, const Law& law);
+  void clear_eroded(std::size_t e);
+  template <class Law, bool kThermal = false>
+  BlockStep step(const NodalState& s, double dt, const Law& law);
+  void erode(BlockStep& out);
+  std::string element_name(std::size_t e) const;
+  // l / (Q + sqrt(Q^2 + c^2)) with Q = q_speed (bulk viscosity) plus the Newtonian Q_eta.
+  // T = double or Lanes (lanes.hpp).
+  template <class T>
+  T critical_step(T length, T q_speed) const {
+    const T q = q_speed + 4.0 * newtonian_viscosity / (3.0 * density * length);
+    return length / (q + sqrt_of(q * q + wave_speed * wave_speed));
+  }
+};
+
+}  // namespace abut
