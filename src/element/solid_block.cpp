@@ -166,9 +166,9 @@ SolidBlock::SolidBlock(std::int64_t part_id, const MaterialParams& material,
       }
     }
   }
-  m.stress.assign(6 * n, 0.0);
+  m.stress.assign(Impl::batched_size(n, 6), 0.0);
   m.viscous.assign(6 * static_cast<std::size_t>(m.viscous_terms) * n, 0.0);
-  m.hourglass.assign(12 * n, 0.0);
+  m.hourglass.assign(Impl::batched_size(n, 12), 0.0);
   m.forces.assign(24 * n, 0.0);
   m.internal_work.assign(n, 0.0);
   if (const auto* metal = std::get_if<MetalParams>(&material)) {
@@ -209,10 +209,7 @@ const std::vector<double>& SolidBlock::element_forces() const { return impl_->fo
 
 void SolidBlock::von_mises_stress(std::vector<double>& out) const {
   out.resize(size());
-  for (std::size_t e = 0; e < size(); ++e) {
-    const double* s = &impl_->stress[6 * e];
-    out[e] = von_mises(Sym3{{s[0], s[1], s[2], s[3], s[4], s[5]}});
-  }
+  for (std::size_t e = 0; e < size(); ++e) out[e] = von_mises(impl_->element_stress(e));
 }
 
 void SolidBlock::set_erosion(const ErosionCriteria& criteria) {
@@ -255,12 +252,18 @@ void SolidBlock::damage(std::vector<double>& out) const {
 void SolidBlock::pressure(std::vector<double>& out) const {
   out.resize(size());
   for (std::size_t e = 0; e < size(); ++e) {
-    const double* s = &impl_->stress[6 * e];
+    const Sym3 s = impl_->element_stress(e);
     out[e] = -(s[0] + s[1] + s[2]) / 3.0;
   }
 }
 
-void SolidBlock::stress(std::vector<double>& out) const { out = impl_->stress; }
+void SolidBlock::stress(std::vector<double>& out) const {
+  out.resize(6 * size());
+  for (std::size_t e = 0; e < size(); ++e) {
+    const Sym3 s = impl_->element_stress(e);
+    std::copy(s.c.begin(), s.c.end(), &out[6 * e]);
+  }
+}
 
 void SolidBlock::set_hourglass_coefficient(double coefficient) {
   if (!(coefficient >= 0.0) || !std::isfinite(coefficient)) {
@@ -306,6 +309,8 @@ void SolidBlock::archive(StateArchive& a) {
   a.mark("solid block");
   a.expect(m.part_id, "the part of a solid block");
   a.expect(static_cast<std::uint64_t>(m.hexes.size()), "the element count of a solid block");
+  a.expect(static_cast<std::uint64_t>(kLanes),
+           "the SIMD width of the build (the elements' state is kept in batches of that many)");
   a.fixed(m.stress, m.viscous, m.hourglass, m.forces, m.internal_work, m.history, m.eroded,
           m.element_internal, m.element_hourglass, m.geometric_strain, m.volume_ratio,
           m.hourglass_work, m.stable, m.failure, m.element_temperature, m.element_plastic_work);

@@ -52,9 +52,26 @@ struct SolidBlock::Impl {
   // stored per element as R[6 j + k - 1] (component j), so that F = sum_k c_k (x) R_k.
   static constexpr std::size_t kReferenceModes = 18;
   std::vector<double> reference_gradient;
-  std::vector<double> stress;         // 6 per element (Sym3 order)
+  // The stress (6 per element, Sym3 order) and the generalized hourglass forces (12 per element)
+  // are kept batch by batch, as the kernel reads and writes them whole (solid_block_kernel.cpp):
+  // component c of element e at batched(e, c, count), in whole batches.
+  static std::size_t batched(std::size_t e, int c, int count) {
+    const auto lanes = static_cast<std::size_t>(kLanes);
+    return ((e / lanes) * static_cast<std::size_t>(count) + static_cast<std::size_t>(c)) * lanes +
+           e % lanes;
+  }
+  static std::size_t batched_size(std::size_t n, int count) {
+    const auto lanes = static_cast<std::size_t>(kLanes);
+    return (n + lanes - 1) / lanes * lanes * static_cast<std::size_t>(count);
+  }
+  Sym3 element_stress(std::size_t e) const {
+    Sym3 s;
+    for (int c = 0; c < 6; ++c) s[c] = stress[batched(e, c, 6)];
+    return s;
+  }
+  std::vector<double> stress;         // 6 per element, batched
   std::vector<double> viscous;        // 6 per active viscous term per element
-  std::vector<double> hourglass;      // generalized hourglass forces, 12 per element
+  std::vector<double> hourglass;      // generalized hourglass forces, 12 per element, batched
   std::vector<double> forces;         // 24 per element
   std::vector<double> internal_work;  // per-element increments of the last step
   std::vector<PointHistory> history;  // plastic strain and damage (metals)

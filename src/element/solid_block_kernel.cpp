@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 
@@ -27,7 +28,8 @@ namespace {
 
 // sum_a u_a (x) b_a = 8 sum_k u_k (x) G_k (hex8.hpp), row-major: l[3 i + j] = sum_a u_ai b_aj.
 template <class T>
-void gradient_times_volume(const Hex8ModesOf<T>& u, const Hex8ModalGradientOf<T>& g, T l[9]) {
+[[gnu::always_inline]] inline void gradient_times_volume(const Hex8ModesOf<T>& u,
+                                                         const Hex8ModalGradientOf<T>& g, T l[9]) {
   const T* us[3] = {u.x, u.y, u.z};
   for (int i = 0; i < 3; ++i) {
     T sx{}, sy{}, sz{};
@@ -131,11 +133,9 @@ void SolidBlock::Impl::batch(std::size_t first, const NodalState& s, double dt, 
   {
     // Vector by vector (node a of every lane), so that each is built in registers.
     Lanes x[3][8], v[3][8];
-    const Hex8* hex[kLanes];
-    for (int l = 0; l < kLanes; ++l) hex[l] = &hexes[index[l]];
     for (int a = 0; a < 8; ++a) {
       std::size_t node[kLanes];
-      for (int l = 0; l < kLanes; ++l) node[l] = static_cast<std::size_t>((*hex[l])[a]);
+      for (int l = 0; l < kLanes; ++l) node[l] = static_cast<std::size_t>(hexes[index[l]][a]);
       for (int l = 0; l < kLanes; ++l) {
         x[0][a][l] = s.x[node[l]];
         x[1][a][l] = s.y[node[l]];
@@ -192,14 +192,21 @@ void SolidBlock::Impl::batch(std::size_t first, const NodalState& s, double dt, 
 
   // 2. Stress: rotated on the lanes, the law element by element.
   Lanes old[6], rotated[6], now[6];
-  for (int comp = 0; comp < 6; ++comp)
-    for (int l = 0; l < kLanes; ++l) old[comp][l] = stress[6 * index[l] + comp];
+  double* const stored = &stress[batched(first, 0, 6)];  // the batch's stresses, whole
+  std::memcpy(old, stored, sizeof(old));
   if (dt > 0.0)
     rotate_sym(rotation, old, rotated);
   else
     std::copy(old, old + 6, rotated);
   std::copy(rotated, rotated + 6, now);
-  for (int l = 0; l < kLanes; ++l) {
+  // A law without history that offers a lane form (ElasticPoint) updates all lanes at once.
+  constexpr bool kLaneLaw = !kThermal && requires(const Law& m, const Lanes* in, Lanes* out) {
+    m.update_lanes(in, in, out);
+  };
+  if constexpr (kLaneLaw) {
+    if (dt > 0.0) law.update_lanes(rotated, strain_increment, now);
+  }
+  for (int l = 0; l < kLanes && !kLaneLaw; ++l) {
     if (!updates(l)) continue;
     const std::size_t e = index[l];
     const Sym3 rotated_l{lane_of(rotated, l)}, increment{lane_of(strain_increment, l)};
@@ -276,17 +283,18 @@ void SolidBlock::Impl::batch(std::size_t first, const NodalState& s, double dt, 
   // part of the stored stress; its work goes to the internal energy.
   Lanes bulk_q = zero, q_speed = zero;
   if (dt > 0.0) {
-    for (int l = 0; l < kLanes; ++l) {
-      const double volume_rate =
-          (strain_increment[0][l] + strain_increment[1][l] + strain_increment[2][l]) / dt;
-      if (volume_rate < 0.0) {
-        const double length = std::cbrt(g.volume[l]);
-        q_speed[l] =
-            bulk_viscosity_linear * wave_speed - bulk_viscosity_quadratic * length * volume_rate;
-        bulk_q[l] = -density * length * q_speed[l] * volume_rate;
-        internal[l] += -bulk_q[l] * volume_rate * dt * mid_volume[l];
-      }
-    }
+    const Lanes volume_rate =
+        (strain_increment[0] + strain_increment[1] + strain_increment[2]) / dt;
+    const auto compressed = volume_rate < 0.0;
+    Lanes length = zero;  // the cube root only where it is needed
+    for (int l = 0; l < kLanes; ++l)
+      if (compressed[l]) length[l] = std::cbrt(g.volume[l]);
+    const Lanes speed =
+        bulk_viscosity_linear * wave_speed - bulk_viscosity_quadratic * length * volume_rate;
+    const Lanes pressure = -density * length * speed * volume_rate;
+    q_speed = compressed ? speed : zero;
+    bulk_q = compressed ? pressure : zero;
+    internal = compressed ? internal + -pressure * volume_rate * dt * mid_volume : internal;
   }
 
   // 4. Hourglass forces. With gamma_alpha(a) = h_alpha(a)/8 - (m_alpha . b_a)/V and the moment
@@ -301,8 +309,10 @@ void SolidBlock::Impl::batch(std::size_t first, const NodalState& s, double dt, 
   const Lanes stiffness = hourglass_coefficient * 2.0 * shear_modulus * bb / g.volume;
   const Lanes* ws[3] = {w.x, w.y, w.z};
   Lanes q[12];
-  for (int i = 0; i < 12; ++i)
-    for (int l = 0; l < kLanes; ++l) q[i][l] = hourglass[12 * index[l] + i];
+  double* const stored_q = &hourglass[batched(first, 0, 12)];
+  std::memcpy(q, stored_q, sizeof(q));
+  Lanes q_old[12];
+  std::copy(q, q + 12, q_old);
   Lanes work = zero;
   for (int alpha = 0; alpha < 4; ++alpha) {
     const int k = 4 + alpha;
@@ -341,6 +351,7 @@ void SolidBlock::Impl::batch(std::size_t first, const NodalState& s, double dt, 
     }
   }
   Lanes nodal_force[3][8];
+  Lanes finite = internal - internal + (work - work);  // x - x: 0 if x is finite, else NaN
   for (int i = 0; i < 3; ++i) {
     Lanes modal_force[8];
     for (int k = 0; k < 8; ++k) {
@@ -348,6 +359,7 @@ void SolidBlock::Impl::batch(std::size_t first, const NodalState& s, double dt, 
     }
     for (int alpha = 0; alpha < 4; ++alpha) modal_force[4 + alpha] += 0.125 * q[3 * alpha + i];
     hex8_from_modes(modal_force, nodal_force[i]);
+    for (int a = 0; a < 8; ++a) finite += nodal_force[i][a] - nodal_force[i][a];
   }
 
   // 6. Stable step.
@@ -359,25 +371,26 @@ void SolidBlock::Impl::batch(std::size_t first, const NodalState& s, double dt, 
   const Lanes step =
       critical_step(hex8_critical_length(product, g.volume, lame_lambda, lame_mu), q_speed);
 
-  // The results, element by element.
+  // The results. The batch's state whole: the elements updated take the new, the others keep
+  // theirs (failed, eroded, or lanes past the end).
+  using LaneMask = decltype(zero < zero);
+  LaneMask write{};
+  for (int l = 0; l < kLanes; ++l) write[l] = updates(l) ? -1 : 0;
+  for (int comp = 0; comp < 6; ++comp) now[comp] = write ? now[comp] : old[comp];
+  for (int i = 0; i < 12; ++i) q[i] = write ? q[i] : q_old[i];
+  std::memcpy(stored, now, sizeof(now));
+  std::memcpy(stored_q, q, sizeof(q));
   for (int l = 0; l < kLanes; ++l) {
     if (!live[l]) continue;
     const std::size_t e = index[l];
     failure[e] = fails[l];
     if (fails[l]) continue;
-    for (int comp = 0; comp < 6; ++comp) stress[6 * e + comp] = now[comp][l];
-    for (int i = 0; i < 12; ++i) hourglass[12 * e + i] = q[i][l];
     internal_work[e] = internal[l];
     hourglass_work[e] = work[l];
     double* fe = &forces[24 * e];
-    double check = 0.0;
-    for (int a = 0; a < 8; ++a) {
-      for (int i = 0; i < 3; ++i) {
-        fe[3 * a + i] = -nodal_force[i][a][l];
-        check += std::abs(nodal_force[i][a][l]);
-      }
-    }
-    if (!std::isfinite(check + internal[l] + work[l])) {
+    for (int a = 0; a < 8; ++a)
+      for (int i = 0; i < 3; ++i) fe[3 * a + i] = -nodal_force[i][a][l];
+    if (!(finite[l] == 0.0)) {
       failure[e] = kNonFinite;
       continue;
     }
@@ -449,7 +462,7 @@ void SolidBlock::Impl::erode(BlockStep& out) {
     internal_energy -= element_internal[e];
     hourglass_energy -= element_hourglass[e];
     std::fill_n(&forces[24 * e], 24, 0.0);
-    std::fill_n(&stress[6 * e], 6, 0.0);
+    for (int c = 0; c < 6; ++c) stress[batched(e, c, 6)] = 0.0;
   }
 }
 

@@ -3,12 +3,18 @@
 // comparisons act lane by lane, l[i] reads or writes lane i. Kernels written as templates over
 // the value type (double or Lanes) evaluate kLanes elements at once with exactly the arithmetic
 // of one, operation for operation, so results do not depend on which lane an element takes.
-// Without AVX the compiler splits a vector into SSE2 pairs; the results are the same.
+// The width follows the build's instruction set (CMake option ABUT_NATIVE): eight doubles with
+// AVX-512, else four (without AVX the compiler splits them into SSE2 pairs). The results are the
+// same for any width.
 #include <cmath>
 
 namespace abut {
 
+#if defined(__AVX512F__)
+inline constexpr int kLanes = 8;
+#else
 inline constexpr int kLanes = 4;
+#endif
 using Lanes = double __attribute__((vector_size(sizeof(double) * kLanes)));
 
 // The few functions templates over double and Lanes need, lane by lane (min and max as std::min

@@ -17,11 +17,18 @@ struct LameConstants {
 LameConstants lame_constants(const ElasticParams& p);
 
 // Hooke's law for a strain increment (or strain): lambda tr(d) I + 2 mu d.
-inline Sym3 hooke(const LameConstants& m, const Sym3& d) {
-  const double volumetric = m.lambda * trace(d);
+// On plain arrays in Sym3 order, for T = double or Lanes (lanes.hpp).
+template <class T>
+inline void hooke_of(const LameConstants& m, const T d[6], T out[6]) {
+  const T volumetric = m.lambda * (d[0] + d[1] + d[2]);
   const double two_mu = 2.0 * m.mu;
-  return {{volumetric + two_mu * d[0], volumetric + two_mu * d[1], volumetric + two_mu * d[2],
-           two_mu * d[3], two_mu * d[4], two_mu * d[5]}};
+  for (int i = 0; i < 3; ++i) out[i] = volumetric + two_mu * d[i];
+  for (int i = 3; i < 6; ++i) out[i] = two_mu * d[i];
+}
+inline Sym3 hooke(const LameConstants& m, const Sym3& d) {
+  Sym3 out;
+  hooke_of(m, d.c.data(), out.c.data());
+  return out;
 }
 
 }  // namespace abut

@@ -30,6 +30,14 @@ struct ElasticPoint {
               PointHistory& /*history*/) const {
     return add(rotated, hooke(lame, increment));
   }
+  // The same on several points at once (T = Lanes, lanes.hpp; arrays in Sym3 order): a law
+  // without history may offer this form, which the hexahedron kernel then uses.
+  template <class T>
+  void update_lanes(const T rotated[6], const T increment[6], T out[6]) const {
+    T h[6];
+    hooke_of(lame, increment, h);
+    for (int i = 0; i < 6; ++i) out[i] = rotated[i] + h[i];
+  }
   // The law at an element temperature (issue 11): Hooke's law does not depend on it.
   ElasticPoint at_temperature(double /*temperature*/) const { return *this; }
 };
