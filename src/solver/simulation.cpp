@@ -176,25 +176,29 @@ void Simulation::Impl::kick() {
   const double dt_kick = dt_next > 0.0 ? dt_next : dt_prev;
   const double dt_avg = n == 0 ? 0.5 * dt_kick : 0.5 * (dt_prev + dt_kick);
 
-  ox.assign(vhx.begin(), vhx.end());  // v^{n-1/2} (same size every cycle: no allocation)
-  oy.assign(vhy.begin(), vhy.end());
-  oz.assign(vhz.begin(), vhz.end());
+  // v^{n-1/2} moves to ox, oy, oz by swapping the arrays (no copy), and the kick writes
+  // v^{n+1/2} from it into every entry of vhx, vhy, vhz.
+  ox.resize(n_nodes), oy.resize(n_nodes), oz.resize(n_nodes);  // sized once
+  ox.swap(vhx);
+  oy.swap(vhy);
+  oz.swap(vhz);
   const std::int64_t nn = static_cast<std::int64_t>(n_nodes);
 #pragma omp parallel for schedule(static) if (nn >= kParallelMinimum)
   for (std::int64_t i = 0; i < nn; ++i) {
-    vhx[i] += dt_avg * fx[i] * inverse_mass[i];
-    vhy[i] += dt_avg * fy[i] * inverse_mass[i];
-    vhz[i] += dt_avg * fz[i] * inverse_mass[i];
+    vhx[i] = ox[i] + dt_avg * fx[i] * inverse_mass[i];
+    vhy[i] = oy[i] + dt_avg * fy[i] * inverse_mass[i];
+    vhz[i] = oz[i] + dt_avg * fz[i] * inverse_mass[i];
   }
   if (rotations()) {
-    owx.assign(whx.begin(), whx.end());
-    owy.assign(why.begin(), why.end());
-    owz.assign(whz.begin(), whz.end());
+    owx.resize(n_nodes), owy.resize(n_nodes), owz.resize(n_nodes);
+    owx.swap(whx);
+    owy.swap(why);
+    owz.swap(whz);
 #pragma omp parallel for schedule(static) if (nn >= kParallelMinimum)
     for (std::int64_t i = 0; i < nn; ++i) {
-      whx[i] += dt_avg * mx[i] * inverse_rotary_inertia[i];
-      why[i] += dt_avg * my[i] * inverse_rotary_inertia[i];
-      whz[i] += dt_avg * mz[i] * inverse_rotary_inertia[i];
+      whx[i] = owx[i] + dt_avg * mx[i] * inverse_rotary_inertia[i];
+      why[i] = owy[i] + dt_avg * my[i] * inverse_rotary_inertia[i];
+      whz[i] = owz[i] + dt_avg * mz[i] * inverse_rotary_inertia[i];
     }
   }
   // Rigid bodies: resultant force and moment about the centre of mass (with the moments that
@@ -407,18 +411,21 @@ void Simulation::Impl::apply_rigid_boundaries(double dt_avg) {
 }
 
 void Simulation::Impl::drift() {
-  good_x = x;
-  good_y = y;
-  good_z = z;
+  // x^n is kept as the last good state by swapping the arrays (no copy); the drift writes x^{n+1}
+  // into every entry (rigid bodies' nodes: unchanged here, placed below).
+  good_x.resize(n_nodes), good_y.resize(n_nodes), good_z.resize(n_nodes);  // sized once
+  good_x.swap(x);
+  good_y.swap(y);
+  good_z.swap(z);
   good_t = t;
   const double dt = dt_next;
   const std::int64_t nn = static_cast<std::int64_t>(n_nodes);
 #pragma omp parallel for schedule(static) if (nn >= kParallelMinimum)
   for (std::int64_t i = 0; i < nn; ++i) {
-    if (rigid_body_of_node[i] >= 0) continue;
-    x[i] += dt * vhx[i];
-    y[i] += dt * vhy[i];
-    z[i] += dt * vhz[i];
+    const bool rigid = rigid_body_of_node[i] >= 0;
+    x[i] = rigid ? good_x[i] : good_x[i] + dt * vhx[i];
+    y[i] = rigid ? good_y[i] : good_y[i] + dt * vhy[i];
+    z[i] = rigid ? good_z[i] : good_z[i] + dt * vhz[i];
   }
   for (RigidBody& body : bodies) {
     body.centre += dt * body.velocity;
@@ -440,8 +447,9 @@ void Simulation::Impl::drift() {
   dt_prev = dt;
   compute_forces(dt);
   bool finite = true;
-  for (std::size_t i = 0; i < n_nodes && finite; ++i)
-    finite = std::isfinite(x[i] + y[i] + z[i] + fx[i] + fy[i] + fz[i]);
+#pragma omp parallel for schedule(static) reduction(&& : finite) if (nn >= kParallelMinimum)
+  for (std::int64_t i = 0; i < nn; ++i)
+    finite = finite && std::isfinite(x[i] + y[i] + z[i] + fx[i] + fy[i] + fz[i]);
   if (!finite)
     throw InstabilityError("non-finite coordinates or forces at cycle " + std::to_string(n) +
                            ", t = " + std::to_string(t));
