@@ -2,10 +2,11 @@
 // erosion. The mechanics are described at the top of solid_block.cpp.
 //
 // Evaluation: kLanes elements at once (lanes.hpp). Every step that is the same arithmetic for all
-// elements (the modal transforms, gradients, rates, rotation, hourglass forces, nodal forces) runs
-// on Lanes, one element per lane; the material law, the bulk viscosity and the eigenvalue of the
-// stable step run element by element. Each lane sees exactly the operations of a lone element, so
-// the results do not depend on the batching or on the number of threads.
+// elements (the modal transforms, gradients, rates, rotation, Hooke's law, hourglass forces, nodal
+// forces, stable step) runs on Lanes, one element per lane; laws with history, the bulk
+// viscosity's cube root, the gather of the nodes and the writes of the results run element by
+// element. Each lane sees exactly the operations of a lone element, so the results do not depend
+// on the batching or on the number of threads.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -106,9 +107,10 @@ void SolidBlock::Impl::clear_eroded(std::size_t e) {
 
 template <class Law, bool kThermal>
 void SolidBlock::Impl::batch(std::size_t first, const NodalState& s, double dt, const Law& law) {
-  // The lanes: elements first + l. Lanes past the block's end repeat its last element and
-  // eroded elements are evaluated as they are; neither writes anything. A lane that fails
-  // (inverted) keeps its state and writes only its failure, as a lone element would.
+  // The lanes: elements first + l. Lanes past the block's end repeat its last element, and
+  // eroded elements are evaluated as they are; neither changes its state (an eroded element's
+  // forces, work and step are cleared here). A lane that fails (inverted) keeps its state and
+  // writes only its failure, as a lone element would.
   const std::size_t n = hexes.size();
   std::size_t index[kLanes];
   bool live[kLanes];
