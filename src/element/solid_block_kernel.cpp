@@ -208,63 +208,90 @@ void SolidBlock::Impl::batch(std::size_t first, const NodalState& s, double dt, 
   if constexpr (kLaneLaw) {
     if (dt > 0.0) law.update_lanes(rotated, strain_increment, now);
   }
-  for (int l = 0; l < kLanes && !kLaneLaw; ++l) {
-    if (!updates(l)) continue;
-    const std::size_t e = index[l];
-    const Sym3 rotated_l{lane_of(rotated, l)}, increment{lane_of(strain_increment, l)};
-    Sym3 now_l;
-    if constexpr (kThermal) {  // hypoelastic point laws coupled to the temperature
-      // The element temperature, and the thermal strain increment alpha dT I of its change
-      // since the last update taken out of the total increment (the mechanical strain drives
-      // the law).
-      double temperature = 0.0;
-      for (int a = 0; a < 8; ++a)
-        temperature += s.temperature[static_cast<std::size_t>(hexes[e][a])];
-      temperature *= 0.125;
-      double& last = element_temperature[e];
-      const double change = temperature_started ? temperature - last : 0.0;
-      last = temperature;
-      now_l = Sym3{lane_of(old, l)};
-      if (!element_plastic_work.empty()) element_plastic_work[e] = 0.0;
+  constexpr bool kRubber = std::is_same_v<Law, RubberLaw>;
+  if constexpr (kRubber) {
+    // F = sum_k c_k (x) R_k (deformation_gradient), its elastic stress, and the viscous stresses
+    // rotated and recursively updated (mooney_rivlin.hpp), on the lanes.
+    Lanes r0[kReferenceModes];
+    for (std::size_t m = 0; m < kReferenceModes; ++m)
+      for (int l = 0; l < kLanes; ++l)
+        r0[m][l] = reference_gradient[kReferenceModes * index[l] + m];
+    const Lanes* cs[3] = {c.x, c.y, c.z};
+    Lanes f[9];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        Lanes sum = zero;
+        for (int k = 1; k < 7; ++k) sum += cs[i][k] * r0[6 * j + k - 1];
+        f[3 * i + j] = sum;
+      }
+    mooney_rivlin_stress_of(*law.params, f, now);
+    const Lanes mean = (strain_increment[0] + strain_increment[1] + strain_increment[2]) / 3.0;
+    Lanes dev_increment[6];
+    for (int comp = 0; comp < 6; ++comp)
+      dev_increment[comp] = comp < 3 ? strain_increment[comp] - mean : strain_increment[comp];
+    const auto terms = static_cast<std::size_t>(viscous_terms);
+    for (int k = 0; k < viscous_terms; ++k) {
+      const auto at = [&](int l, int comp) {  // term k of the element in lane l
+        return (terms * index[l] + static_cast<std::size_t>(k)) * 6 +
+               static_cast<std::size_t>(comp);
+      };
+      Lanes h[6];
+      for (int comp = 0; comp < 6; ++comp)
+        for (int l = 0; l < kLanes; ++l) h[comp][l] = viscous[at(l, comp)];
       if (dt > 0.0) {
-        Sym3 mechanical = increment;
-        for (int i = 0; i < 3; ++i) mechanical[i] -= coupling.expansion * change;
-        PointHistory none;
-        PointHistory& h = history.empty() ? none : history[e];
-        const double before = h.plastic_strain;
-        now_l = law.at_temperature(temperature).update(rotated_l, mechanical, dt, h);
-        // J2 flow: d eps_p = dp (3/2) s / q, so sigma : d eps_p = q dp with q the von Mises
-        // stress after the return (the flow stress).
-        if (!element_plastic_work.empty())
-          element_plastic_work[e] = von_mises(now_l) * (h.plastic_strain - before) * mid_volume[l];
+        Lanes hr[6];
+        rotate_sym(rotation, h, hr);
+        for (int comp = 0; comp < 6; ++comp)
+          h[comp] = law.viscous.decay[k] * hr[comp] + law.viscous.gain[k] * dev_increment[comp];
+        for (int l = 0; l < kLanes; ++l)
+          if (updates(l))
+            for (int comp = 0; comp < 6; ++comp) viscous[at(l, comp)] = h[comp][l];
       }
-    } else if constexpr (!std::is_same_v<Law, RubberLaw>) {  // hypoelastic laws (point_law.hpp)
-      now_l = Sym3{lane_of(old, l)};
-      if (dt > 0.0) {
-        PointHistory none;
-        now_l = law.update(rotated_l, increment, dt, history.empty() ? none : history[e]);
-      }
-    } else {
-      const Mat3 f = deformation_gradient(lane_of(c, l), &reference_gradient[kReferenceModes * e]);
-      now_l = mooney_rivlin_stress(*law.params, f);
-      const Sym3 dev_increment = deviator(increment);
-      const Mat3 rotation_l = lane_of(rotation, l);
-      double* viscous_stress =
-          viscous.data() + 6 * static_cast<std::size_t>(viscous_terms) * e;  // may be empty
-      for (int k = 0; k < viscous_terms; ++k) {
-        double* hk = viscous_stress + 6 * k;
-        Sym3 h{{hk[0], hk[1], hk[2], hk[3], hk[4], hk[5]}};
-        if (dt > 0.0) {
-          const Sym3 hr = rotate(rotation_l, h);
-          for (int comp = 0; comp < 6; ++comp) {
-            h[comp] = law.viscous.decay[k] * hr[comp] + law.viscous.gain[k] * dev_increment[comp];
-            hk[comp] = h[comp];
-          }
-        }
-        now_l = add(now_l, h);
-      }
+      for (int comp = 0; comp < 6; ++comp) now[comp] = now[comp] + h[comp];
     }
-    for (int comp = 0; comp < 6; ++comp) now[comp][l] = now_l[comp];
+  }
+  // Other laws (with history), element by element.
+  if constexpr (!kLaneLaw && !kRubber) {
+    for (int l = 0; l < kLanes; ++l) {
+      if (!updates(l)) continue;
+      const std::size_t e = index[l];
+      const Sym3 rotated_l{lane_of(rotated, l)}, increment{lane_of(strain_increment, l)};
+      Sym3 now_l;
+      if constexpr (kThermal) {  // hypoelastic point laws coupled to the temperature
+        // The element temperature, and the thermal strain increment alpha dT I of its change
+        // since the last update taken out of the total increment (the mechanical strain drives
+        // the law).
+        double temperature = 0.0;
+        for (int a = 0; a < 8; ++a)
+          temperature += s.temperature[static_cast<std::size_t>(hexes[e][a])];
+        temperature *= 0.125;
+        double& last = element_temperature[e];
+        const double change = temperature_started ? temperature - last : 0.0;
+        last = temperature;
+        now_l = Sym3{lane_of(old, l)};
+        if (!element_plastic_work.empty()) element_plastic_work[e] = 0.0;
+        if (dt > 0.0) {
+          Sym3 mechanical = increment;
+          for (int i = 0; i < 3; ++i) mechanical[i] -= coupling.expansion * change;
+          PointHistory none;
+          PointHistory& h = history.empty() ? none : history[e];
+          const double before = h.plastic_strain;
+          now_l = law.at_temperature(temperature).update(rotated_l, mechanical, dt, h);
+          // J2 flow: d eps_p = dp (3/2) s / q, so sigma : d eps_p = q dp with q the von Mises
+          // stress after the return (the flow stress).
+          if (!element_plastic_work.empty())
+            element_plastic_work[e] =
+                von_mises(now_l) * (h.plastic_strain - before) * mid_volume[l];
+        }
+      } else {  // hypoelastic laws (point_law.hpp)
+        now_l = Sym3{lane_of(old, l)};
+        if (dt > 0.0) {
+          PointHistory none;
+          now_l = law.update(rotated_l, increment, dt, history.empty() ? none : history[e]);
+        }
+      }
+      for (int comp = 0; comp < 6; ++comp) now[comp][l] = now_l[comp];
+    }
   }
   // Trapezoidal work 0.5 (sigma_rot + sigma_new) : D dt V_mid (double_dot of sym_tensor.hpp).
   Lanes internal = zero;

@@ -24,6 +24,11 @@ inline Lanes sqrt_of(Lanes x) {
   for (int l = 0; l < kLanes; ++l) x[l] = std::sqrt(x[l]);
   return x;
 }
+inline double pow_of(double x, double y) { return std::pow(x, y); }
+inline Lanes pow_of(Lanes x, double y) {
+  for (int l = 0; l < kLanes; ++l) x[l] = std::pow(x[l], y);
+  return x;
+}
 template <class T>
 inline T min_of(T a, T b) {
   return b < a ? b : a;

@@ -28,6 +28,7 @@
 // update).
 #include <array>
 
+#include "abut/core/lanes.hpp"
 #include "abut/material/material.hpp"
 #include "abut/material/sym_tensor.hpp"
 
@@ -35,6 +36,35 @@ namespace abut {
 
 // Elastic Cauchy stress of the deformation gradient F (invariant evaluation above).
 Sym3 mooney_rivlin_stress(const MooneyRivlinParams& p, const Mat3& deformation_gradient);
+
+// The same on plain arrays (f row-major, s in Sym3 order) for T = double or Lanes (lanes.hpp):
+// mooney_rivlin_stress is this with T = double.
+template <class T>
+inline void mooney_rivlin_stress_of(const MooneyRivlinParams& p, const T f[9], T s[6]) {
+  // Invariant form (above): sigma = (2/J) dev[(C1 + C2 I1_bar) b_bar - C2 b_bar^2]
+  // + K (J - 1) I, no eigen-decomposition.
+  const T det = f[0] * (f[4] * f[8] - f[5] * f[7]) - f[1] * (f[3] * f[8] - f[5] * f[6]) +
+                f[2] * (f[3] * f[7] - f[4] * f[6]);
+  const T iso = pow_of(det, -2.0 / 3.0);
+  const auto row_dot = [&](int i, int j) {
+    return iso * (f[3 * i] * f[3 * j] + f[3 * i + 1] * f[3 * j + 1] + f[3 * i + 2] * f[3 * j + 2]);
+  };
+  // b_bar in Sym3 order xx, yy, zz, xy, yz, zx.
+  const T b[6] = {row_dot(0, 0), row_dot(1, 1), row_dot(2, 2),
+                  row_dot(0, 1), row_dot(1, 2), row_dot(2, 0)};
+  // b_bar^2, same order.
+  const T b2[6] = {
+      b[0] * b[0] + b[3] * b[3] + b[5] * b[5], b[3] * b[3] + b[1] * b[1] + b[4] * b[4],
+      b[5] * b[5] + b[4] * b[4] + b[2] * b[2], b[0] * b[3] + b[3] * b[1] + b[5] * b[4],
+      b[3] * b[5] + b[1] * b[4] + b[4] * b[2], b[5] * b[0] + b[4] * b[3] + b[2] * b[5]};
+  const T i1 = b[0] + b[1] + b[2];
+  const T factor = p.c1 + p.c2 * i1;
+  const T two_over_j = 2.0 / det;
+  for (int c = 0; c < 6; ++c) s[c] = two_over_j * (factor * b[c] - p.c2 * b2[c]);
+  const T mean = (s[0] + s[1] + s[2]) / 3.0;
+  const T pressure_part = p.bulk * (det - 1.0);  // -p with p = -K eps_v, eps_v = J - 1
+  for (int c = 0; c < 3; ++c) s[c] += pressure_part - mean;
+}
 
 // The active viscous terms and their exponential-integrator factors for one step of length dt,
 // applied to the strain increment dev(D) dt:  h_k <- decay[k] h_k + gain[k] dev(D) dt, so
