@@ -2,11 +2,11 @@
 // erosion. The mechanics are described at the top of solid_block.cpp.
 //
 // Evaluation: kLanes elements at once (lanes.hpp). Every step that is the same arithmetic for all
-// elements (the modal transforms, gradients, rates, rotation, Hooke's law, hourglass forces, nodal
-// forces, stable step) runs on Lanes, one element per lane; laws with history, the bulk
-// viscosity's cube root, the gather of the nodes and the writes of the results run element by
-// element. Each lane sees exactly the operations of a lone element, so the results do not depend
-// on the batching or on the number of threads.
+// elements (the modal transforms, gradients, rates, rotation, Hooke's law, the Mooney-Rivlin
+// stress, hourglass forces, nodal forces, stable step) runs on Lanes, one element per lane; laws
+// with history (metals), the bulk viscosity's cube root, the gather of the nodes and the writes of
+// the results run element by element. Each lane sees exactly the operations of a lone element, so
+// the results do not depend on the batching or on the number of threads.
 #include <algorithm>
 #include <array>
 #include <cmath>
