@@ -46,23 +46,24 @@ template <class T>
 }
 
 // F = sum_a x_a (x) B0_a = sum_k c_k (x) R_k with R_k = 8 G0_k / V0 of the reference
-// configuration (hex8.hpp), r0[6 j + k - 1] = component j of R_k.
-Mat3 deformation_gradient(const Hex8Modes& c, const double* r0) {
-  const double* cs[3] = {c.x, c.y, c.z};
-  Mat3 f{};
+// configuration (hex8.hpp), r0[6 j + k - 1] = component j of R_k; f row-major. T = double or
+// Lanes.
+template <class T>
+void deformation_gradient(const Hex8ModesOf<T>& c, const T* r0, T f[9]) {
+  const T* cs[3] = {c.x, c.y, c.z};
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
-      double sum = 0.0;
+      T sum{};
       for (int k = 1; k < 7; ++k) sum += cs[i][k] * r0[6 * j + k - 1];
       f[3 * i + j] = sum;
     }
-  return f;
 }
 
 // Effective deviatoric logarithmic strain sqrt(2/3 e_dev:e_dev) of F (deformation_gradient),
 // from the eigenvalues of C = F^T F: e_i = ln(lambda_i) / 2.
 double deviatoric_log_strain(const Hex8Modes& c, const double* r0) {
-  const Mat3 f = deformation_gradient(c, r0);
+  Mat3 f;
+  deformation_gradient(c, r0, f.data());
   Sym3 right_cauchy_green;
   const int pairs[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
   for (int q = 0; q < 6; ++q) {
@@ -216,19 +217,11 @@ void SolidBlock::Impl::batch(std::size_t first, const NodalState& s, double dt, 
     for (std::size_t m = 0; m < kReferenceModes; ++m)
       for (int l = 0; l < kLanes; ++l)
         r0[m][l] = reference_gradient[kReferenceModes * index[l] + m];
-    const Lanes* cs[3] = {c.x, c.y, c.z};
     Lanes f[9];
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        Lanes sum = zero;
-        for (int k = 1; k < 7; ++k) sum += cs[i][k] * r0[6 * j + k - 1];
-        f[3 * i + j] = sum;
-      }
+    deformation_gradient(c, r0, f);
     mooney_rivlin_stress_of(*law.params, f, now);
-    const Lanes mean = (strain_increment[0] + strain_increment[1] + strain_increment[2]) / 3.0;
     Lanes dev_increment[6];
-    for (int comp = 0; comp < 6; ++comp)
-      dev_increment[comp] = comp < 3 ? strain_increment[comp] - mean : strain_increment[comp];
+    deviator_of(strain_increment, dev_increment);
     const auto terms = static_cast<std::size_t>(viscous_terms);
     for (int k = 0; k < viscous_terms; ++k) {
       const auto at = [&](int l, int comp) {  // term k of the element in lane l
@@ -293,16 +286,12 @@ void SolidBlock::Impl::batch(std::size_t first, const NodalState& s, double dt, 
       for (int comp = 0; comp < 6; ++comp) now[comp][l] = now_l[comp];
     }
   }
-  // Trapezoidal work 0.5 (sigma_rot + sigma_new) : D dt V_mid (double_dot of sym_tensor.hpp).
+  // Trapezoidal work 0.5 (sigma_rot + sigma_new) : D dt V_mid.
   Lanes internal = zero;
   if (dt > 0.0) {
     Lanes sum[6];
     for (int comp = 0; comp < 6; ++comp) sum[comp] = rotated[comp] + now[comp];
-    const Lanes dot = sum[0] * strain_increment[0] + sum[1] * strain_increment[1] +
-                      sum[2] * strain_increment[2] +
-                      2.0 * (sum[3] * strain_increment[3] + sum[4] * strain_increment[4] +
-                             sum[5] * strain_increment[5]);
-    internal = 0.5 * dot * mid_volume;
+    internal = 0.5 * double_dot_of(sum, strain_increment) * mid_volume;
   }
 
   // 3. Artificial bulk viscosity in compression (von Neumann-Richtmyer quadratic plus a linear

@@ -24,15 +24,27 @@ inline Sym3 add(const Sym3& a, const Sym3& b) {
   return s;
 }
 
-// Deviatoric part s - tr(s)/3 I.
+// Deviatoric part s - tr(s)/3 I; on plain arrays in Sym3 order for T = double or Lanes
+// (lanes.hpp).
+template <class T>
+inline void deviator_of(const T s[6], T out[6]) {
+  const T mean = (s[0] + s[1] + s[2]) / 3.0;
+  for (int i = 0; i < 3; ++i) out[i] = s[i] - mean;
+  for (int i = 3; i < 6; ++i) out[i] = s[i];
+}
 inline Sym3 deviator(const Sym3& s) {
-  const double mean = trace(s) / 3.0;
-  return {{s[0] - mean, s[1] - mean, s[2] - mean, s[3], s[4], s[5]}};
+  Sym3 d;
+  deviator_of(s.c.data(), d.c.data());
+  return d;
 }
 
-// Full contraction a:b.
-inline double double_dot(const Sym3& a, const Sym3& b) {
+// Full contraction a:b; on plain arrays as above.
+template <class T>
+inline T double_dot_of(const T a[6], const T b[6]) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + 2.0 * (a[3] * b[3] + a[4] * b[4] + a[5] * b[5]);
+}
+inline double double_dot(const Sym3& a, const Sym3& b) {
+  return double_dot_of(a.c.data(), b.c.data());
 }
 
 // von Mises equivalent stress sqrt(3/2 s:s) with s the deviator.
