@@ -43,8 +43,13 @@ QuadProjection project_onto_quad(const QuadCorners& c, const Vec3& p) {
     const double dxi = -(a11 * g0 - a01 * g1) / det;
     const double deta = -(a00 * g1 - a01 * g0) / det;
     // Iterates far outside the facet only tell that the closest point is on the boundary.
-    xi = std::clamp(xi + dxi, -2.0, 2.0);
-    eta = std::clamp(eta + deta, -2.0, 2.0);
+    const double next_xi = std::clamp(xi + dxi, -2.0, 2.0);
+    const double next_eta = std::clamp(eta + deta, -2.0, 2.0);
+    // Held at the clamp (a point far beyond a flat facet's edge): every further iteration would
+    // repeat this one.
+    if (next_xi == xi && next_eta == eta) break;
+    xi = next_xi;
+    eta = next_eta;
     if (std::abs(dxi) + std::abs(deta) < 1e-13) break;
   }
   if (std::abs(xi) <= 1.0 + kInsideTolerance && std::abs(eta) <= 1.0 + kInsideTolerance) {
