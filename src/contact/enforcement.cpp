@@ -114,8 +114,9 @@ Partner ContactInterface::partner_of(const Pass& pass, std::size_t p, const Poin
   const TargetFacets facets = target_facets(target, target.depth, in, bands_current_);
   PartnerRules rules = partner_rules(own, p);
   const auto first = pass.candidates.offsets[p], last = pass.candidates.offsets[p + 1];
+  const PartnerHint hint{previous, pass.hit_xi[p], pass.hit_eta[p]};
   const Partner h = find_partner(facets, {pass.candidates.facets.data() + first, last - first},
-                                 f.nodes, f.x, f.normal, rules, previous);
+                                 f.nodes, f.x, f.normal, rules, hint);
   if (h.facet >= 0 || previous < 0) return h;
   // A point in contact last step that is now deeper than the other side's detection depth (its
   // facets are thinner than the point's own elements) keeps its partner or a neighbour of it, down
@@ -135,7 +136,7 @@ Partner ContactInterface::partner_of(const Pass& pass, std::size_t p, const Poin
   rules.point_depth = own.point_depth[p];  // as deep as either side's elements reach
   TargetFacets around = facets;
   around.bands = {};  // the neighbours need not be anyone's candidates
-  return find_partner(around, {near.data(), count}, f.nodes, f.x, f.normal, rules, previous);
+  return find_partner(around, {near.data(), count}, f.nodes, f.x, f.normal, rules, hint);
 }
 
 double ContactInterface::spring(const Side& own, std::size_t p, double area, const Side& target,
@@ -155,6 +156,13 @@ double ContactInterface::spring(const Side& own, std::size_t p, double area, con
   }
   const double km = f >= 0 ? target.facet_km[f] : target.max_km;
   return combined_stiffness(settings_.stiffness, km, own.point_ks[p]) * own.point_share[p] * scale;
+}
+
+bool ContactInterface::quiet(const Pass& pass, std::size_t p) const {
+  return pass.candidates.offsets[p] == pass.candidates.offsets[p + 1] && !pass.hit[p] &&
+         pass.state[p] != kTied && pass.htx[p] == 0.0 && pass.hty[p] == 0.0 && pass.htz[p] == 0.0 &&
+         !pass.sliding[p] && pass.offset[p] == 0.0 && !pass.adhered[p] &&
+         (pass.heat_facet.empty() || pass.heat_facet[p] < 0);
 }
 
 void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactInput& in) {

@@ -113,6 +113,7 @@ void ContactInterface::rebuild_broad_phase(const ContactInput& in) {
     pass.grid.query(q.x, q.y, q.z, pass.candidates, keep);
   }
   rebuild_pending_ = false;
+  awake_current_ = false;
   update_near_bound();
   update_near_facets();
   if (edges_) edges_->rebuild(in.x, in.y, in.z);
@@ -165,6 +166,7 @@ void ContactInterface::archive(StateArchive& a) {
   a.values(sides_, passes_, mass_, bx_, by_, bz_, wear_, pressure_, margin_, initial_stable_step_,
            builds_, rebuild_pending_, gap_pairs_, edges_, stats_);
   if (!a.saving()) {
+    awake_current_ = false;
     update_near_bound();
     update_near_facets();
   }
@@ -265,16 +267,26 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   const bool per_point = speed2 > 0.0 && !edges_ && in.dt >= 0.5 * near_spring_step;
   const double speed = std::sqrt(speed2);
   double near_step = kInfinity;
+  // Quiet points stay so until the next build: after a build every point is evaluated once and
+  // the others listed; until the next one only those are.
   for (Pass& pass : passes_) {
-    const std::size_t n = pass.state.size();
+    const bool every = !awake_current_;
+    const std::size_t n = every ? pass.state.size() : pass.awake.size();
 #pragma omp parallel for schedule(dynamic, 256) \
     reduction(min                               \
               : near_step) if (n >= static_cast <std::size_t>(kParallelMinimum) / 4)
-    for (std::size_t p = 0; p < n; ++p) {
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t p = every ? k : static_cast<std::size_t>(pass.awake[k]);
       evaluate_point(pass, p, in);
       if (per_point) near_step = std::min(near_step, approach_limit(pass, p, in, speed, near_step));
     }
+    if (every) {
+      pass.awake.clear();
+      for (std::size_t p = 0; p < pass.state.size(); ++p)
+        if (!quiet(pass, p)) pass.awake.push_back(static_cast<std::int32_t>(p));
+    }
   }
+  awake_current_ = true;
   bands_current_ = false;
   scatter(in, out, !per_point);
   stats_.approach_step = std::min(stats_.approach_step, near_step);

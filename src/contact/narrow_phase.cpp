@@ -33,7 +33,7 @@ bool initially_within(const PartnerRules& rules, const std::array<std::int32_t, 
 
 Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> candidates,
                      const std::array<std::int32_t, 4>& own_nodes, const Vec3& x_p, const Vec3& n_p,
-                     const PartnerRules& rules, std::int32_t first) {
+                     const PartnerRules& rules, const PartnerHint& hint) {
   Partner best;
   double best_distance = std::numeric_limits<double>::infinity();
   const bool has_normal = n_p.x != 0.0 || n_p.y != 0.0 || n_p.z != 0.0;
@@ -80,7 +80,8 @@ Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> c
       if (rules.from_behind ? facing < -spread : facing > spread) return;
     }
     if (banded) gather();
-    const QuadProjection q = project_onto_quad(c, x_p);
+    const QuadProjection q =
+        f == hint.facet ? project_onto_quad(c, x_p, hint.xi, hint.eta) : project_onto_quad(c, x_p);
     if (shell && q.gap < 0.0) return;  // the other side of the shell
     double gap = q.gap - g;
     Vec3 push = q.normal;
@@ -119,6 +120,7 @@ Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> c
   };
   // The facet given first (last step's partner) makes the best distance small at once, so that
   // the box test passes over most of the others without projecting the point on them.
+  const std::int32_t first = hint.facet;
   const bool listed = first >= 0 && std::binary_search(candidates.begin(), candidates.end(), first);
   if (listed) consider(first);
   for (const std::int32_t f : candidates)

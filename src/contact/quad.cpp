@@ -22,15 +22,17 @@ void finish(const QuadCorners& c, const Vec3& p, QuadProjection& r) {
 
 }  // namespace
 
-QuadProjection project_onto_quad(const QuadCorners& c, const Vec3& p) {
+QuadProjection project_onto_quad(const QuadCorners& c, const Vec3& p, double xi, double eta) {
   QuadProjection r;
   // x(xi, eta) = x0 + xi a + eta b + xi eta h, so x_xi_xi = x_eta_eta = 0 and x_xi_eta = h.
+  const Vec3 x0 = (c[0] + c[1] + c[2] + c[3]) * 0.25;
+  const Vec3 a = (c[1] - c[0] + c[2] - c[3]) * 0.25;
+  const Vec3 b = (c[3] - c[0] + c[2] - c[1]) * 0.25;
   const Vec3 h = (c[0] - c[1] + c[2] - c[3]) * 0.25;
-  double xi = 0.0, eta = 0.0;
+  const Vec3 from = x0 - p;
   for (int it = 0; it < kMaxIterations; ++it) {
-    Vec3 d_xi, d_eta;
-    quad_tangents(c, xi, eta, d_xi, d_eta);
-    const Vec3 res = quad_point(c, xi, eta) - p;
+    const Vec3 d_xi = a + h * eta, d_eta = b + h * xi;
+    const Vec3 res = from + a * xi + d_eta * eta;
     const double g0 = dot(d_xi, res), g1 = dot(d_eta, res);
     const double a00 = dot(d_xi, d_xi), a11 = dot(d_eta, d_eta);
     double a01 = dot(d_xi, d_eta) + dot(h, res);
@@ -40,8 +42,9 @@ QuadProjection project_onto_quad(const QuadCorners& c, const Vec3& p) {
       det = a00 * a11 - a01 * a01;
       if (!(det > 0.0)) break;
     }
-    const double dxi = -(a11 * g0 - a01 * g1) / det;
-    const double deta = -(a00 * g1 - a01 * g0) / det;
+    const double inverse = 1.0 / det;
+    const double dxi = (a01 * g1 - a11 * g0) * inverse;
+    const double deta = (a01 * g0 - a00 * g1) * inverse;
     // Iterates far outside the facet only tell that the closest point is on the boundary.
     const double next_xi = std::clamp(xi + dxi, -2.0, 2.0);
     const double next_eta = std::clamp(eta + deta, -2.0, 2.0);
@@ -63,12 +66,11 @@ QuadProjection project_onto_quad(const QuadCorners& c, const Vec3& p) {
   constexpr double ref[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
   double best = -1.0;
   for (int e = 0; e < 4; ++e) {
-    const Vec3& a = c[e];
-    const Vec3& b = c[(e + 1) % 4];
-    const Vec3 ab = b - a;
-    const double len2 = dot(ab, ab);
-    const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-    const Vec3 q = a + ab * t;
+    const Vec3& start = c[e];
+    const Vec3 along = c[(e + 1) % 4] - start;
+    const double len2 = dot(along, along);
+    const double t = len2 > 0.0 ? std::clamp(dot(p - start, along) / len2, 0.0, 1.0) : 0.0;
+    const Vec3 q = start + along * t;
     const double d2 = dot(p - q, p - q);
     if (best < 0.0 || d2 < best) {
       best = d2;

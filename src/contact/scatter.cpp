@@ -19,7 +19,8 @@ void ContactInterface::scatter(const ContactInput& in, ContactForces& out, bool 
     const Side& own = sides_[pass.own];
     const Side& target = sides_[pass.target];
     const double w = pass.weight;
-    for (std::size_t p = 0; p < pass.hit.size(); ++p) {
+    for (const std::int32_t awake : pass.awake) {  // a quiet point has no partner
+      const auto p = static_cast<std::size_t>(awake);
       if (!pass.hit[p]) continue;
       const auto own_nodes = own.point_nodes(p);
       const auto& target_nodes = target.surface.facets[pass.hit_facet[p]];

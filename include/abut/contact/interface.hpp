@@ -220,6 +220,9 @@ class ContactInterface {
     // Empty when the contact exchanges no heat.
     std::vector<std::int32_t> heat_facet;
     std::vector<double> heat_xi, heat_eta, heat_conductance;
+    // The points that may act until the next build, in point order (apply; not archived: the
+    // first step after a restart finds them again). The others are quiet (ContactInterface::quiet).
+    std::vector<std::int32_t> awake;
     void archive(StateArchive& a) {
       a.values(own, target, weight, grid, candidates, state, sliding, adhered, approach_omega2,
                offset, shift, htx, hty, htz, tie_facet, tie_xi, tie_eta, hit, hit_facet, hit_xi,
@@ -277,6 +280,10 @@ class ContactInterface {
   double spring(const Side& own, std::size_t p, double area, const Side& target,
                 std::int32_t f) const;
   void evaluate_point(Pass& pass, std::size_t p, const ContactInput& in);
+  // A point without candidates, partner or tie, with nothing to forget (friction history, offset,
+  // bond) and no heat partner: evaluate_point leaves it as it is, and so it stays until a build
+  // gives it candidates.
+  bool quiet(const Pass& pass, std::size_t p) const;
   // Open points (open_points.cpp): whether this contact may skip them at all, the bands of the
   // facets near some point (after each build: which facets; at each step: their bands, which the
   // narrow phase's box test uses too), and whether the full evaluation of point p would surely
@@ -320,6 +327,7 @@ class ContactInterface {
   // Contact points per side as built (erosion adds more): what a restart file must match.
   std::vector<std::uint64_t> initial_points_;
   bool bands_current_ = false;  // the sides' bands are of this step (while apply evaluates)
+  bool awake_current_ = false;  // the passes' awake lists hold since the last build
   // The largest approach_omega2 of the points with a candidate facet at the last build.
   double near_omega2_ = 0.0;
   std::vector<double> x0_, y0_, z0_;  // initial coordinates (Igap 2 only)

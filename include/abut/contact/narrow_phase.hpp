@@ -83,12 +83,18 @@ inline PairReach pair_reach(const TargetFacets& target, std::int32_t f, const Pa
   return r;
 }
 
+// Last step's partner of a point and where the point lay on it.
+struct PartnerHint {
+  std::int32_t facet = -1;
+  double xi = 0.0, eta = 0.0;
+};
+
 // `own_nodes`: the nodes of the point's facet (a node-to-surface point: its node four times);
 // `normal`: the point's outward normal, or zero for a bare node. `candidates` in ascending facet
-// order; `first`, when among them, is looked at first (last step's partner: for speed only, the
-// result is the same).
+// order; the hint's facet, when among them, is looked at first and its projection starts at the
+// hint's (xi, eta) (for speed only: the result is the same to round-off).
 Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> candidates,
                      const std::array<std::int32_t, 4>& own_nodes, const Vec3& x,
-                     const Vec3& normal, const PartnerRules& rules, std::int32_t first = -1);
+                     const Vec3& normal, const PartnerRules& rules, const PartnerHint& hint = {});
 
 }  // namespace abut

@@ -65,9 +65,11 @@ struct QuadProjection {
   double overshoot = 0.0;
 };
 
-// Newton iteration on the stationarity of |x(xi, eta) - p|^2 from the centre; if the
-// stationary point lies outside [-1, 1]^2 the closest point is on the boundary and is found
-// exactly on the four straight edges.
-QuadProjection project_onto_quad(const QuadCorners& c, const Vec3& p);
+// Newton iteration on the stationarity of |x(xi, eta) - p|^2 from (xi, eta): the centre, or
+// where the point lay on this facet a step before (fewer iterations); if the stationary point
+// lies outside [-1, 1]^2 the closest point is on the boundary and is found exactly on the four
+// straight edges.
+QuadProjection project_onto_quad(const QuadCorners& c, const Vec3& p, double xi = 0.0,
+                                 double eta = 0.0);
 
 }  // namespace abut
