@@ -48,12 +48,12 @@ QuadProjection project_onto_quad(const QuadCorners& c, const Vec3& p, double xi,
     // Iterates far outside the facet only tell that the closest point is on the boundary.
     const double next_xi = std::clamp(xi + dxi, -2.0, 2.0);
     const double next_eta = std::clamp(eta + deta, -2.0, 2.0);
-    // Held at the clamp (a point far beyond a flat facet's edge): every further iteration would
-    // repeat this one.
-    if (next_xi == xi && next_eta == eta) break;
+    // Converged, or held at the clamp (a point far beyond a flat facet's edge) where further
+    // iterations only repeat this one.
+    const double moved = std::abs(next_xi - xi) + std::abs(next_eta - eta);
     xi = next_xi;
     eta = next_eta;
-    if (std::abs(dxi) + std::abs(deta) < 1e-13) break;
+    if (moved < 1e-13) break;
   }
   if (std::abs(xi) <= 1.0 + kInsideTolerance && std::abs(eta) <= 1.0 + kInsideTolerance) {
     r.xi = std::clamp(xi, -1.0, 1.0);

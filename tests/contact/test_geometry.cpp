@@ -48,6 +48,31 @@ TEST(QuadProjection, MatchesBruteForceOnAWarpedFacet) {
   }
 }
 
+// The contact starts each projection on last step's partner where the point lay then: any start
+// in the facet must find the same closest point.
+TEST(QuadProjection, AnyStartInTheFacetFindsTheSameClosestPoint) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 3.0), h(-0.8, 0.8), start(-1.0, 1.0);
+  for (int k = 0; k < 200; ++k) {
+    const Vec3 p{u(rng), u(rng) * 0.7, h(rng)};
+    const QuadProjection q = project_onto_quad(kWarped, p, start(rng), start(rng));
+    EXPECT_NEAR(q.distance, brute_force_distance(kWarped, p), 1e-9) << "point " << k;
+  }
+}
+
+// Far beyond an edge Newton's iterate is held at its clamp (xi or eta = 2) while the other
+// coordinate settles: the closest point is then found on the edges.
+TEST(QuadProjection, FarBeyondAnEdgeTheClosestPointIsOnTheEdge) {
+  const QuadCorners side = {Vec3{0.03, -0.03, 0}, Vec3{0.03, 0, 0}, Vec3{0.03, 0, 0.01},
+                            Vec3{0.03, -0.03, 0.01}};  // a block's side, as in the seed deck
+  for (const Vec3& p :
+       {Vec3{0.0073, 0.00037, 0.0232}, Vec3{0.007, -0.003, 0.0236}, Vec3{0.5, -0.01, -2.0}}) {
+    const QuadProjection q = project_onto_quad(side, p);
+    EXPECT_NEAR(q.distance, brute_force_distance(side, p), 1e-12);
+    EXPECT_NE(q.crossed_edges, 0);
+  }
+}
+
 TEST(QuadProjection, GapSignEdgesAndCorners) {
   const QuadCorners flat = {Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{1, 1, 0}, Vec3{0, 1, 0}};
   QuadProjection q = project_onto_quad(flat, {0.25, 0.5, -0.1});
