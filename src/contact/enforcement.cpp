@@ -218,18 +218,16 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   };
   const double m_own = node_point ? mass_[f.nodes[0]] : mass_share(own, f.nodes, f.shape);
 
+  // The spring to the partner point (xi, eta) of `facet`, along `normal`.
   struct Spring {
-    Vec3 point, normal, velocity;
+    Vec3 normal, velocity;
     double stiffness, effective_mass;
   };
-  auto partner_spring = [&](std::int32_t facet, double pxi, double peta) {
+  auto partner_spring = [&](std::int32_t facet, double pxi, double peta, const Vec3& normal) {
     const auto& nodes = target.surface.facets[facet];
-    const QuadCorners c = quad_corners(nodes, in.x, in.y, in.z);
     const auto n = quad_shape(pxi, peta);
     Spring r;
-    double jacobian = 0.0;
-    r.point = quad_point(c, pxi, peta);
-    r.normal = quad_normal(c, pxi, peta, jacobian);
+    r.normal = normal;
     r.velocity = velocity_at(nodes, n, in);
     r.stiffness = spring(own, p, area, target, facet);
     const double m_target = mass_share(target, nodes, n);
@@ -263,13 +261,14 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   auto tied = [&]() {
     const std::int32_t facet = pass.tie_facet[p];
     if (!target.active[facet]) return false;
-    if (node_point) {  // a tie holds in every direction: a node facing away keeps its whole area
-      const QuadCorners c = quad_corners(target.surface.facets[facet], in.x, in.y, in.z);
-      double jacobian = 0.0;
-      if (!facing_area(quad_normal(c, pass.tie_xi[p], pass.tie_eta[p], jacobian))) area = f.area;
-    }
-    const Spring r = partner_spring(facet, pass.tie_xi[p], pass.tie_eta[p]);
-    const Vec3 stretch = f.x - r.point + r.normal * pass.offset[p];
+    const QuadCorners corners = quad_corners(target.surface.facets[facet], in.x, in.y, in.z);
+    double jacobian = 0.0;
+    const Vec3 tie_normal = quad_normal(corners, pass.tie_xi[p], pass.tie_eta[p], jacobian);
+    // A tie holds in every direction: a node facing away keeps its whole area.
+    if (node_point && !facing_area(tie_normal)) area = f.area;
+    const Spring r = partner_spring(facet, pass.tie_xi[p], pass.tie_eta[p], tie_normal);
+    const Vec3 stretch =
+        f.x - quad_point(corners, pass.tie_xi[p], pass.tie_eta[p]) + r.normal * pass.offset[p];
     const Vec3 v_rel = f.v - r.velocity;
     const double c = damping_of(r.stiffness, r);
     const Vec3 force = stretch * (-r.stiffness) - v_rel * c;
@@ -339,8 +338,8 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     clear_history();
     return;
   }
-  Spring r = partner_spring(h.facet, h.xi, h.eta);
-  r.normal = h.normal;  // the facet's, or radial around a shell's rounded edge
+  // Along the facet's normal, or radially around a shell's rounded edge.
+  const Spring r = partner_spring(h.facet, h.xi, h.eta, h.normal);
   const Vec3 normal = from_behind ? r.normal * -1.0 : r.normal;  // the push on the point
   NormalResponse response;
   if (adhesive) {
