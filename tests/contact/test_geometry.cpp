@@ -60,6 +60,28 @@ TEST(QuadProjection, AnyStartInTheFacetFindsTheSameClosestPoint) {
   }
 }
 
+// Inside the facet the closest point is stationary: x - p is normal to both tangents. Newton
+// stops once the step it would take next is below 1e-13 (predicted in closed form for the
+// bilinear facet), so the tangential residual is of that order, far below the brute force's reach.
+TEST(QuadProjection, InsideTheFacetTheClosestPointIsStationary) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.2, 1.8), h(-0.5, 0.5), start(-1.0, 1.0);
+  int inside = 0;
+  for (int k = 0; k < 400; ++k) {
+    const Vec3 p{u(rng), u(rng) * 0.7, h(rng)};
+    const QuadProjection q = k % 2 ? project_onto_quad(kWarped, p, start(rng), start(rng))
+                                   : project_onto_quad(kWarped, p);
+    if (q.crossed_edges != 0) continue;
+    ++inside;
+    Vec3 d_xi, d_eta;
+    quad_tangents(kWarped, q.xi, q.eta, d_xi, d_eta);
+    const Vec3 d = quad_point(kWarped, q.xi, q.eta) - p;
+    EXPECT_LT(std::abs(dot(d, d_xi)) / dot(d_xi, d_xi), 1e-12) << "point " << k;
+    EXPECT_LT(std::abs(dot(d, d_eta)) / dot(d_eta, d_eta), 1e-12) << "point " << k;
+  }
+  EXPECT_GT(inside, 300);
+}
+
 // Far beyond an edge Newton's iterate is held at its clamp (xi or eta = 2) while the other
 // coordinate settles: the closest point is then found on the edges.
 TEST(QuadProjection, FarBeyondAnEdgeTheClosestPointIsOnTheEdge) {
