@@ -80,7 +80,8 @@ TargetFacets ContactInterface::target_facets(const Side& target, std::span<const
           in.x,
           in.y,
           in.z,
-          banded ? std::span<const FacetBand>(target.bands) : std::span<const FacetBand>()};
+          banded ? std::span<const FacetBand>(target.bands) : std::span<const FacetBand>(),
+          target.max_facet_gap};
 }
 
 PartnerRules ContactInterface::partner_rules(const Side& own, std::size_t p) const {

@@ -45,7 +45,6 @@ Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> c
       for (int a = 0; a < 4; ++a)
         c[a] = {target.x[nodes[a]], target.y[nodes[a]], target.z[nodes[a]]};
     };
-    const auto [g, below, reach] = pair_reach(target, f, rules);
     // The distance to the facet's bounding box bounds the distance to the facet from below:
     // skip facets that cannot be within reach or closer than the best one so far.
     const bool banded = !target.bands.empty();
@@ -60,6 +59,12 @@ Partner find_partner(const TargetFacets& target, std::span<const std::int32_t> c
       }
     }
     const double box2 = box_distance2(lo, hi, x_p);
+    // Not nearer than the best one so far even with the largest pair gap: the test below would
+    // reject it too; passed over before the pair's own gap is looked up (most candidates, once
+    // last step's partner has been found again).
+    const double bound = best_distance + rules.point_gap + target.max_gap;
+    if (bound < 0.0 || box2 > bound * bound) return;
+    const auto [g, below, reach] = pair_reach(target, f, rules);
     const double closer = best_distance + g;  // nearer than this to beat the best one so far
     if (box2 > reach * reach || closer < 0.0 || box2 > closer * closer) return;
     if (share_a_node(own_nodes, nodes)) return;

@@ -44,6 +44,8 @@ struct TargetFacets {
   // Per facet, this step's box (penetration_zone.hpp), for the facets that may be asked for; empty:
   // the boxes come from the corners.
   std::span<const FacetBand> bands = {};
+  // The largest g_m of `gap` (a bound the box test uses before a pair's own gap is looked up).
+  double max_gap = std::numeric_limits<double>::infinity();
 };
 
 struct PartnerRules {
