@@ -11,6 +11,7 @@
 #include "abut/core/state_archive.hpp"
 #include "abut/element/shell4.hpp"
 #include "abut/material/point_law.hpp"
+#include "block_step.hpp"
 
 namespace abut {
 
@@ -284,53 +285,25 @@ BlockStep ShellBlock::Impl::step(const ShellNodalState& s, double dt, const Law&
 #pragma omp parallel for schedule(static) if (count >= kParallelMinimum / 8)
   for (std::int64_t e = 0; e < count; ++e) element(static_cast<std::size_t>(e), s, dt, law);
 
-  BlockStep out;  // serial, element order: thread-count independent
-  out.stable_step = std::numeric_limits<double>::infinity();
-  double internal = 0.0, hourglass_sum = 0.0;
-  for (std::size_t e = 0; e < shells.size(); ++e) {
-    if (failure[e] == kDegenerate)
-      throw InstabilityError(element_name(e) + ": collapsed element (area <= 0)");
-    if (failure[e] == kNonFinite)
-      throw InstabilityError(element_name(e) + ": non-finite area, stress or force");
-    internal += internal_work[e];
-    hourglass_sum += hourglass_work[e];
-    out.stable_step = std::min(out.stable_step, stable[e]);
-  }
-  internal_energy += internal;
-  hourglass_energy += hourglass_sum;
-  if (!eroded.empty()) erode(out);
-  out.internal_energy = internal_energy;
-  out.hourglass_energy = hourglass_energy;
-  out.eroded_energy = eroded_energy;
-  out.eroded = eroded_count;
-  return out;
+  static_assert(kDegenerate == 1 && kNonFinite == 2, "the messages below, by failure code");
+  return end_block_step(
+      *this, shells.size(),
+      {nullptr, ": collapsed element (area <= 0)", ": non-finite area, stress or force"});
 }
 
-// As SolidBlock: an eroded element's energy moves to the eroded energy; its forces are dropped.
+// As SolidBlock: a shell fails by damage once all of its points have failed.
 void ShellBlock::Impl::erode(BlockStep& out) {
-  out.stable_step = std::numeric_limits<double>::infinity();
   const std::size_t np = points();
-  for (std::size_t e = 0; e < shells.size(); ++e) {
-    if (eroded[e]) continue;
-    element_internal[e] += internal_work[e];
-    element_hourglass[e] += hourglass_work[e];
-    bool all_failed = fails_by_damage;
-    for (std::size_t k = 0; k < np && all_failed; ++k) all_failed = history[np * e + k].failed();
-    const bool fails = stable[e] < erosion.min_step ||
-                       geometric_strain[e] > erosion.max_geometric_strain ||
-                       area_ratio[e] - 1.0 > erosion.max_volumetric_strain || all_failed;
-    if (!fails) {
-      out.stable_step = std::min(out.stable_step, stable[e]);
-      continue;
-    }
-    eroded[e] = 1;
-    ++eroded_count;
-    eroded_energy += element_internal[e] + element_hourglass[e];
-    internal_energy -= element_internal[e];
-    hourglass_energy -= element_hourglass[e];
-    std::fill_n(&forces[24 * e], 24, 0.0);
-    std::fill_n(&stress[6 * np * e], 6 * np, 0.0);
-  }
+  erode_elements(
+      *this, shells.size(), out,
+      [this, np](std::size_t e) {
+        bool all_failed = fails_by_damage;
+        for (std::size_t k = 0; k < np && all_failed; ++k)
+          all_failed = history[np * e + k].failed();
+        return stable[e] < erosion.min_step || geometric_strain[e] > erosion.max_geometric_strain ||
+               area_ratio[e] - 1.0 > erosion.max_volumetric_strain || all_failed;
+      },
+      [this, np](std::size_t e) { std::fill_n(&stress[6 * np * e], 6 * np, 0.0); });
 }
 
 ShellBlock::ShellBlock(std::int64_t part_id, const MaterialParams& material,

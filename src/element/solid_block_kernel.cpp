@@ -21,6 +21,7 @@
 #include "abut/element/stable_step.hpp"
 #include "abut/material/elastic.hpp"
 #include "abut/material/sym_tensor.hpp"
+#include "block_step.hpp"
 #include "solid_block_impl.hpp"
 
 namespace abut {
@@ -431,57 +432,23 @@ BlockStep SolidBlock::Impl::step(const NodalState& s, double dt, const Law& law)
     batch<Law, kThermal>(static_cast<std::size_t>(b * kLanes), s, dt, law);
   if constexpr (kThermal) temperature_started = true;
 
-  // Serial pass in element order: the first failure decides the message, sums are in a fixed
-  // order, so the result does not depend on the number of threads.
-  BlockStep out;
-  out.stable_step = std::numeric_limits<double>::infinity();
-  double internal = 0.0, hourglass_sum = 0.0;
-  for (std::size_t e = 0; e < hexes.size(); ++e) {
-    if (failure[e] == kInverted) {
-      throw InstabilityError(element_name(e) + ": inverted element (volume <= 0)");
-    }
-    if (failure[e] == kNonFinite) {
-      throw InstabilityError(element_name(e) + ": non-finite volume, stress or force");
-    }
-    internal += internal_work[e];
-    hourglass_sum += hourglass_work[e];
-    out.stable_step = std::min(out.stable_step, stable[e]);
-  }
-  internal_energy += internal;
-  hourglass_energy += hourglass_sum;
-  if (!eroded.empty()) erode(out);
-  out.internal_energy = internal_energy;
-  out.hourglass_energy = hourglass_energy;
-  out.eroded_energy = eroded_energy;
-  out.eroded = eroded_count;
-  return out;
+  static_assert(kInverted == 1 && kNonFinite == 2, "the messages below, by failure code");
+  return end_block_step(
+      *this, hexes.size(),
+      {nullptr, ": inverted element (volume <= 0)", ": non-finite volume, stress or force"});
 }
 
-// Serial, in element order: the energy each element has taken so far, then the criteria. An eroded
-// element's energy leaves the internal (and hourglass) energy for the eroded energy, so the energy
-// balance still closes; its forces of this step are dropped.
 void SolidBlock::Impl::erode(BlockStep& out) {
-  out.stable_step = std::numeric_limits<double>::infinity();
-  for (std::size_t e = 0; e < hexes.size(); ++e) {
-    if (eroded[e]) continue;
-    element_internal[e] += internal_work[e];
-    element_hourglass[e] += hourglass_work[e];
-    const bool fails = stable[e] < erosion.min_step ||
-                       geometric_strain[e] > erosion.max_geometric_strain ||
-                       volume_ratio[e] - 1.0 > erosion.max_volumetric_strain ||
-                       (fails_by_damage && history[e].failed());
-    if (!fails) {
-      out.stable_step = std::min(out.stable_step, stable[e]);
-      continue;
-    }
-    eroded[e] = 1;
-    ++eroded_count;
-    eroded_energy += element_internal[e] + element_hourglass[e];
-    internal_energy -= element_internal[e];
-    hourglass_energy -= element_hourglass[e];
-    std::fill_n(&forces[24 * e], 24, 0.0);
-    for (int c = 0; c < 6; ++c) stress[batched(e, c, 6)] = 0.0;
-  }
+  erode_elements(
+      *this, hexes.size(), out,
+      [this](std::size_t e) {
+        return stable[e] < erosion.min_step || geometric_strain[e] > erosion.max_geometric_strain ||
+               volume_ratio[e] - 1.0 > erosion.max_volumetric_strain ||
+               (fails_by_damage && history[e].failed());
+      },
+      [this](std::size_t e) {
+        for (int c = 0; c < 6; ++c) stress[batched(e, c, 6)] = 0.0;
+      });
 }
 
 BlockStep SolidBlock::update(const NodalState& state, double dt) {
