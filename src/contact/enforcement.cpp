@@ -161,8 +161,7 @@ double ContactInterface::spring(const Side& own, std::size_t p, double area, con
 
 bool ContactInterface::quiet(const Pass& pass, std::size_t p) const {
   return pass.candidates.offsets[p] == pass.candidates.offsets[p + 1] && !pass.hit[p] &&
-         pass.state[p] != kTied && pass.htx[p] == 0.0 && pass.hty[p] == 0.0 && pass.htz[p] == 0.0 &&
-         !pass.sliding[p] && pass.offset[p] == 0.0 && !pass.adhered[p] &&
+         pass.state[p] != kTied && !pass.remembers(p) &&
          (pass.heat_facet.empty() || pass.heat_facet[p] < 0);
 }
 
@@ -179,11 +178,11 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   // Written only when not yet clear: most points stay without a partner step after step, and a
   // store per field and point would cost more than the load.
   auto lose_partner = [&pass, p] {
-    if (pass.htx[p] != 0.0 || pass.hty[p] != 0.0 || pass.htz[p] != 0.0)
-      pass.htx[p] = pass.hty[p] = pass.htz[p] = 0.0;
-    if (pass.sliding[p] != 0) pass.sliding[p] = 0;
-    if (pass.offset[p] != 0.0) pass.offset[p] = 0.0;
-    if (pass.adhered[p] != 0) pass.adhered[p] = 0;
+    if (!pass.remembers(p)) return;
+    pass.htx[p] = pass.hty[p] = pass.htz[p] = 0.0;
+    pass.sliding[p] = 0;
+    pass.offset[p] = 0.0;
+    pass.adhered[p] = 0;
   };
   if (last_partner < 0 && pass.state[p] != kTied &&
       pass.candidates.offsets[p] == pass.candidates.offsets[p + 1]) {

@@ -49,9 +49,7 @@ void ContactInterface::update_bands(const ContactInput& in) {
 // nothing and leave its history as it is.
 bool ContactInterface::surely_open(const Pass& pass, std::size_t p, const ContactInput& in) const {
   if (!skips_open_points()) return false;
-  if (pass.htx[p] != 0.0 || pass.hty[p] != 0.0 || pass.htz[p] != 0.0 || pass.sliding[p] ||
-      pass.offset[p] != 0.0 || pass.shift_at(p) != 0.0 || pass.adhered[p])
-    return false;
+  if (pass.remembers(p) || pass.shift_at(p) != 0.0) return false;
   const Side& own = sides_[pass.own];
   const Side& target = sides_[pass.target];
   const Vec3 x = point_at(own, p, in);  // where frame() finds it

@@ -208,6 +208,12 @@ class ContactInterface {
     std::vector<std::int32_t> tie_facet;  // tied contact: fixed partner (ties only; else empty)
     std::vector<double> tie_xi, tie_eta;
     double shift_at(std::size_t p) const { return shift.empty() ? 0.0 : shift[p]; }
+    // Point p has something a step without a partner would forget: friction history, an initial
+    // offset, an adhesive bond.
+    bool remembers(std::size_t p) const {
+      return htx[p] != 0.0 || hty[p] != 0.0 || htz[p] != 0.0 || sliding[p] || offset[p] != 0.0 ||
+             adhered[p];
+    }
     // Results of the current step, one slot per point.
     std::vector<std::uint8_t> hit;
     std::vector<std::int32_t> hit_facet;
