@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "abut/contact/interface.hpp"
+#include "abut/contact/laws/stick_slip.hpp"
 #include "abut/contact/quad.hpp"
 
 namespace abut {
@@ -179,8 +180,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   // store per field and point would cost more than the load.
   auto lose_partner = [&pass, p] {
     if (!pass.remembers(p)) return;
-    pass.htx[p] = pass.hty[p] = pass.htz[p] = 0.0;
-    pass.sliding[p] = 0;
+    pass.forget_friction(p);
     pass.offset[p] = 0.0;
     pass.adhered[p] = 0;
   };
@@ -250,10 +250,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     pass.area[p] = area;
     pass.omega2[p] = r.effective_mass > 0.0 ? k / r.effective_mass : 0.0;
   };
-  auto clear_history = [&] {
-    pass.htx[p] = pass.hty[p] = pass.htz[p] = 0.0;
-    pass.sliding[p] = 0;
-  };
+  auto clear_history = [&] { pass.forget_friction(p); };
 
   // Tied contact (sticking contact of seed 000, FREEZE of OptiStruct): a spring to the fixed
   // partner point in every direction, in tension too; sticking contact fails for good when its
@@ -360,9 +357,8 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   const double slip_speed = norm(v_t);
   const double k_t = s.tangential_penalty ? *s.tangential_penalty * area : r.stiffness;
   const Vec3 previous{pass.htx[p], pass.hty[p], pass.htz[p]};
-  Vec3 ft;
-  double slip_work = 0.0;
-  bool sliding = false;
+  Vec3 ft, spring;  // the tangential force, and its elastic part (the history)
+  double slip = 0.0, slip_work = 0.0, stick_damping_work = 0.0;
   if (adhesive) {  // viscous resistance replaces friction in the adhesive zone
     ft = s.adhesion->viscous_force(v_t, area);
     slip_work = -dot(ft, v_t) * in.dt;
@@ -370,29 +366,33 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     const SlipLimits limits =
         slip_limits(s.tangential_law, {std::max(fn, 0.0), area, slip_speed, in.time, f.x});
     if (limits.stick > 0.0 || limits.slide > 0.0) {
-      const TangentialResult t =
-          return_to_limit(previous, normal, v_t, in.dt, k_t, limits, pass.sliding[p] != 0);
+      const StickSlipResult t = stick_slip(previous, pass.slip[p],
+                                           {normal, v_t, in.dt, k_t, damping_of(k_t, r)}, limits);
+      slip = t.slip;
       ft = t.force;
+      spring = t.spring;
       slip_work = t.slip_work;
-      sliding = t.sliding;
+      stick_damping_work = t.damping_work;
     }
     if (s.friction_filter.kind != FrictionFilter::Kind::None) {  // Radioss Ifiltr
       const double a = s.friction_filter.alpha(in.dt);
-      ft = ft * a + (previous - normal * dot(previous, normal)) * (1.0 - a);
+      const Vec3 filtered = (previous - normal * dot(previous, normal)) * (1.0 - a);
+      ft = ft * a + filtered;
+      spring = spring * a + filtered;
     }
   }
-  pass.htx[p] = ft.x;
-  pass.hty[p] = ft.y;
-  pass.htz[p] = ft.z;
-  pass.sliding[p] = sliding ? 1 : 0;
+  pass.htx[p] = spring.x;
+  pass.hty[p] = spring.y;
+  pass.htz[p] = spring.z;
+  pass.slip[p] = slip;
   record(h.facet, h.xi, h.eta, r, std::max(k_n, k_t), normal * fn + ft);
   pass.pair_gap[p] = h.pair_gap;
   pass.normal_force[p] = fn;
   pass.tangential_force[p] = norm(ft);
   pass.pressure[p] = fn / area;
   pass.slip_speed[p] = slip_speed;
-  pass.energy[p] = response.energy * area + (adhesive ? 0.0 : 0.5 * dot(ft, ft) / k_t);
-  pass.damping_work[p] = (fn - elastic) * (-v_n) * in.dt;
+  pass.energy[p] = response.energy * area + 0.5 * dot(spring, spring) / k_t;
+  pass.damping_work[p] = (fn - elastic) * (-v_n) * in.dt + stick_damping_work;
   pass.slip_work[p] = slip_work;
   pass.penetration[p] = penetration;
   conduct(pass, p, h.facet, h.xi, h.eta, std::max(fn, 0.0) / area, -penetration, area);

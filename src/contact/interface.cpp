@@ -250,6 +250,7 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
       std::fill(pass.htx.begin(), pass.htx.end(), 0.0);
       std::fill(pass.hty.begin(), pass.hty.end(), 0.0);
       std::fill(pass.htz.begin(), pass.htz.end(), 0.0);
+      std::fill(pass.slip.begin(), pass.slip.end(), 0.0);
     }
     return;
   }

@@ -360,7 +360,7 @@ void ContactInterface::build_passes() {
 
 // Per-point history and result slots for n points; points added later (free nodes) start empty.
 void ContactInterface::size_pass(Pass& pass, std::size_t n) const {
-  for (auto* v : {&pass.state, &pass.sliding, &pass.adhered, &pass.hit}) v->resize(n, 0);
+  for (auto* v : {&pass.state, &pass.adhered, &pass.hit}) v->resize(n, 0);
   pass.hit_facet.resize(n, -1);
   const bool ties = settings_.freeze || settings_.stick_stress.has_value();
   pass.tie_facet.resize(ties ? n : 0, -1);
@@ -374,6 +374,7 @@ void ContactInterface::size_pass(Pass& pass, std::size_t n) const {
                   &pass.htx,
                   &pass.hty,
                   &pass.htz,
+                  &pass.slip,
                   &pass.hit_xi,
                   &pass.hit_eta,
                   &pass.fx,

@@ -198,20 +198,25 @@ class ContactInterface {
     BucketGrid grid;
     CandidateList candidates;
     // History per point.
-    std::vector<std::uint8_t> state, sliding, adhered;
+    std::vector<std::uint8_t> state, adhered;
     // Per point: the bound on the square of its spring's frequency while it may touch (its
     // facet's springs on the facet's lightest node, 2 k / m_min; initial_state).
     std::vector<double> approach_omega2;
     std::vector<double> offset;           // initial penetration subtracted until separation
     std::vector<double> shift;            // permanent gap shift (clearance; else empty)
     std::vector<double> htx, hty, htz;    // tangential spring force (friction history)
+    std::vector<double> slip;             // slip since the point last stuck (stick_slip.hpp)
     std::vector<std::int32_t> tie_facet;  // tied contact: fixed partner (ties only; else empty)
     std::vector<double> tie_xi, tie_eta;
     double shift_at(std::size_t p) const { return shift.empty() ? 0.0 : shift[p]; }
+    void forget_friction(std::size_t p) {
+      htx[p] = hty[p] = htz[p] = 0.0;
+      slip[p] = 0.0;
+    }
     // Point p has something a step without a partner would forget: friction history, an initial
     // offset, an adhesive bond.
     bool remembers(std::size_t p) const {
-      return htx[p] != 0.0 || hty[p] != 0.0 || htz[p] != 0.0 || sliding[p] || offset[p] != 0.0 ||
+      return htx[p] != 0.0 || hty[p] != 0.0 || htz[p] != 0.0 || slip[p] != 0.0 || offset[p] != 0.0 ||
              adhered[p];
     }
     // Results of the current step, one slot per point.
@@ -230,8 +235,8 @@ class ContactInterface {
     // first step after a restart finds them again). The others are quiet (ContactInterface::quiet).
     std::vector<std::int32_t> awake;
     void archive(StateArchive& a) {
-      a.values(own, target, weight, grid, candidates, state, sliding, adhered, approach_omega2,
-               offset, shift, htx, hty, htz, tie_facet, tie_xi, tie_eta, hit, hit_facet, hit_xi,
+      a.values(own, target, weight, grid, candidates, state, adhered, approach_omega2,
+               offset, shift, htx, hty, htz, slip, tie_facet, tie_xi, tie_eta, hit, hit_facet, hit_xi,
                hit_eta, fx, fy, fz, area, pressure, slip_speed, normal_force, tangential_force,
                energy, damping_work, slip_work, penetration, omega2, pair_gap, heat_facet, heat_xi,
                heat_eta, heat_conductance);
