@@ -24,7 +24,7 @@
 //    is pressed in quasi-statically; the energy balance E(t) - E(0) = W(t) (kinetic + internal +
 //    contact springs against the body force's work) must hold within 1% at every cycle. Before
 //    issue 27 the nodes on the block's corner edge took the closer wall alone and their force
-//    flipped between the two walls' normals, which did work at every flip (+12% one-way, +5.5%
+//    flipped between the two walls' normals, which did work at every flip (+12% one-way, +101%
 //    symmetric at 20 ms; with a sudden load +58%). The region behind a concave corner is the union
 //    of the walls' half-spaces, so the penalty potential is the sum of the walls' (Wriggers,
 //    "Computational Contact Mechanics", 2nd ed., 2006, sec. 4.1): every penetrated wall pushes.
