@@ -170,6 +170,9 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   const std::int32_t last_partner = pass.hit[p] ? pass.hit_facet[p] : -1;
   pass.hit[p] = 0;
   if (!pass.heat_facet.empty()) pass.heat_facet[p] = -1;
+  if (!pass.corner.empty())  // N2S: last step's walls of a concave corner (corner_press.cpp)
+    for (std::size_t k = 0; k < kMaxCornerWalls; ++k)
+      pass.corner[p * kMaxCornerWalls + k].facet = -1;
   const Side& own = sides_[pass.own];
   const Side& target = sides_[pass.target];
   if (pass.state[p] == kReleased) return;
@@ -294,6 +297,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     lose_partner();
     return;
   }
+  if (!pass.corner.empty() && node_point) press_corner_walls(pass, p, f, h, in);
   const bool from_behind = s.sense == ContactSense::Negative;
   const bool bilateral = s.sense == ContactSense::Bilateral;
   const double gap =

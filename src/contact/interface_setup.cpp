@@ -393,6 +393,8 @@ void ContactInterface::size_pass(Pass& pass, std::size_t n) const {
                   &pass.pair_gap,
                   &pass.approach_omega2})
     v->resize(n, 0.0);
+  const bool nodes = settings_.discretisation == Discretisation::NodeToSurface;
+  pass.corner.resize(nodes ? n * kMaxCornerWalls : 0);
 }
 
 // Initial penetrations (seed 000 delta0_offset / delta0_max, Radioss Inacti), clearance

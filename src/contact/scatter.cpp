@@ -21,6 +21,9 @@ void ContactInterface::scatter(const ContactInput& in, ContactForces& out, bool 
     const double w = pass.weight;
     for (const std::int32_t awake : pass.awake) {  // a quiet point has no partner
       const auto p = static_cast<std::size_t>(awake);
+      // N2S: the other walls of a concave corner; the node's springs add up (stable step).
+      const double corner_omega2 = pass.corner.empty() ? 0.0 : scatter_corner(pass, p, out);
+      omega2_max = std::max(omega2_max, corner_omega2 + (pass.hit[p] ? pass.omega2[p] : 0.0));
       if (!pass.hit[p]) continue;
       const auto own_nodes = own.point_nodes(p);
       const auto& target_nodes = target.surface.facets[pass.hit_facet[p]];

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "abut/contact/broad_phase.hpp"
+#include "abut/contact/corner_walls.hpp"
 #include "abut/contact/edge_contact.hpp"
 #include "abut/contact/narrow_phase.hpp"
 #include "abut/contact/penetration_zone.hpp"
@@ -192,6 +193,16 @@ class ContactInterface {
     }
   };
 
+  // The push of one more wall of a concave corner on a node, besides its partner's
+  // (corner_walls.hpp): a frictionless normal spring with damping, this step's.
+  struct CornerPress {
+    std::int32_t facet = -1;  // -1: none
+    double xi = 0.0, eta = 0.0;
+    Vec3 force;  // on the node (before the pass's weight)
+    double normal_force = 0.0, area = 0.0, energy = 0.0, damping_work = 0.0, penetration = 0.0;
+    double omega2 = 0.0;  // k / m of its spring
+  };
+
   struct Pass {  // the points of side `own` against the facets of side `target`
     int own = 0, target = 0;
     double weight = 1.0;  // 1/2 when both sides' points act (symmetric and self contact)
@@ -226,6 +237,10 @@ class ContactInterface {
     std::vector<double> fx, fy, fz;  // force on the point (before `weight`)
     std::vector<double> area, pressure, slip_speed, normal_force, tangential_force;
     std::vector<double> energy, damping_work, slip_work, penetration, omega2, pair_gap;
+    // N2S: kMaxCornerWalls slots per point for the other walls of a concave corner it presses
+    // (this step's, like the results above; not archived: every step finds them anew). Empty for
+    // integration points.
+    std::vector<CornerPress> corner;
     // Thermal contact: the partner the point exchanges heat with (-1: none; open points within
     // the search distance too) and the conductance h A of the point [power / temperature].
     // Empty when the contact exchanges no heat.
@@ -290,6 +305,13 @@ class ContactInterface {
                      std::int32_t previous) const;
   double spring(const Side& own, std::size_t p, double area, const Side& target,
                 std::int32_t f) const;
+  // N2S: the other walls of a concave corner that node point p presses besides its partner h, each
+  // a frictionless penalty spring along its own normal into pass.corner (corner_press.cpp).
+  void press_corner_walls(Pass& pass, std::size_t p, const PointFrame& f, const Partner& h,
+                          const ContactInput& in);
+  // Their forces to the nodes, energies and pressure into the statistics (serially, from scatter);
+  // returns the sum of their springs' k / m, which the node's own spring adds to.
+  double scatter_corner(const Pass& pass, std::size_t p, ContactForces& out);
   void evaluate_point(Pass& pass, std::size_t p, const ContactInput& in);
   // A point without candidates, partner or tie, with nothing to forget (friction history, offset,
   // bond) and no heat partner: evaluate_point leaves it as it is, and so it stays until a build

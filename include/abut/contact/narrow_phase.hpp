@@ -11,12 +11,13 @@
 //    skipped when the point has no normal, a bare node),
 //  - the gap (x - q) . n - g lies within [-depth_below, depth_above] (depth_below: how deep a point
 //    may be and still belong to this side; beyond it lies the far side),
-//  - a projection beyond a sharp (or free) edge overshoots it by at most edge_tolerance; beyond a
-//    smooth edge by at most |g| tan(alpha_edge) (the dead zone of a convex edge; see
-//    docs/contact.md). A shell's contact surface is rounded around its inner edges (the round
-//    gap of seed 004, comment 5): beyond such an edge the gap is the distance to the edge less
-//    the pair's gap, along the radial direction, at any overshoot; only its free border cuts off
-//    at edge_tolerance. Folds that sharpen as a shell crushes then stay continuous.
+//  - a projection beyond a sharp (or free) edge overshoots it by at most edge_tolerance or 1e-2
+//    of the facet's diagonal (a node on a border stays on it while the surfaces deform a little
+//    differently); beyond a smooth edge by at most |g| tan(alpha_edge) (the dead zone of a convex
+//    edge; see docs/contact.md). A shell's contact surface is rounded around its inner edges (the
+//    round gap of seed 004, comment 5): beyond such an edge the gap is the distance to the edge
+//    less the pair's gap, along the radial direction, at any overshoot; only its free border cuts
+//    off like a sharp edge. Folds that sharpen as a shell crushes then stay continuous.
 // The closest accepted facet (distance less the pair's gap) is the partner.
 #include <algorithm>
 #include <array>
@@ -90,6 +91,21 @@ struct PartnerHint {
   std::int32_t facet = -1;
   double xi = 0.0, eta = 0.0;
 };
+
+// What the rules above make of facet f for a point within the pair's reach of its box: accepted
+// as a partner at `distance` (from the facet, less the pair's gap), or not.
+struct FacetVerdict {
+  bool accepted = false;
+  Partner partner;
+  double distance = 0.0;
+};
+FacetVerdict judge_facet(const TargetFacets& target, std::int32_t f, const PairReach& pair,
+                         const std::array<std::int32_t, 4>& own_nodes, const Vec3& x,
+                         const Vec3& normal, const PartnerRules& rules,
+                         const PartnerHint& hint = {});
+
+// Squared distance from x to facet f's box (this step's band when the target has bands).
+double facet_box_distance2(const TargetFacets& target, std::int32_t f, const Vec3& x);
 
 // `own_nodes`: the nodes of the point's facet (a node-to-surface point: its node four times);
 // `normal`: the point's outward normal, or zero for a bare node. `candidates` in ascending facet

@@ -1,0 +1,108 @@
+// The other walls of a concave corner that a node presses besides its partner (corner_walls.hpp):
+// one frictionless penalty spring per wall, along that wall's normal, with the wall's share of the
+// node's area, so that the node's potential is the sum of the walls' (conservative, and continuous
+// as the closest wall changes). Writes the point's own slots only (points run in parallel).
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "abut/contact/interface.hpp"
+#include "abut/contact/quad.hpp"
+
+namespace abut {
+
+void ContactInterface::press_corner_walls(Pass& pass, std::size_t p, const PointFrame& f,
+                                          const Partner& h, const ContactInput& in) {
+  const ContactSettings& s = settings_;
+  // The ordinary contact of pushing springs; a free node (no normal, no vector area) and a point
+  // with an initial offset (measured against its partner alone) keep their partner only.
+  if (s.sense != ContactSense::Positive || s.adhesion || f.free || pass.offset[p] != 0.0) return;
+  const Side& own = sides_[pass.own];
+  const Side& target = sides_[pass.target];
+  const auto first = pass.candidates.offsets[p], last = pass.candidates.offsets[p + 1];
+  const double sharp_cos = std::cos(s.edge_angle * std::numbers::pi / 180.0);
+  const CornerWalls walls =
+      find_corner_walls(target_facets(target, target.depth, in, bands_current_),
+                        {pass.candidates.facets.data() + first, last - first}, f.nodes, f.x,
+                        f.normal, partner_rules(own, p), h, sharp_cos);
+  const double m_own = mass_[f.nodes[0]];
+  for (std::size_t k = 0; k < walls.count; ++k) {
+    const Partner& wall = walls.walls[k];
+    // The part of the node's tributary area that faces this wall (enforcement.cpp, facing_area).
+    const double area = f.two_sided ? std::abs(dot(f.vector_area, wall.normal))
+                                    : std::max(-dot(f.vector_area, wall.normal), 0.0);
+    const double penetration = -wall.gap - pass.shift_at(p);
+    if (!(area > 0.0) || !(penetration > 0.0)) continue;
+    const double spring_k = spring(own, p, area, target, wall.facet);
+    const NormalResponse response = evaluate(s.normal_law, penetration, spring_k / area);
+    const double k_n = response.stiffness * area;
+    // Damping as for the partner: a fraction of critical, 2 xi sqrt(k m), m the reduced mass of the
+    // node and the wall's nodal masses at the projection (enforcement.cpp).
+    const auto& nodes = target.surface.facets[wall.facet];
+    const auto shape = quad_shape(wall.xi, wall.eta);
+    double m_target = 0.0;
+    Vec3 v_target;
+    for (int a = 0; a < 4; ++a) {
+      if (target.node_area[nodes[a]] > 0.0)
+        m_target += mass_[nodes[a]] * std::min(1.0, shape[a] * area / target.node_area[nodes[a]]);
+      if (!in.vx.empty())
+        v_target += Vec3{in.vx[nodes[a]], in.vy[nodes[a]], in.vz[nodes[a]]} * shape[a];
+    }
+    const double m = m_own + m_target > 0.0 ? m_own * m_target / (m_own + m_target) : 0.0;
+    const double c = 2.0 * s.damping * std::sqrt(k_n * m);
+    const double v_n = dot(f.v - v_target, wall.normal);  // < 0 while approaching
+    const double elastic = response.pressure * area;
+    const double fn = std::max(elastic - c * v_n, 0.0);  // damping never pulls
+    CornerPress& press = pass.corner[p * kMaxCornerWalls + k];
+    press.facet = wall.facet;
+    press.xi = wall.xi;
+    press.eta = wall.eta;
+    press.force = wall.normal * fn;
+    press.normal_force = fn;
+    press.area = area;
+    press.energy = response.energy * area;
+    press.damping_work = (fn - elastic) * (-v_n) * in.dt;
+    press.penetration = penetration;
+    press.omega2 = m > 0.0 ? k_n / m : 0.0;
+  }
+}
+
+double ContactInterface::scatter_corner(const Pass& pass, std::size_t p, ContactForces& out) {
+  const Side& own = sides_[pass.own];
+  const Side& target = sides_[pass.target];
+  const std::int32_t node = own.point_node[p];
+  double omega2 = 0.0;
+  bool pressed = false;
+  for (std::size_t k = 0; k < kMaxCornerWalls; ++k) {
+    const CornerPress& press = pass.corner[p * kMaxCornerWalls + k];
+    if (press.facet < 0) continue;
+    pressed = true;
+    const Vec3 force = press.force * pass.weight;
+    const auto& nodes = target.surface.facets[press.facet];
+    const auto shape = quad_shape(press.xi, press.eta);
+    out.fx[node] += force.x;
+    out.fy[node] += force.y;
+    out.fz[node] += force.z;
+    for (int a = 0; a < 4; ++a) {
+      out.fx[nodes[a]] -= force.x * shape[a];
+      out.fy[nodes[a]] -= force.y * shape[a];
+      out.fz[nodes[a]] -= force.z * shape[a];
+    }
+    if (pass.own == 0) stats_.force += force;
+    if (pass.target == 0) stats_.force -= force;
+    stats_.normal_force += pass.weight * press.normal_force;
+    stats_.elastic_energy += pass.weight * press.energy;
+    stats_.damping_energy += pass.weight * press.damping_work;
+    stats_.max_penetration = std::max(stats_.max_penetration, press.penetration);
+    // Nodal pressure: area-weighted over each node's tributary area, as scatter() does (the
+    // pressure fn / area times the area).
+    const double load = pass.weight * press.normal_force;
+    pressure_[node] += load / own.node_area[node];
+    for (int a = 0; a < 4; ++a) pressure_[nodes[a]] += load * shape[a] / target.node_area[nodes[a]];
+    omega2 += press.omega2;
+  }
+  if (pressed && !pass.hit[p]) ++stats_.active_points;
+  return omega2;
+}
+
+}  // namespace abut
