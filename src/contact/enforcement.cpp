@@ -169,6 +169,12 @@ bool ContactInterface::quiet(const Pass& pass, std::size_t p) const {
 void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactInput& in) {
   const std::int32_t last_partner = pass.hit[p] ? pass.hit_facet[p] : -1;
   pass.hit[p] = 0;
+  // What the point's springs held at the end of last step: where they vanish without doing work
+  // now, that energy is released (ContactStats::released_energy; scatter adds and clears it).
+  const double held = last_partner >= 0 ? pass.energy[p] : 0.0;
+  auto release = [&pass, p](double energy) {
+    if (energy > 0.0) pass.released[p] += energy;
+  };
   if (!pass.heat_facet.empty()) pass.heat_facet[p] = -1;
   if (!pass.corner.empty())  // N2S: last step's walls of a concave corner (corner_press.cpp)
     for (std::size_t k = 0; k < kMaxCornerWalls; ++k)
@@ -196,7 +202,19 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   // that again.
   if (last_partner < 0 && pass.state[p] != kTied && surely_open(pass, p, in)) return;
   const PointFrame f = frame(own, p, in);
-  if (!f.active) return;
+  // What the springs hold now, at the end of the step over which last step's force did its work
+  // F . v_rel dt on the bodies: held less that work (to first order in the step).
+  auto held_now = [&]() {
+    if (last_partner < 0) return 0.0;
+    const auto& nodes = target.surface.facets[last_partner];
+    const Vec3 v_partner = velocity_at(nodes, quad_shape(pass.hit_xi[p], pass.hit_eta[p]), in);
+    const Vec3 force{pass.fx[p], pass.fy[p], pass.fz[p]};
+    return held - dot(force, f.v - v_partner) * in.dt;
+  };
+  if (!f.active) {  // its facet eroded or left the contact
+    release(held_now());
+    return;
+  }
   const ContactSettings& s = settings_;
   // A node's area is the part of its tributary area that faces its partner, the projection of its
   // vector area on the partner's normal: the bottom of a block pressed on a plate, not its sides.
@@ -289,11 +307,13 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
 
   if (pass.state[p] == kTied) {
     if (tied()) return;
-    pass.state[p] = kUntied;
+    pass.state[p] = kUntied;  // the tie failed: its spring lets go
+    release(held_now());
   }
 
   const Partner h = partner_of(pass, p, f, in, last_partner);
-  if (h.facet < 0) {
+  if (h.facet < 0) {  // beyond the detection depth or off the facets, while it was pressed
+    release(held_now());
     lose_partner();
     return;
   }
@@ -315,16 +335,22 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   const double penetration = -gap - pass.offset[p] - pass.shift_at(p);
   // Outside: no force, unless the contact is bilateral or the point is adhered and still within
   // the adhesive zone (Radioss IVIS2 = -1: the bond breaks at its border).
-  bool adhesive = false;
+  bool adhesive = false, bond_broke = false;
   if (s.adhesion) {
-    if (penetration > 0.0)
+    if (penetration > 0.0) {
       pass.adhered[p] = 1;
-    else if (pass.adhered[p] && -penetration <= s.adhesion->zone())
+    } else if (pass.adhered[p] && -penetration <= s.adhesion->zone()) {
       adhesive = true;
-    else
+    } else {
+      bond_broke = pass.adhered[p] != 0;
       pass.adhered[p] = 0;
+    }
   }
   if (!(penetration > 0.0) && !bilateral && !adhesive) {
+    // Separated. The springs let go of forces that fell on the way (the friction force is bound
+    // by the normal one), and last step's force did its work on the way out; an adhesive bond
+    // that broke at the zone's border lets go of its whole pull.
+    if (bond_broke) release(held_now());
     clear_history();
     // Open within reach of the partner: heat may still cross the gap (thermal.hpp).
     if (s.thermal.conductance &&
@@ -336,6 +362,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   }
 
   if (node_point && !facing_area(from_behind ? h.normal * -1.0 : h.normal)) {
+    release(held_now());
     clear_history();
     return;
   }

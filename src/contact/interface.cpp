@@ -247,6 +247,11 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
                              : initial_stable_step_;
   if (outside_window) {
     for (Pass& pass : passes_) {  // outside the window: no forces and no friction memory
+      for (std::size_t p = 0; p < pass.hit.size(); ++p)  // the springs let go (point order)
+        if (pass.hit[p]) {
+          stats_.released_energy += pass.weight * pass.energy[p];
+          pass.hit[p] = 0;
+        }
       std::fill(pass.htx.begin(), pass.htx.end(), 0.0);
       std::fill(pass.hty.begin(), pass.hty.end(), 0.0);
       std::fill(pass.htz.begin(), pass.htz.end(), 0.0);

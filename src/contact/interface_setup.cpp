@@ -391,6 +391,7 @@ void ContactInterface::size_pass(Pass& pass, std::size_t n) const {
                   &pass.penetration,
                   &pass.omega2,
                   &pass.pair_gap,
+                  &pass.released,
                   &pass.approach_omega2})
     v->resize(n, 0.0);
   const bool nodes = settings_.discretisation == Discretisation::NodeToSurface;

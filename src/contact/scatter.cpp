@@ -15,12 +15,16 @@ void ContactInterface::scatter(const ContactInput& in, ContactForces& out, bool 
   // where their bound holds throughout.
   double omega2_max = 0.0, approach_omega2 = near_bound ? near_omega2_ : 0.0;
   // Serial, in point order: the sums do not depend on the thread count.
-  for (const Pass& pass : passes_) {
+  for (Pass& pass : passes_) {
     const Side& own = sides_[pass.own];
     const Side& target = sides_[pass.target];
     const double w = pass.weight;
     for (const std::int32_t awake : pass.awake) {  // a quiet point has no partner
       const auto p = static_cast<std::size_t>(awake);
+      if (pass.released[p] != 0.0) {  // springs that let go in this step (evaluate_point)
+        stats_.released_energy += w * pass.released[p];
+        pass.released[p] = 0.0;
+      }
       // N2S: the other walls of a concave corner; the node's springs add up (stable step).
       const double corner_omega2 = pass.corner.empty() ? 0.0 : scatter_corner(pass, p, out);
       omega2_max = std::max(omega2_max, corner_omega2 + (pass.hit[p] ? pass.omega2[p] : 0.0));

@@ -57,6 +57,7 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
   json.member("contact", e.contact)
       .member("friction", e.friction)
       .member("eroded", e.eroded)
+      .member("contact_released", e.contact_released)
       .member("external_work", e.external_work);
   json.member("total", e.total()).member("balance_error", sim.energy_balance_error());
   json.end_object();

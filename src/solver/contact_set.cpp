@@ -559,6 +559,12 @@ double ContactSet::elastic_and_damping_energy() const {
   return e;
 }
 
+double ContactSet::released_energy() const {
+  double e = 0.0;
+  for (const ContactInterface& c : interfaces_) e += c.stats().released_energy;
+  return e;
+}
+
 double ContactSet::friction_energy() const {
   double e = 0.0;
   for (const ContactInterface& c : interfaces_) e += c.stats().friction_energy;

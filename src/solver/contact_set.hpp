@@ -32,6 +32,7 @@ class ContactSet {
   void erode(std::span<const std::uint8_t> eroded);
   double elastic_and_damping_energy() const;  // "contact" column of energy.csv
   double friction_energy() const;
+  double released_energy() const;  // ContactStats::released_energy, summed
   // Thermal contact (*CONTACT fid_thermal, fric_heat, *CONTACT_THERMAL): the heat into each node
   // [power] and each node's conductance through contact [power/temperature] of the last apply();
   // empty without thermal contact.

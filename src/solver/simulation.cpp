@@ -117,6 +117,7 @@ void Simulation::Impl::compute_forces(double dt) {
   }
   energy.contact = contacts->elastic_and_damping_energy();
   energy.friction = contacts->friction_energy();
+  energy.contact_released = contacts->released_energy();
   energy.internal = 0.0;
   energy.hourglass = 0.0;
   energy.eroded = 0.0;
@@ -286,6 +287,7 @@ void Simulation::Impl::kick() {
     }
   }
   energy.kinetic = kinetic;
+  energy_scale = std::max({energy_scale, std::abs(energy.total()), std::abs(energy.external_work)});
 }
 
 void Simulation::Impl::apply_nodal_boundaries(double dt_avg) {

@@ -86,6 +86,8 @@ struct Simulation::Impl {
 
   Energies energy;
   double total0 = 0.0;
+  // The largest of |total|, |total_0| and |external work| so far: the balance error's scale.
+  double energy_scale = 0.0;
   double external_work_done = 0.0;  // up to t^{n+1/2}
 
   std::vector<double> good_x, good_y, good_z;

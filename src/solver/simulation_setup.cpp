@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <fmt/format.h>
 
 #include <array>
@@ -221,6 +222,7 @@ void Simulation::Impl::setup() {
                                  dt_initial, limit_description()));
   kick();
   total0 = energy.total();
+  energy_scale = std::max(energy_scale, std::abs(total0));
 }
 
 // The lumped mass a part gives its nodes must be finite, and a rigid part must have some: a

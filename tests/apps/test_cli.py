@@ -78,7 +78,7 @@ with tempfile.TemporaryDirectory() as tmp:
     vx = grid.GetPointData().GetArray("velocity").GetComponent(0, 0)
     check(abs(vx - 1.0) < 1e-6, "a free cube keeps its initial velocity of 1 m/s")
     header = (out / "energy.csv").read_text().splitlines()[0]
-    check(header == "time,kinetic,internal,hourglass,contact,friction,eroded,external_work,total,balance_error",
+    check(header == "time,kinetic,internal,hourglass,contact,friction,eroded,contact_released,external_work,total,balance_error",
           "energy.csv has the documented columns")
 
     # A bad number: exit 2, message with file:line, keyword and field.

@@ -110,8 +110,8 @@ TEST(DeckThermalRun, OutputCarriesTheHeat) {
   run_simulation(plain, options, log);
   const std::string plain_energy = file_text(dir / "energy.csv");
   EXPECT_EQ(plain_energy.substr(0, plain_energy.find('\n')),
-            "time,kinetic,internal,hourglass,contact,friction,eroded,external_work,total,"
-            "balance_error");
+            "time,kinetic,internal,hourglass,contact,friction,eroded,contact_released,"
+            "external_work,total,balance_error");
   EXPECT_THAT(file_text(dir / "summary.json"), Not(HasSubstr("\"thermal\"")));
   EXPECT_THAT(file_text(dir / "states" / "state_0000.vtu"), Not(HasSubstr("temperature")));
   std::filesystem::remove_all(dir);

@@ -54,6 +54,11 @@ struct ContactStats {
   double elastic_energy = 0.0;    // energy stored in the penalty springs now
   double damping_energy = 0.0;    // work of the contact damping so far
   double friction_energy = 0.0;   // energy dissipated by friction so far
+  // Spring energy that vanished without doing work so far: adhesive bonds that broke, ties that
+  // failed, the springs of points whose facet eroded or left or that lost their partner while
+  // pressed, every spring when the time window closes. (A point that separates lets go of forces
+  // that fell to zero on the way: nothing is released.)
+  double released_energy = 0.0;
   // Thermal contact: heat conducted from surface 1 to surface 2 now [power] and so far [energy],
   // and friction work turned into heat so far (both surfaces) [energy].
   double heat_flow = 0.0, conducted_heat = 0.0, friction_heat = 0.0;
@@ -237,6 +242,7 @@ class ContactInterface {
     std::vector<double> fx, fy, fz;  // force on the point (before `weight`)
     std::vector<double> area, pressure, slip_speed, normal_force, tangential_force;
     std::vector<double> energy, damping_work, slip_work, penetration, omega2, pair_gap;
+    std::vector<double> released;  // spring energy the point let go of in this step
     // N2S: kMaxCornerWalls slots per point for the other walls of a concave corner it presses
     // (this step's, like the results above; not archived: every step finds them anew). Empty for
     // integration points.
@@ -253,7 +259,8 @@ class ContactInterface {
       a.values(own, target, weight, grid, candidates, state, adhered, approach_omega2,
                offset, shift, htx, hty, htz, slip, tie_facet, tie_xi, tie_eta, hit, hit_facet, hit_xi,
                hit_eta, fx, fy, fz, area, pressure, slip_speed, normal_force, tangential_force,
-               energy, damping_work, slip_work, penetration, omega2, pair_gap, heat_facet, heat_xi,
+               energy, damping_work, slip_work, penetration, omega2, pair_gap, released,
+               heat_facet, heat_xi,
                heat_eta, heat_conductance);
     }
   };

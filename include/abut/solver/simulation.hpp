@@ -31,9 +31,13 @@ struct Energies {
   double contact = 0.0;
   double friction = 0.0;
   double eroded = 0.0;  // internal and hourglass energy the eroded elements held
+  // Contact spring energy that vanished without doing work (ContactStats::released_energy).
+  double contact_released = 0.0;
   double external_work = 0.0;
-  // total = kinetic + internal + hourglass + contact + friction + eroded
-  double total() const { return kinetic + internal + hourglass + contact + friction + eroded; }
+  // total = kinetic + internal + hourglass + contact + friction + eroded + contact_released
+  double total() const {
+    return kinetic + internal + hourglass + contact + friction + eroded + contact_released;
+  }
 };
 
 struct PartState {
@@ -97,7 +101,9 @@ class Simulation {
   std::vector<std::uint8_t> eroded_shells() const;  // 1 per eroded shell (mesh order)
 
   Energies energies() const;
-  // Relative energy balance error: (total - total_0 - external_work) / max(total, total_0, |W|).
+  // Relative energy balance error: (total - total_0 - external_work) / the largest of |total|,
+  // |total_0| and |W| so far in the run (not at this instant only: a balance whose energies pass
+  // near zero would otherwise divide a small error by a smaller number).
   double energy_balance_error() const;
   std::vector<PartState> part_states() const;
 
