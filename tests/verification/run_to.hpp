@@ -1,5 +1,7 @@
 #pragma once
 // Helpers shared by the verification problems: build a model from deck text and march it.
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -15,6 +17,19 @@ inline void run_to(Simulation& sim, double t, const std::function<void(const Sim
     sim.advance();
     if (each) each(sim);
   }
+}
+
+// Runs to the end and returns the largest |energy balance error| over the cycles where the
+// energies in play (|total| or |external work|) exceed 1e-3 of `scale`, an expected size chosen
+// beforehand: earlier the balance divides round-off by round-off.
+inline double worst_energy_balance(Simulation& sim, double scale) {
+  double worst = 0.0;
+  run_to(sim, sim.end_time(), [&](const Simulation& s) {
+    const Energies e = s.energies();
+    if (std::max(std::abs(e.total()), std::abs(e.external_work)) > 1e-3 * scale)
+      worst = std::max(worst, std::abs(s.energy_balance_error()));
+  });
+  return worst;
 }
 
 // Index of the node nearest to the reference point (x, y, z).
