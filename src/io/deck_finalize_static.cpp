@@ -105,6 +105,12 @@ void DeckReader::finish_static_steps() {
                      "state at every converged increment: remove *OUTPUT" +
                          static_at);
   }
+  if (bulk_viscosity_where) {
+    throw InputError(*bulk_viscosity_where,
+                     "*CONTROL_BULK_VISCOSITY damps the shock fronts of an explicit run; static "
+                     "steps have no velocities for it to act on: remove *CONTROL_BULK_VISCOSITY" +
+                         static_at);
+  }
   if (!velocities.empty()) {
     throw InputError(velocities.front().entity.where,
                      "initial velocities are for explicit runs (static steps start at rest): "

@@ -269,7 +269,8 @@ class DeckReader {
   std::vector<PendingMerge> merges;
   std::vector<EntityRef> entity_references;  // entities that must exist
   std::vector<PendingContactKeyword> contact_keywords;
-  std::optional<SourceLocation> time_where, units_where, title_where, output_where;
+  std::optional<SourceLocation> time_where, units_where, title_where, output_where,
+      bulk_viscosity_where;
   std::size_t end_line = 0;  // the last line read of the main deck, for what it lacks
 
  private:
@@ -296,6 +297,7 @@ void read_parameter_default(DeckReader&, Block&);
 void read_unit_system(DeckReader&, Block&);
 void read_time(DeckReader&, Block&);
 void read_output(DeckReader&, Block&);
+void read_control_bulk_viscosity(DeckReader&, Block&);
 void read_node(DeckReader&, Block&);
 void read_element_solid(DeckReader&, Block&);
 void read_element_shell(DeckReader&, Block&);

@@ -1,4 +1,4 @@
-// *TITLE, *PARAMETER, *PARAMETER_DEFAULT, *UNIT_SYSTEM, *TIME, *OUTPUT.
+// *TITLE, *PARAMETER, *PARAMETER_DEFAULT, *UNIT_SYSTEM, *TIME, *OUTPUT, *CONTROL_BULK_VISCOSITY.
 #include "abut/core/functions.hpp"
 #include "deck_reader.hpp"
 
@@ -120,6 +120,26 @@ void read_output(DeckReader& d, Block& b) {
     r2->unsupported_unless(1, 0.0, "element output filtering (efilter)");
     for (std::size_t i : {2, 3, 4}) r2->unsupported(i, "state-file output");
   }
+}
+
+// *CONTROL_BULK_VISCOSITY (abut's own; IMPETUS has no such command): LS-DYNA's keyword of the
+// same name, its fields Q1 (quadratic) and Q2 (linear) with its defaults 1.5 and 0.06 (LS-DYNA
+// Keyword User's Manual, *CONTROL_BULK_VISCOSITY; ANSYS's EDBVIS gives the same defaults). They
+// apply to every deformable hexahedron; shells have no bulk viscosity. 0 and 0 switch it off,
+// e.g. to compare an elastic impact with 1-D wave theory or with an implicit code.
+void read_control_bulk_viscosity(DeckReader& d, Block& b) {
+  if (d.bulk_viscosity_where) {
+    throw InputError(b.where(), "the deck already has a *CONTROL_BULK_VISCOSITY at " +
+                                    d.bulk_viscosity_where->file + ":" +
+                                    std::to_string(d.bulk_viscosity_where->line));
+  }
+  d.bulk_viscosity_where = b.where();
+  const Row r = b.row({"q1", "q2"});
+  BulkViscosity& q = d.model.bulk_viscosity;
+  q.quadratic = r.number_or(0, q.quadratic);
+  r.require(q.quadratic >= 0.0, 0, "expected a quadratic coefficient >= 0 (0: none)");
+  q.linear = r.number_or(1, q.linear);
+  r.require(q.linear >= 0.0, 1, "expected a linear coefficient >= 0 (0: none)");
 }
 
 }  // namespace abut::deck

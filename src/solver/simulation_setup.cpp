@@ -82,6 +82,8 @@ void Simulation::Impl::setup() {
         blocks.emplace_back(part.id, material, std::move(hexes), mesh.nodes, &model.functions);
         blocks.back().set_element_ids(std::move(ids));
         blocks.back().set_erosion(part.erosion);
+        blocks.back().set_bulk_viscosity(model.bulk_viscosity.quadratic,
+                                         model.bulk_viscosity.linear);
         blocks.back().add_lumped_mass(part_mass);
         block_hex_index.push_back(part_hexes);
         info.block = static_cast<std::int32_t>(blocks.size() - 1);

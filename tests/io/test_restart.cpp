@@ -322,6 +322,28 @@ TEST(Restart, AnInterruptedAndRestartedRunWritesTheSameFiles) {
   fs::remove_all(dir);
 }
 
+// *CONTROL_BULK_VISCOSITY is not in the restart file: the restarted run takes it from its deck,
+// so a run without bulk viscosity, interrupted and continued, is the run in one go, and that run
+// differs from the default one (the keyword acts in both halves).
+TEST(Restart, TheDecksBulkViscosityActsOnBothSidesOfARestart) {
+  const Model model = read_deck_string(short_slide("*CONTROL_BULK_VISCOSITY\n0, 0\n"), "t.k");
+  std::ostringstream log;
+  const fs::path whole = fresh_dir("abut_restart_bulk_whole");
+  ASSERT_TRUE(run_simulation(model, {whole, 1, false}, log).stable);
+  const fs::path dir = fresh_dir("abut_restart_bulk_split");
+  ASSERT_TRUE(run_simulation(model, stopping_after(dir, 300), log).interrupted);
+  RunOptions again{dir, 1, false};
+  again.restart_from = dir / "restart.abr";
+  ASSERT_TRUE(run_simulation(model, again, log).stable);
+  for (const char* name : {"energy.csv", "parts.csv", "contact.csv"})
+    EXPECT_EQ(file_text(whole / name), file_text(dir / name)) << name;
+  const fs::path standard = fresh_dir("abut_restart_bulk_default");
+  ASSERT_TRUE(
+      run_simulation(read_deck_string(short_slide(), "t.k"), {standard, 1, false}, log).stable);
+  EXPECT_NE(file_text(whole / "energy.csv"), file_text(standard / "energy.csv"));
+  for (const fs::path& d : {whole, dir, standard}) fs::remove_all(d);
+}
+
 TEST(Restart, AnIntervalWritesRestartFilesAsTheRunGoes) {
   const Model model = read_deck_string(short_slide(), "t.k");
   std::ostringstream log;

@@ -162,6 +162,26 @@ TEST(ContactPenaltyScale, TheLastAssignmentWinsWhereTheyOverlap) {
   }
 }
 
+// Seed 001: an assignment covers the pairs between its two surfaces whichever side each part is
+// on, and one whose surfaces fall outside the contact is ignored.
+TEST(ContactPenaltyScale, EitherWayRoundAndPartsOutsideTheContactIgnored) {
+  const std::string far_part =
+      "*COMPONENT_BOX\n3, 3, 1, 1, 1\n0.1, 0.1, 0.1, 0.11, 0.11, 0.11\n*PART\n\"far\"\n3, 1\n"
+      "*SET_PART\n5\n2, 3\n";
+  for (const auto& [keywords, scale] : {
+           std::pair{std::string("*CONTACT_SCALE_PENALTY\n1\nP, 2, P, 1, 100.0\n"), 100.0},
+           {far_part + "*CONTACT_SCALE_PENALTY\n1\nP, 1, PS, 5, 100.0\n", 100.0},
+           {far_part + "*CONTACT_SCALE_PENALTY\n1\nP, 3, , , 100.0\nP, 1, P, 3, 10.0\n", 1.0},
+       }) {
+    const Model model = read_deck_string(two_blocks(keywords, 0.0001, "1.0e12"), "sides.k");
+    Simulation sim(model);
+    const auto& pairs = sim.contact_reports()[0].pairs;
+    ASSERT_EQ(pairs.size(), 1u) << keywords;
+    EXPECT_EQ(pairs[0].scale, scale) << keywords;
+    EXPECT_DOUBLE_EQ(pairs[0].penalty_max, scale * 1e12) << keywords;
+  }
+}
+
 // ADJUST: block 1's top nodes start 0.1 mm below block 2; with a depth of 0.5 mm they are moved
 // onto it in the reference configuration: no stress and no contact force at the start.
 TEST(ContactAdjust, MovesSecondaryNodesOntoTheMainSurfaceWithoutStress) {

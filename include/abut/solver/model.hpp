@@ -36,6 +36,13 @@ struct OutputControl {
   double history_interval = 0.0;
 };
 
+// *CONTROL_BULK_VISCOSITY: the artificial bulk viscosity of every deformable hexahedron
+// (SolidBlock::set_bulk_viscosity; its defaults are LS-DYNA's). Both 0: none.
+struct BulkViscosity {
+  double quadratic = SolidBlock::kDefaultBulkViscosityQuadratic;  // q1
+  double linear = SolidBlock::kDefaultBulkViscosityLinear;        // q2
+};
+
 struct Material {
   std::int64_t id = 0;
   MaterialParams params;
@@ -237,6 +244,7 @@ struct Model {
   std::optional<UnitSystem> units;  // set by *UNIT_SYSTEM
   TimeControl time;
   OutputControl output;
+  BulkViscosity bulk_viscosity;
 
   Mesh mesh;
   std::vector<Material> materials;
