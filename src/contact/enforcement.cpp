@@ -162,7 +162,7 @@ double ContactInterface::spring(const Side& own, std::size_t p, double area, con
 
 bool ContactInterface::quiet(const Pass& pass, std::size_t p) const {
   return pass.candidates.offsets[p] == pass.candidates.offsets[p + 1] && !pass.hit[p] &&
-         pass.state[p] != kTied && !pass.remembers(p) &&
+         pass.state[p] != kTied && !pass.remembers(p) && pass.released[p] == 0.0 &&
          (pass.heat_facet.empty() || pass.heat_facet[p] < 0);
 }
 

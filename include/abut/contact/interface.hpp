@@ -321,8 +321,8 @@ class ContactInterface {
   double scatter_corner(const Pass& pass, std::size_t p, ContactForces& out);
   void evaluate_point(Pass& pass, std::size_t p, const ContactInput& in);
   // A point without candidates, partner or tie, with nothing to forget (friction history, offset,
-  // bond) and no heat partner: evaluate_point leaves it as it is, and so it stays until a build
-  // gives it candidates.
+  // bond), no heat partner and no released energy for scatter to add: evaluate_point leaves it as
+  // it is, and so it stays until a build gives it candidates.
   bool quiet(const Pass& pass, std::size_t p) const;
   // Open points (open_points.cpp): whether this contact may skip them at all, the bands of the
   // facets near some point (after each build: which facets; at each step: their bands, which the
