@@ -15,8 +15,7 @@ using testing::error_of;
 using ::testing::HasSubstr;
 using testing::kBoxModel;
 using testing::model_of;
-
-std::string with_box(const std::string& extra) { return std::string(kBoxModel) + extra; }
+using testing::with_box;
 
 TEST(DeckBulkViscosity, WithoutTheKeywordTheHexahedraKeepLsDynasDefaults) {
   const Model m = model_of(kBoxModel);

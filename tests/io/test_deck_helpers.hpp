@@ -23,6 +23,9 @@ SI
 1, 1
 )";
 
+// The box model with `extra` keywords after it.
+inline std::string with_box(const std::string& extra) { return std::string(kBoxModel) + extra; }
+
 inline DeckResult read(const std::string& text) { return read_deck_string_with_notes(text, "t.k"); }
 inline Model model_of(const std::string& text) { return read_deck_string(text, "t.k"); }
 

@@ -12,9 +12,8 @@ using testing::error_of;
 using ::testing::HasSubstr;
 using testing::kBoxModel;
 using testing::model_of;
+using testing::with_box;
 using testing::read;
-
-std::string with_box(const std::string& extra) { return std::string(kBoxModel) + extra; }
 
 TEST(DeckControl, UnitSystemTimeOutputAndTitle) {
   const Model m = read(R"(*TITLE

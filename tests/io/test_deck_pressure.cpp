@@ -11,8 +11,7 @@ using testing::error_of;
 using ::testing::HasSubstr;
 using testing::kBoxModel;
 using testing::model_of;
-
-std::string with_box(const std::string& extra) { return std::string(kBoxModel) + extra; }
+using testing::with_box;
 
 const char* kRamp = "*CURVE\n5\n0.0, 0.0\n1.0, 1.0e6\n";
 

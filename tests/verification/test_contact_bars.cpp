@@ -19,48 +19,16 @@
 #include <string>
 
 #include "run_to.hpp"
+#include "two_bars.hpp"
 
 namespace abut {
 namespace {
 
 constexpr double kRho = 7800.0, kE = 210e9, kV = 10.0, kL = 0.2;
 
-// Bars of n elements along x with a square cross-section of side b.
+// Bars of n elements along x with a square cross-section of side b; pfac = E/h.
 std::string bars_deck(int n, double b, const std::string& extra = "") {
-  const std::string count = std::to_string(n), side = std::to_string(b);
-  return R"(
-*UNIT_SYSTEM
-SI
-*TIME
-1.2e-4
-*COMPONENT_BOX
-1, 1, )" +
-         count + R"(, 1, 1
--0.20005, 0.0, 0.0, -0.00005, )" +
-         side + ", " + side + R"(
-*COMPONENT_BOX
-2, 2, )" +
-         count + R"(, 1, 1
-0.00005, 0.0, 0.0, 0.20005, )" +
-         side + ", " + side + R"(
-*MAT_ELASTIC
-1, 7800.0, 210.0e9, 0.0
-*PART
-"left bar"
-1, 1
-"right bar"
-2, 1
-*INITIAL_VELOCITY
-P, 1, 10.0, 0.0, 0.0
-*INITIAL_VELOCITY
-P, 2, -10.0, 0.0, 0.0
-*CONTACT
-"bar ends"
-1
-P, 1, P, 2, 0.0, )" +
-         std::to_string(kE * n / kL) + "\n" + extra + R"(
-*END
-)";
+  return verification::two_bars_deck({kL, n, b, kV, 1.2e-4, kE * n / kL, extra});
 }
 
 struct Impact {

@@ -29,6 +29,7 @@
 #include <string>
 
 #include "run_to.hpp"
+#include "two_bars.hpp"
 
 namespace abut {
 namespace {
@@ -39,45 +40,7 @@ constexpr double kRho = 7800.0, kE = 210e9, kV0 = 5.0, kL = 0.1;
 // nothing for the default.
 std::string bars_deck(int n, const std::string& control) {
   const double h = kL / n;
-  const std::string count = std::to_string(n), side = std::to_string(h);
-  return R"(
-*UNIT_SYSTEM
-SI
-*TIME
-7.0e-5
-*COMPONENT_BOX
-1, 1, )" +
-         count +
-         R"(, 1, 1
--0.10005, 0.0, 0.0, -0.00005, )" +
-         side + ", " + side + R"(
-*COMPONENT_BOX
-2, 2, )" +
-         count +
-         R"(, 1, 1
-0.00005, 0.0, 0.0, 0.10005, )" +
-         side + ", " + side + R"(
-*MAT_ELASTIC
-1, 7800.0, 210.0e9, 0.0
-*PART
-"left bar"
-1, 1
-"right bar"
-2, 1
-*INITIAL_VELOCITY
-P, 1, 5.0, 0.0, 0.0
-*INITIAL_VELOCITY
-P, 2, -5.0, 0.0, 0.0
-*CONTACT
-"bar ends"
-1
-P, 1, P, 2, 0.0, )" +
-         std::to_string(10.0 * kE / h) + R"(
-0, 0.0
-)" + control +
-         R"(
-*END
-)";
+  return verification::two_bars_deck({kL, n, h, kV0, 7.0e-5, 10.0 * kE / h, "0, 0.0\n" + control});
 }
 
 struct Exchange {
