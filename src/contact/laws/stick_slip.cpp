@@ -30,31 +30,27 @@ double weakened_limit(const SlipLimits& limits, double slip, double stiffness) {
 StickSlipResult stick_slip(const Vec3& spring, double slip, const StickSlipStep& now,
                            const SlipLimits& limits) {
   const double k = now.stiffness;
-  const Vec3 trial =
-      spring - now.normal * dot(spring, now.normal) - now.slip_velocity * (k * now.dt);
-  const double size = norm(trial);
+  // Seed 004's return, held by the limit weakened by the slip so far, and should it slip, by the
+  // limit weakened further by the distance the point moved on its partner in this step (not by
+  // the spring's relaxation when the normal force falls: a block whose pressure dips while it is
+  // held has not slid).
   const double hold = weakened_limit(limits, slip, k);
-  StickSlipResult r;
-  if (size <= hold) {  // sticks: the slip count starts again
-    r.spring = r.force = trial;
-    if (now.damping > 0.0) {
-      const Vec3 d = now.slip_velocity * (-now.damping);
-      const double s = damping_within(trial, d, hold);
-      r.force = trial + d * s;
-      r.damping_work = s * now.damping * dot(now.slip_velocity, now.slip_velocity) * now.dt;
-    }
-    return r;
-  }
-  // Slips: the limit is weakened by the distance the point moved on its partner in this step
-  // (not by the spring's relaxation when the normal force falls: a block whose pressure dips
-  // while it is held has not slid).
   const double moved = norm(now.slip_velocity) * now.dt;
-  const double limit = weakened_limit(limits, slip + moved, k);
-  const double delta = (size - limit) / k;
-  r.slip_work = limit * delta;
-  r.slip = slip + moved;
-  r.sliding = true;
-  r.spring = r.force = limit > 0.0 ? trial * (limit / size) : Vec3{};
+  const TangentialResult t =
+      return_to_limit(spring, now.normal, now.slip_velocity, now.dt, k,
+                      {hold, weakened_limit(limits, slip + moved, k)}, /*was_sliding=*/false);
+  StickSlipResult r;
+  r.spring = r.force = t.force;
+  r.slip_work = t.slip_work;
+  r.sliding = t.sliding;
+  if (t.sliding) {
+    r.slip = slip + moved;
+  } else if (now.damping > 0.0) {  // sticks: the slip count starts again, the spring is damped
+    const Vec3 d = now.slip_velocity * (-now.damping);
+    const double s = damping_within(t.force, d, hold);
+    r.force = t.force + d * s;
+    r.damping_work = s * now.damping * dot(now.slip_velocity, now.slip_velocity) * now.dt;
+  }
   return r;
 }
 
