@@ -120,12 +120,13 @@ int main(int argc, char** argv) {
       ->required();
   run->add_option("-o,--output", output,
                   "Output directory (default: <deck stem>_out beside the deck)");
-  run->add_option("--threads", threads_text, "Number of threads (default: all cores)");
+  const CLI::Option* threads_option =
+      run->add_option("--threads", threads_text, "Number of threads (default: all cores)");
   run->add_flag("-q,--quiet", quiet, "No progress output");
   std::string restart_from, restart_interval_text;
   run->add_option("--restart", restart_from,
                   "Continue from a restart file (default output: the file's directory)");
-  run->add_option("--restart-interval", restart_interval_text,
+  const CLI::Option* interval_option = run->add_option("--restart-interval", restart_interval_text,
                   "Also write restart.abr every this much model time and at the end (it is always "
                   "written when the run is interrupted)");
   CLI::App* check =
@@ -144,10 +145,11 @@ int main(int argc, char** argv) {
   }
   int threads = 0;
   std::string error = abut_cli::deck_error(deck);
-  if (error.empty() && !threads_text.empty())
+  // Given but empty (--threads '') is a mistake too, not the default.
+  if (error.empty() && threads_option->count() > 0)
     error = abut_cli::parse_threads(threads_text, threads);
   double restart_interval = 0.0;
-  if (error.empty() && !restart_interval_text.empty())
+  if (error.empty() && interval_option->count() > 0)
     error = abut_cli::parse_interval(restart_interval_text, restart_interval);
   if (!error.empty()) {
     std::cerr << "error: " << error << "\n";

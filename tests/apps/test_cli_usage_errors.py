@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Every mistake on the command line is exit 2 with a plain message: an unknown command, a
-missing deck, a directory given as deck, an unreadable deck, a bad --threads, an unknown option,
+missing deck, a directory given as deck, an unreadable deck, a bad (or empty) --threads or
+--restart-interval, an unknown option,
 and an output directory that cannot be written (the default one beside a deck in a read-only
 directory included). --help and --version still succeed."""
 import os
@@ -54,10 +55,12 @@ with tempfile.TemporaryDirectory() as tmp:
         usage_error(run(command, str(tmp / "missing.k")), f"deck '{tmp / 'missing.k'}' not found",
                     f"{command} with a missing deck")
     usage_error(run("run", str(tmp)), "is a directory, not a deck", "a directory as deck")
-    for bad in ["0", "-1", "abc", "2.5", "100000000000000000000"]:
+    for bad in ["", "0", "-1", "abc", "2.5", "100000000000000000000"]:
         r = run("run", str(deck), "-q", "--threads", bad)
         usage_error(r, "--threads must be a whole number between 1 and 1024", f"--threads {bad}")
         check(len(r.stderr) < 200, f"--threads {bad}: a short message")
+    usage_error(run("run", str(deck), "-q", "--restart-interval", ""),
+                "--restart-interval must be a positive model time", "an empty --restart-interval")
     usage_error(run("run", str(deck), "--frobnicate"), "frobnicate", "an unknown option")
     usage_error(run("run"), "deck", "run without a deck")
 
