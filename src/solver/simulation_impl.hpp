@@ -127,6 +127,7 @@ struct Simulation::Impl {
   SourceLocation limit_location() const;
   // InputError at the *PART unless its lumped mass is finite (and positive when rigid).
   void check_part_mass(const Part& part, const std::vector<double>& part_mass, bool rigid) const;
+  void check_element_step(const Part& part, double step) const;
 };
 
 }  // namespace abut

@@ -85,6 +85,7 @@ void Simulation::Impl::setup() {
         blocks.back().set_bulk_viscosity(model.bulk_viscosity.quadratic,
                                          model.bulk_viscosity.linear);
         blocks.back().add_lumped_mass(part_mass);
+        check_element_step(part, blocks.back().initial_stable_step(mesh.nodes));
         block_hex_index.push_back(part_hexes);
         info.block = static_cast<std::int32_t>(blocks.size() - 1);
       }
@@ -105,6 +106,7 @@ void Simulation::Impl::setup() {
         shell_blocks.back().set_element_ids(std::move(ids));
         shell_blocks.back().set_erosion(part.erosion);
         shell_blocks.back().add_lumped_mass(part_mass, rotary_inertia);
+        check_element_step(part, shell_blocks.back().initial_stable_step(mesh.nodes));
         block_shell_index.push_back(part_shells);
         info.shell_block = static_cast<std::int32_t>(shell_blocks.size() - 1);
       }
@@ -245,6 +247,22 @@ void Simulation::Impl::check_part_mass(const Part& part, const std::vector<doubl
                    fmt::format("part {} has {} mass {:.4g} (from {}); expected a finite, positive "
                                "mass: check the density and the element volumes",
                                part.id, rigid ? "rigid" : "lumped", total, density));
+}
+
+// Every deformable element has a finite stable step: a modulus so large that the wave speed
+// overflows (E = 1e308) gives none, and the run would take one step of dt_max and end
+// "completed" with infinities (issue 28). Checked on the reference mesh, before any erosion.
+void Simulation::Impl::check_element_step(const Part& part, double step) const {
+  if (std::isfinite(step) && step > 0.0) return;
+  const Material* material = model.find_material(part.material_id);
+  throw InputError(
+      part.where,
+      fmt::format("part {} has no finite element stable time step ({:.4g}): the wave speed of its "
+                  "material{} is not finite; check the moduli and the density",
+                  part.id, step,
+                  material ? fmt::format(" {} at {}:{}", material->id, material->where.file,
+                                         material->where.line)
+                           : std::string()));
 }
 
 // Node -> element force slots (CSR) in block and element order, hexes first, then shells.

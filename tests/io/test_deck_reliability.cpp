@@ -81,6 +81,17 @@ TEST(DeckReliability, DensityThatOverflowsTheMassIsLocatedAtThePart) {
   EXPECT_THAT(e.message(), HasSubstr("density 1e+308 of material 1 at t.k:9"));
 }
 
+// A Young's modulus whose wave speed overflows (issue 28): no finite element step, so the run
+// would take one step of dt_max and end "completed" with infinities.
+TEST(DeckReliability, ModulusWhoseWaveSpeedOverflowsIsLocatedAtThePart) {
+  std::string deck(kBoxModel);
+  deck.replace(deck.find("210.0e9"), 7, "1.5e308");
+  const InputError e = simulation_error(deck);
+  EXPECT_EQ(e.where().line, 12u);  // the *PART row
+  EXPECT_THAT(e.message(), HasSubstr("part 1 has no finite element stable time step"));
+  EXPECT_THAT(e.message(), HasSubstr("material 1 at t.k:9"));
+}
+
 TEST(DeckReliability, RigidPartWithAnOverflowingMassIsLocated) {
   std::string deck(kBoxModel);
   const std::string elastic = "*MAT_ELASTIC\n1, 7800.0, 210.0e9, 0.3";
