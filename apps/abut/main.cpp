@@ -126,9 +126,10 @@ int main(int argc, char** argv) {
   std::string restart_from, restart_interval_text;
   run->add_option("--restart", restart_from,
                   "Continue from a restart file (default output: the file's directory)");
-  const CLI::Option* interval_option = run->add_option("--restart-interval", restart_interval_text,
-                  "Also write restart.abr every this much model time and at the end (it is always "
-                  "written when the run is interrupted)");
+  const CLI::Option* interval_option = run->add_option(
+      "--restart-interval", restart_interval_text,
+      "Also write restart.abr every this much model time and at the end (it is always "
+      "written when the run is interrupted)");
   CLI::App* check =
       app.add_subcommand("check", "Parse and validate a deck; every error with file:line");
   check->add_option("deck", deck, "Input deck")->required();
