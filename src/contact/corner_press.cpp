@@ -80,14 +80,8 @@ double ContactInterface::scatter_corner(const Pass& pass, std::size_t p, Contact
     const Vec3 force = press.force * pass.weight;
     const auto& nodes = target.surface.facets[press.facet];
     const auto shape = quad_shape(press.xi, press.eta);
-    out.fx[node] += force.x;
-    out.fy[node] += force.y;
-    out.fz[node] += force.z;
-    for (int a = 0; a < 4; ++a) {
-      out.fx[nodes[a]] -= force.x * shape[a];
-      out.fy[nodes[a]] -= force.y * shape[a];
-      out.fz[nodes[a]] -= force.z * shape[a];
-    }
+    out.add(node, force);
+    for (int a = 0; a < 4; ++a) out.add(nodes[a], force * -shape[a]);
     if (pass.own == 0) stats_.force += force;
     if (pass.target == 0) stats_.force -= force;
     stats_.normal_force += pass.weight * press.normal_force;

@@ -35,16 +35,8 @@ void ContactInterface::scatter(const ContactInput& in, ContactForces& out, bool 
       const auto n_target = quad_shape(pass.hit_xi[p], pass.hit_eta[p]);
       const Vec3 force = Vec3{pass.fx[p], pass.fy[p], pass.fz[p]} * w;
       // Action on the point's nodes, reaction on the partner facet's nodes at the projection.
-      for (int a = 0; a < 4; ++a) {
-        out.fx[own_nodes[a]] += force.x * n_own[a];
-        out.fy[own_nodes[a]] += force.y * n_own[a];
-        out.fz[own_nodes[a]] += force.z * n_own[a];
-      }
-      for (int a = 0; a < 4; ++a) {
-        out.fx[target_nodes[a]] -= force.x * n_target[a];
-        out.fy[target_nodes[a]] -= force.y * n_target[a];
-        out.fz[target_nodes[a]] -= force.z * n_target[a];
-      }
+      for (int a = 0; a < 4; ++a) out.add(own_nodes[a], force * n_own[a]);
+      for (int a = 0; a < 4; ++a) out.add(target_nodes[a], force * -n_target[a]);
       if (pass.own == 0) stats_.force += force;
       if (pass.target == 0) stats_.force -= force;
       stats_.normal_force += w * pass.normal_force[p];

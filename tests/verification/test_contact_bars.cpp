@@ -31,9 +31,7 @@ std::string bars_deck(int n, double b, const std::string& extra = "") {
   return verification::two_bars_deck({kL, n, b, kV, 1.2e-4, kE * n / kL, extra});
 }
 
-struct Impact {
-  double begin = -1.0, end = -1.0;  // contact begins and ends (each within half a step)
-  int periods = 0;                  // separate spans of contact
+struct Impact : verification::ContactSpans {
   double v_left = 0.0, v_right = 0.0;
 };
 
@@ -41,18 +39,8 @@ Impact collide(int n, double b, const std::string& extra = "") {
   const Model model = read_deck_string(bars_deck(n, b, extra), "bars.k");
   Simulation sim(model);
   Impact r;
-  double previous_t = sim.time();
-  bool previous_active = sim.contact_reports().at(0).stats.active_points > 0;
-  verification::run_to(sim, sim.end_time(), [&](const Simulation& s) {
-    const bool active = s.contact_reports()[0].stats.active_points > 0;
-    if (active && !previous_active) {
-      ++r.periods;
-      r.begin = 0.5 * (previous_t + s.time());
-    }
-    if (!active && previous_active) r.end = 0.5 * (previous_t + s.time());
-    previous_active = active;
-    previous_t = s.time();
-  });
+  r.start(sim);
+  verification::run_to(sim, sim.end_time(), [&](const Simulation& s) { r.record(s); });
   const auto parts = sim.part_states();
   r.v_left = parts.at(0).velocity.x;
   r.v_right = parts.at(1).velocity.x;

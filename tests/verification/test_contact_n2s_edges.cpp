@@ -91,9 +91,7 @@ std::string bars_deck(bool symmetric, double sy, double sz) {
   return d.str();
 }
 
-struct Impact {
-  double begin = -1.0, end = -1.0;  // contact begins and ends (each within half a step)
-  int periods = 0;                  // separate spans of contact
+struct Impact : verification::ContactSpans {
   double worst_energy = 0.0;        // largest |E(t) - E(0)| / E(0) over the cycles
   double penetration = 0.0;         // largest over the cycles
   double v_left = 0.0, v_right = 0.0;
@@ -104,18 +102,10 @@ Impact collide(bool symmetric, double sy, double sz) {
   Simulation sim(model);
   Impact r;
   const double e0 = sim.energies().total();
-  double previous_t = sim.time();
-  bool previous_active = false;
+  r.start(sim);
   verification::run_to(sim, sim.end_time(), [&](const Simulation& s) {
+    r.record(s);
     const ContactStats& stats = s.contact_reports()[0].stats;
-    const bool active = stats.active_points > 0;
-    if (active && !previous_active) {
-      ++r.periods;
-      r.begin = 0.5 * (previous_t + s.time());
-    }
-    if (!active && previous_active) r.end = 0.5 * (previous_t + s.time());
-    previous_active = active;
-    previous_t = s.time();
     r.worst_energy = std::max(r.worst_energy, std::abs(s.energies().total() - e0) / e0);
     r.penetration = std::max(r.penetration, stats.max_penetration);
   });

@@ -45,6 +45,11 @@ struct ContactInput {
 struct ContactForces {
   std::span<double> fx, fy, fz;
   std::span<double> heat, conductance;
+  void add(std::int32_t node, const Vec3& f) const {
+    fx[node] += f.x;
+    fy[node] += f.y;
+    fz[node] += f.z;
+  }
 };
 
 struct ContactStats {
