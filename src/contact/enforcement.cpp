@@ -397,8 +397,8 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     const SlipLimits limits =
         slip_limits(s.tangential_law, {std::max(fn, 0.0), area, slip_speed, in.time, f.x});
     if (limits.stick > 0.0 || limits.slide > 0.0) {
-      const StickSlipResult t = stick_slip(previous, pass.slip[p],
-                                           {normal, v_t, in.dt, k_t, damping_of(k_t, r)}, limits);
+      const StickSlipResult t =
+          stick_slip(previous, pass.slip[p], {normal, v_t, in.dt, k_t, damping_of(k_t, r)}, limits);
       slip = t.slip;
       ft = t.force;
       spring = t.spring;

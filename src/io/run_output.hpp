@@ -186,9 +186,9 @@ class HistoryWriter {
     written_ = true;
     last_time_ = sim.time();
     const Energies e = sim.energies();
-    energy_values_ = {e.kinetic,  e.internal,         e.hourglass,     e.contact,
-                      e.friction, e.eroded,           e.contact_released, e.external_work,
-                      e.total(),  sim.energy_balance_error()};
+    energy_values_ = {
+        e.kinetic, e.internal,         e.hourglass,     e.contact, e.friction,
+        e.eroded,  e.contact_released, e.external_work, e.total(), sim.energy_balance_error()};
     if (thermal_) thermal_output::append_energy_values(sim, energy_values_);
     energy_.write_row(sim.time(), energy_values_);
     for (const PartState& p : sim.part_states())
@@ -219,9 +219,9 @@ class HistoryWriter {
  private:
   bool contact_heat_ = false;
   static std::vector<std::string> energy_columns(bool thermal) {
-    std::vector<std::string> columns{"kinetic",  "internal", "hourglass",        "contact",
-                                     "friction", "eroded",   "contact_released", "external_work",
-                                     "total",    "balance_error"};
+    std::vector<std::string> columns{
+        "kinetic", "internal",         "hourglass",     "contact", "friction",
+        "eroded",  "contact_released", "external_work", "total",   "balance_error"};
     if (thermal)
       for (std::string& c : thermal_output::energy_columns()) columns.push_back(std::move(c));
     return columns;

@@ -12,8 +12,8 @@ using testing::error_of;
 using ::testing::HasSubstr;
 using testing::kBoxModel;
 using testing::model_of;
-using testing::with_box;
 using testing::read;
+using testing::with_box;
 
 TEST(DeckControl, UnitSystemTimeOutputAndTitle) {
   const Model m = read(R"(*TITLE

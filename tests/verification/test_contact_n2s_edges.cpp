@@ -92,8 +92,8 @@ std::string bars_deck(bool symmetric, double sy, double sz) {
 }
 
 struct Impact : verification::ContactSpans {
-  double worst_energy = 0.0;        // largest |E(t) - E(0)| / E(0) over the cycles
-  double penetration = 0.0;         // largest over the cycles
+  double worst_energy = 0.0;  // largest |E(t) - E(0)| / E(0) over the cycles
+  double penetration = 0.0;   // largest over the cycles
   double v_left = 0.0, v_right = 0.0;
 };
 

@@ -93,8 +93,10 @@ std::string deck(const Case& c, const Slope& slope) {
   s.precision(17);
   auto curve = [&](int id, double value) {
     s << "*CURVE\n" << id << "\n";
-    if (slope.ramp > 0.0) s << "0.0, 0.0\n" << slope.ramp << ", " << value << "\n1.0, " << value << "\n";
-    else s << "0.0, " << value << "\n1.0, " << value << "\n";
+    if (slope.ramp > 0.0)
+      s << "0.0, 0.0\n" << slope.ramp << ", " << value << "\n1.0, " << value << "\n";
+    else
+      s << "0.0, " << value << "\n1.0, " << value << "\n";
   };
   s << "*UNIT_SYSTEM\nSI\n*TIME\n" << slope.end << "\n";
   if (c.mesh == Mesh::Matched) {
@@ -108,7 +110,8 @@ std::string deck(const Case& c, const Slope& slope) {
   }
   s << "*COMPONENT_BOX\n2, 2, " << slope.plane_elements << ", 4, 1\n-0.2, -0.1, -0.02, "
     << -0.2 + 0.05 * slope.plane_elements << ", 0.1, 0.0\n";
-  s << (c.body == Body::Rigid ? "*MAT_RIGID\n1, 7800.0\n" : "*MAT_ELASTIC\n1, 7800.0, 2.0e11, 0.3\n");
+  s << (c.body == Body::Rigid ? "*MAT_RIGID\n1, 7800.0\n"
+                              : "*MAT_ELASTIC\n1, 7800.0, 2.0e11, 0.3\n");
   s << "*MAT_RIGID\n2, 7800.0\n*PART\n\"block\"\n1, 1\n\"plane\"\n2, 2\n";
   if (slope.v0 > 0.0) s << "*INITIAL_VELOCITY\nP, 1, " << slope.v0 << ", 0.0, 0.0\n";
   s << "*BC_MOTION\nP, 2, XYZ, XYZ\n";
@@ -117,10 +120,17 @@ std::string deck(const Case& c, const Slope& slope) {
   s << "*LOAD_GRAVITY\nZ, 1\nX, 2\n*CONTACT\n1\nP, 1, P, 2, , 6.2e9\n";
   s << "*CONTACT_FRICTION\n1, COULOMB, " << slope.mu_s << ", " << slope.mu_d << "\n";
   switch (c.discretisation) {
-    case Discretisation::S2SSymmetric: break;
-    case Discretisation::S2SOneWay: s << "*CONTACT_DISCRETIZATION\n1, S2S, 0\n"; break;
-    case Discretisation::N2SOneWay: s << "*CONTACT_DISCRETIZATION\n1, N2S, 0\n"; break;
-    case Discretisation::N2SSymmetric: s << "*CONTACT_DISCRETIZATION\n1, N2S, 1\n"; break;
+    case Discretisation::S2SSymmetric:
+      break;
+    case Discretisation::S2SOneWay:
+      s << "*CONTACT_DISCRETIZATION\n1, S2S, 0\n";
+      break;
+    case Discretisation::N2SOneWay:
+      s << "*CONTACT_DISCRETIZATION\n1, N2S, 0\n";
+      break;
+    case Discretisation::N2SSymmetric:
+      s << "*CONTACT_DISCRETIZATION\n1, N2S, 1\n";
+      break;
   }
   s << "*END\n";
   return s.str();
@@ -166,8 +176,7 @@ TEST_P(StaticFriction, HoldsWhereStaticFrictionShould) {
   if (c.path == Path::Stopping) slope = {20.0, 0.5, 0.3, 0.5};
   if (c.body == Body::Elastic) slope.end = c.path == Path::Stopping ? 0.15 : 0.1;
   const Motion m = run(c, slope);
-  std::cout << name(c) << ": moved " << m.final_distance << " m, speed " << m.final_speed
-            << " m/s";
+  std::cout << name(c) << ": moved " << m.final_distance << " m, speed " << m.final_speed << " m/s";
   if (c.path == Path::Stopping) {
     const double t = slope.theta_deg * std::numbers::pi / 180.0;
     const double d = slope.v0 * slope.v0 / (2.0 * kG * (std::sin(t) + slope.mu_d * std::cos(t)));
@@ -185,8 +194,8 @@ TEST_P(StaticFriction, HoldsWhereStaticFrictionShould) {
 
 std::vector<Case> all_cases() {
   std::vector<Case> cases;
-  for (auto d : {Discretisation::S2SSymmetric, Discretisation::S2SOneWay,
-                 Discretisation::N2SOneWay, Discretisation::N2SSymmetric})
+  for (auto d : {Discretisation::S2SSymmetric, Discretisation::S2SOneWay, Discretisation::N2SOneWay,
+                 Discretisation::N2SSymmetric})
     for (auto m : {Mesh::Matched, Mesh::NonMatching})
       for (auto b : {Body::Rigid, Body::Elastic})
         for (auto p : {Path::SetDown, Path::Ramped, Path::Stopping}) cases.push_back({d, m, b, p});
@@ -210,9 +219,9 @@ TEST(StaticFrictionSteep, SlidesAtTheDynamicRate) {
     const Motion m = run(c, slope);
     const double t = 30.0 * std::numbers::pi / 180.0;
     const double a = kG * (std::sin(t) - 0.4 * std::cos(t)), expected = 0.5 * a * 0.6 * 0.6;
-    std::cout << name(c) << " at 30 deg: slid " << m.final_distance << " m, a t^2 / 2 = "
-              << expected << " m, error " << 100.0 * (m.final_distance - expected) / expected
-              << "%\n";
+    std::cout << name(c) << " at 30 deg: slid " << m.final_distance
+              << " m, a t^2 / 2 = " << expected << " m, error "
+              << 100.0 * (m.final_distance - expected) / expected << "%\n";
     EXPECT_NEAR(m.final_distance, expected, 0.01 * expected);
   }
 }

@@ -7,13 +7,13 @@
 namespace abut::verification {
 
 struct TwoBars {
-  double length = 0.2;     // of each bar [m]
-  int elements = 200;      // along each bar
-  double side = 0.001;     // of the square cross-section, one element across [m]
-  double speed = 10.0;     // of each bar toward the other [m/s]
+  double length = 0.2;  // of each bar [m]
+  int elements = 200;   // along each bar
+  double side = 0.001;  // of the square cross-section, one element across [m]
+  double speed = 10.0;  // of each bar toward the other [m/s]
   double end_time = 1.2e-4;
-  double pfac = 0.0;       // the contact's penalty [Pa/m]
-  std::string contact;     // lines after *CONTACT's line 2, and keywords after it
+  double pfac = 0.0;    // the contact's penalty [Pa/m]
+  std::string contact;  // lines after *CONTACT's line 2, and keywords after it
 };
 
 inline std::string two_bars_deck(const TwoBars& b) {
@@ -31,13 +31,14 @@ inline std::string two_bars_deck(const TwoBars& b) {
 "right bar"
 2, 1
 *INITIAL_VELOCITY
-P, 1, )" + std::to_string(b.speed) +
-         ", 0.0, 0.0\n*INITIAL_VELOCITY\nP, 2, " + std::to_string(-b.speed) + R"(, 0.0, 0.0
+P, 1, )" +
+         std::to_string(b.speed) + ", 0.0, 0.0\n*INITIAL_VELOCITY\nP, 2, " +
+         std::to_string(-b.speed) + R"(, 0.0, 0.0
 *CONTACT
 "bar ends"
 1
-P, 1, P, 2, 0.0, )" + std::to_string(b.pfac) +
-         "\n" + b.contact + "\n*END\n";
+P, 1, P, 2, 0.0, )" +
+         std::to_string(b.pfac) + "\n" + b.contact + "\n*END\n";
 }
 
 }  // namespace abut::verification

@@ -237,8 +237,8 @@ class ContactInterface {
     // Point p has something a step without a partner would forget: friction history, an initial
     // offset, an adhesive bond.
     bool remembers(std::size_t p) const {
-      return htx[p] != 0.0 || hty[p] != 0.0 || htz[p] != 0.0 || slip[p] != 0.0 || offset[p] != 0.0 ||
-             adhered[p];
+      return htx[p] != 0.0 || hty[p] != 0.0 || htz[p] != 0.0 || slip[p] != 0.0 ||
+             offset[p] != 0.0 || adhered[p];
     }
     // Results of the current step, one slot per point.
     std::vector<std::uint8_t> hit;
@@ -261,12 +261,11 @@ class ContactInterface {
     // first step after a restart finds them again). The others are quiet (ContactInterface::quiet).
     std::vector<std::int32_t> awake;
     void archive(StateArchive& a) {
-      a.values(own, target, weight, grid, candidates, state, adhered, approach_omega2,
-               offset, shift, htx, hty, htz, slip, tie_facet, tie_xi, tie_eta, hit, hit_facet, hit_xi,
+      a.values(own, target, weight, grid, candidates, state, adhered, approach_omega2, offset,
+               shift, htx, hty, htz, slip, tie_facet, tie_xi, tie_eta, hit, hit_facet, hit_xi,
                hit_eta, fx, fy, fz, area, pressure, slip_speed, normal_force, tangential_force,
-               energy, damping_work, slip_work, penetration, omega2, pair_gap, released,
-               heat_facet, heat_xi,
-               heat_eta, heat_conductance);
+               energy, damping_work, slip_work, penetration, omega2, pair_gap, released, heat_facet,
+               heat_xi, heat_eta, heat_conductance);
     }
   };
 
