@@ -4,7 +4,6 @@
 // as the closest wall changes). Writes the point's own slots only (points run in parallel).
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "abut/contact/interface.hpp"
 #include "abut/contact/quad.hpp"
@@ -20,11 +19,10 @@ void ContactInterface::press_corner_walls(Pass& pass, std::size_t p, const Point
   const Side& own = sides_[pass.own];
   const Side& target = sides_[pass.target];
   const auto first = pass.candidates.offsets[p], last = pass.candidates.offsets[p + 1];
-  const double sharp_cos = std::cos(s.edge_angle * std::numbers::pi / 180.0);
   const CornerWalls walls =
       find_corner_walls(target_facets(target, target.depth, in, bands_current_),
                         {pass.candidates.facets.data() + first, last - first}, f.nodes, f.x,
-                        f.normal, partner_rules(own, p), h, sharp_cos);
+                        f.normal, partner_rules(own, p), h, sharp_cos_);
   const double m_own = mass_[f.nodes[0]];
   for (std::size_t k = 0; k < walls.count; ++k) {
     const Partner& wall = walls.walls[k];
@@ -40,17 +38,9 @@ void ContactInterface::press_corner_walls(Pass& pass, std::size_t p, const Point
     // node and the wall's nodal masses at the projection (enforcement.cpp).
     const auto& nodes = target.surface.facets[wall.facet];
     const auto shape = quad_shape(wall.xi, wall.eta);
-    double m_target = 0.0;
-    Vec3 v_target;
-    for (int a = 0; a < 4; ++a) {
-      if (target.node_area[nodes[a]] > 0.0)
-        m_target += mass_[nodes[a]] * std::min(1.0, shape[a] * area / target.node_area[nodes[a]]);
-      if (!in.vx.empty())
-        v_target += Vec3{in.vx[nodes[a]], in.vy[nodes[a]], in.vz[nodes[a]]} * shape[a];
-    }
-    const double m = m_own + m_target > 0.0 ? m_own * m_target / (m_own + m_target) : 0.0;
+    const double m = reduced_mass(m_own, mass_share(target, nodes, shape, area));
     const double c = 2.0 * s.damping * std::sqrt(k_n * m);
-    const double v_n = dot(f.v - v_target, wall.normal);  // < 0 while approaching
+    const double v_n = dot(f.v - velocity_at(nodes, shape, in), wall.normal);  // < 0: approaching
     const double elastic = response.pressure * area;
     const double fn = std::max(elastic - c * v_n, 0.0);  // damping never pulls
     CornerPress& press = pass.corner[p * kMaxCornerWalls + k];

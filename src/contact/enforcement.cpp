@@ -10,10 +10,8 @@
 #include "abut/contact/quad.hpp"
 
 namespace abut {
-namespace {
-
-Vec3 velocity_at(const std::array<std::int32_t, 4>& nodes, const std::array<double, 4>& shape,
-                 const ContactInput& in) {
+Vec3 ContactInterface::velocity_at(const std::array<std::int32_t, 4>& nodes,
+                                   const std::array<double, 4>& shape, const ContactInput& in) {
   Vec3 v;
   if (in.vx.empty()) return v;  // at construction
   for (int a = 0; a < 4; ++a)
@@ -21,7 +19,21 @@ Vec3 velocity_at(const std::array<std::int32_t, 4>& nodes, const std::array<doub
   return v;
 }
 
-}  // namespace
+// The point's share of each node's mass: m_i * N_i * (its area / the node's area), so that the
+// shares of all points add up to the nodal masses; on the other side a point may cover more than
+// a node's area: never more than the node.
+double ContactInterface::mass_share(const Side& side, const std::array<std::int32_t, 4>& nodes,
+                                    const std::array<double, 4>& shape, double area) const {
+  double m = 0.0;
+  for (int a = 0; a < 4; ++a)
+    if (side.node_area[nodes[a]] > 0.0)
+      m += mass_[nodes[a]] * std::min(1.0, shape[a] * area / side.node_area[nodes[a]]);
+  return m;
+}
+
+double ContactInterface::reduced_mass(double m1, double m2) {
+  return m1 + m2 > 0.0 ? m1 * m2 / (m1 + m2) : 0.0;
+}
 
 ContactInterface::PointFrame ContactInterface::frame(const Side& side, std::size_t p,
                                                      const ContactInput& in) const {
@@ -226,18 +238,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
                          : std::max(-dot(f.vector_area, partner_normal), 0.0);
     return area > 0.0;
   };
-  // The point's share of each node's mass: m_i * N_i * (its area / the node's area), so that
-  // the shares of all points add up to the nodal masses; on the other side a point may cover
-  // more than a node's area: never more than the node.
-  auto mass_share = [&](const Side& side, const std::array<std::int32_t, 4>& nodes,
-                        const std::array<double, 4>& n) {
-    double m = 0.0;
-    for (int a = 0; a < 4; ++a)
-      if (side.node_area[nodes[a]] > 0.0)
-        m += mass_[nodes[a]] * std::min(1.0, n[a] * area / side.node_area[nodes[a]]);
-    return m;
-  };
-  const double m_own = node_point ? mass_[f.nodes[0]] : mass_share(own, f.nodes, f.shape);
+  const double m_own = node_point ? mass_[f.nodes[0]] : mass_share(own, f.nodes, f.shape, area);
 
   // The spring to the partner point (xi, eta) of `facet`, along `normal`.
   struct Spring {
@@ -251,8 +252,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     r.normal = normal;
     r.velocity = velocity_at(nodes, n, in);
     r.stiffness = spring(own, p, area, target, facet);
-    const double m_target = mass_share(target, nodes, n);
-    r.effective_mass = m_own + m_target > 0.0 ? m_own * m_target / (m_own + m_target) : 0.0;
+    r.effective_mass = reduced_mass(m_own, mass_share(target, nodes, n, area));
     return r;
   };
   // Fraction xi of the critical damping 2 sqrt(k m) of a spring k.

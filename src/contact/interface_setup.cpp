@@ -125,6 +125,7 @@ void ContactInterface::build_sides(const ContactInput& in,
   const ContactSettings& s = settings_;
   margin_ = kInfinity;
   smooth_reach_ = smooth_edge_reach(s.edge_angle);
+  sharp_cos_ = std::cos(s.edge_angle * std::numbers::pi / 180.0);
   // Typical facet size of each side (median of the longest edges), for the subdivision of S2S
   // facets.
   std::vector<double> typical_size;

@@ -316,6 +316,13 @@ class ContactInterface {
                      std::int32_t previous) const;
   double spring(const Side& own, std::size_t p, double area, const Side& target,
                 std::int32_t f) const;
+  // The velocity at shape values `shape` of the facet `nodes`.
+  static Vec3 velocity_at(const std::array<std::int32_t, 4>& nodes,
+                          const std::array<double, 4>& shape, const ContactInput& in);
+  // A point's share, for its `area`, of the masses of the nodes of `side` at `shape`.
+  double mass_share(const Side& side, const std::array<std::int32_t, 4>& nodes,
+                    const std::array<double, 4>& shape, double area) const;
+  static double reduced_mass(double m1, double m2);  // m1 m2 / (m1 + m2), 0 without mass
   // N2S: the other walls of a concave corner that node point p presses besides its partner h, each
   // a frictionless penalty spring along its own normal into pass.corner (corner_press.cpp).
   void press_corner_walls(Pass& pass, std::size_t p, const PointFrame& f, const Partner& h,
@@ -363,6 +370,7 @@ class ContactInterface {
   std::vector<double> part_scale_;      // pair scale, part_ids_.size()^2
   double margin_ = 0.0;
   double smooth_reach_ = 0.0;  // overshoot beyond a smooth edge per unit |gap|: tan(alpha_edge)
+  double sharp_cos_ = 1.0;     // cos(alpha_edge): facets turned further meet at a sharp edge
   double initial_stable_step_ = std::numeric_limits<double>::infinity();
   std::size_t builds_ = 0;
   bool rebuild_pending_ = false;      // points or facets changed (erosion)
