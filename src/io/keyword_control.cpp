@@ -38,14 +38,19 @@ void read_parameter_rows(DeckReader& d, Block& b, bool only_if_undefined) {
   }
 }
 
+// A keyword a deck holds once: records where it is, or fails at a second one naming the first.
+void once_per_deck(std::optional<SourceLocation>& first, const Block& b, const char* keyword) {
+  if (first) {
+    throw InputError(b.where(), std::string("the deck already has a ") + keyword + " at " +
+                                    first->file + ":" + std::to_string(first->line));
+  }
+  first = b.where();
+}
+
 }  // namespace
 
 void read_title(DeckReader& d, Block& b) {
-  if (d.title_where) {
-    throw InputError(b.where(), "the deck already has a *TITLE at " + d.title_where->file + ":" +
-                                    std::to_string(d.title_where->line));
-  }
-  d.title_where = b.where();
+  once_per_deck(d.title_where, b, "*TITLE");
   if (!b.done()) d.model.title = unquote(b.raw_line("the title").text);
 }
 
@@ -54,11 +59,7 @@ void read_parameter(DeckReader& d, Block& b) { read_parameter_rows(d, b, false);
 void read_parameter_default(DeckReader& d, Block& b) { read_parameter_rows(d, b, true); }
 
 void read_unit_system(DeckReader& d, Block& b) {
-  if (d.units_where) {
-    throw InputError(b.where(), "the deck already has a *UNIT_SYSTEM at " + d.units_where->file +
-                                    ":" + std::to_string(d.units_where->line));
-  }
-  d.units_where = b.where();
+  once_per_deck(d.units_where, b, "*UNIT_SYSTEM");
   const Row r = b.row({"units", "temperature"});
   const auto units = parse_unit_system(r.word(0));
   if (!units)
@@ -76,11 +77,7 @@ void read_unit_system(DeckReader& d, Block& b) {
 }
 
 void read_time(DeckReader& d, Block& b) {
-  if (d.time_where) {
-    throw InputError(b.where(), "the deck already has a *TIME at " + d.time_where->file + ":" +
-                                    std::to_string(d.time_where->line));
-  }
-  d.time_where = b.where();
+  once_per_deck(d.time_where, b, "*TIME");
   const Row r = b.row({"t_term", "sf_dt", "dt_min", "dt_max", "ms_max", "t_start"});
   TimeControl& t = d.model.time;
   if (r.number_or_function(0, 0.0).function_id)
@@ -128,12 +125,7 @@ void read_output(DeckReader& d, Block& b) {
 // apply to every deformable hexahedron; shells have no bulk viscosity. 0 and 0 switch it off,
 // e.g. to compare an elastic impact with 1-D wave theory or with an implicit code.
 void read_control_bulk_viscosity(DeckReader& d, Block& b) {
-  if (d.bulk_viscosity_where) {
-    throw InputError(b.where(), "the deck already has a *CONTROL_BULK_VISCOSITY at " +
-                                    d.bulk_viscosity_where->file + ":" +
-                                    std::to_string(d.bulk_viscosity_where->line));
-  }
-  d.bulk_viscosity_where = b.where();
+  once_per_deck(d.bulk_viscosity_where, b, "*CONTROL_BULK_VISCOSITY");
   const Row r = b.row({"q1", "q2"});
   BulkViscosity& q = d.model.bulk_viscosity;
   q.quadratic = r.number_or(0, q.quadratic);
