@@ -32,30 +32,29 @@ inline double worst_energy_balance(Simulation& sim, double scale) {
   return worst;
 }
 
-// The spans of a run during which its first contact touches (has active points): when the first
-// began and the last ended, each halfway between the cycles either side, and how many there were.
-// start() before the run, record() after every cycle.
+// The spans of a run during which its first contact touches (has active points): the first touch
+// and the last release, each halfway between the cycles either side, and how many spans there
+// were. start() before the run, record() after every cycle.
 struct ContactSpans {
   double begin = -1.0, end = -1.0;
   int periods = 0;  // separate spans of contact
 
+  bool touching() const { return previous_active_; }  // at the last cycle recorded
+
   void start(const Simulation& s) {
     previous_t_ = s.time();
-    previous_active_ = touching(s);
+    previous_active_ = touches(s);
   }
   void record(const Simulation& s) {
-    const bool active = touching(s);
-    if (active && !previous_active_) {
-      ++periods;
-      begin = 0.5 * (previous_t_ + s.time());
-    }
+    const bool active = touches(s);
+    if (active && !previous_active_ && ++periods == 1) begin = 0.5 * (previous_t_ + s.time());
     if (!active && previous_active_) end = 0.5 * (previous_t_ + s.time());
     previous_active_ = active;
     previous_t_ = s.time();
   }
 
  private:
-  static bool touching(const Simulation& s) {
+  static bool touches(const Simulation& s) {
     return s.contact_reports().at(0).stats.active_points > 0;
   }
   double previous_t_ = 0.0;

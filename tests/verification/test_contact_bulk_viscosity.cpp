@@ -43,11 +43,9 @@ std::string bars_deck(int n, const std::string& control) {
   return verification::two_bars_deck({kL, n, h, kV0, 7.0e-5, 10.0 * kE / h, "0, 0.0\n" + control});
 }
 
-struct Exchange {
+struct Exchange : verification::ContactSpans {
   double v_left = 0.0, v_right = 0.0;  // centre-of-mass velocities at the end
   double fraction = 0.0;               // momentum exchanged / 2 m v0, from the left bar
-  double first = -1.0, last = -1.0;    // first touch and last release (each within half a step)
-  int periods = 0;                     // separate spans of contact
   bool separated = false;              // the bars touched and had parted by the end time
 };
 
@@ -55,16 +53,9 @@ Exchange collide(int n, const std::string& control) {
   const Model model = read_deck_string(bars_deck(n, control), "bars.k");
   Simulation sim(model);
   Exchange r;
-  bool previous_active = false;
-  double previous_t = sim.time();
-  verification::run_to(sim, sim.end_time(), [&](const Simulation& s) {
-    const bool active = s.contact_reports()[0].stats.active_points > 0;
-    if (active && !previous_active && ++r.periods == 1) r.first = 0.5 * (previous_t + s.time());
-    if (!active && previous_active) r.last = 0.5 * (previous_t + s.time());
-    previous_active = active;
-    previous_t = s.time();
-  });
-  r.separated = r.periods > 0 && !previous_active;
+  r.start(sim);
+  verification::run_to(sim, sim.end_time(), [&](const Simulation& s) { r.record(s); });
+  r.separated = r.periods > 0 && !r.touching();
   const auto parts = sim.part_states();
   r.v_left = parts.at(0).velocity.x;
   r.v_right = parts.at(1).velocity.x;
@@ -75,7 +66,7 @@ Exchange collide(int n, const std::string& control) {
 double two_l_over_c() { return 2.0 * kL / std::sqrt(kE / kRho); }
 
 void print(int n, const char* label, const Exchange& r) {
-  const double span = r.last - r.first;
+  const double span = r.end - r.begin;
   std::cout << n << " elements, " << label << ": velocities after " << r.v_left << ", " << r.v_right
             << " m/s (reference -5, +5); momentum exchanged " << 100.0 * r.fraction
             << "% of 2 m v0 (error " << 100.0 * (r.fraction - 1.0) << "%); from first touch to "
@@ -95,7 +86,7 @@ TEST(ContactBulkViscosity, WithoutItTheBarsExchangeTheirMomentumWithinTwoPercent
     // The undamped stiff springs let the end faces rattle (the interface opens and closes many
     // times, printed above; 1-D theory keeps it closed), but the bars touch first and part for
     // good 2L/c apart.
-    EXPECT_NEAR(r.last - r.first, two_l_over_c(), 0.02 * two_l_over_c()) << n;
+    EXPECT_NEAR(r.end - r.begin, two_l_over_c(), 0.02 * two_l_over_c()) << n;
   }
 }
 
