@@ -187,6 +187,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   auto release = [&pass, p](double energy) {
     if (energy > 0.0) pass.released[p] += energy;
   };
+  if (!pass.mortar_count.empty()) pass.mortar_count[p] = 0;  // spread at the point unless covered
   if (!pass.heat_facet.empty()) pass.heat_facet[p] = -1;
   if (!pass.corner.empty())  // N2S: last step's walls of a concave corner (corner_press.cpp)
     for (std::size_t k = 0; k < kMaxCornerWalls; ++k)
@@ -277,6 +278,11 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   // partner point in every direction, in tension too; sticking contact fails for good when its
   // traction exceeds sigma_stick.
   auto tied = [&]() {
+    // A tie holds its point to one partner point: spread at the point, with its whole area.
+    if (!node_point) {
+      area = f.area;
+      pass.mortar_count[p] = 0;
+    }
     const std::int32_t facet = pass.tie_facet[p];
     if (!target.active[facet]) return false;
     const QuadCorners corners = quad_corners(target.surface.facets[facet], in.x, in.y, in.z);
@@ -311,13 +317,47 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     release(held_now());
   }
 
-  const Partner h = partner_of(pass, p, f, in, last_partner);
-  if (h.facet < 0) {  // beyond the detection depth or off the facets, while it was pressed
+  Partner h = partner_of(pass, p, f, in, last_partner);
+  // An integration point acts with the part of its cell over the other surface, spread over the
+  // nodes of both as the cell's overlaps give (mortar.hpp), at the mean gap over that part (the
+  // mortar gap: its centroids on both surfaces, (x_own - x_other) . n less the pair's gap), so
+  // that a cell straddling a border or a tilted partner acts where it touches. Only a cell that
+  // faces its partner within alpha_edge (cell_cover.cpp): one turned further (a block's side wall
+  // against a plate it digs into) projects edge-on, and acts at its point with its whole area.
+  CellOverlap o;
+  const bool facing_cell = !node_point && meet_by_cell(pass, p, f, in, h, o);
+  if (h.facet < 0 || (facing_cell && !(o.area > 0.0))) {
+    // beyond the detection depth or off the facets (its cell too), while it was pressed
     release(held_now());
     lose_partner();
     return;
   }
   if (!pass.corner.empty() && node_point) press_corner_walls(pass, p, f, h, in);
+  Vec3 mortar_velocity;  // sum of W v over both sides' nodes: the cell's mean relative velocity
+  if (facing_cell) {
+    if (!(o.area > 0.0)) {
+      lose_partner();
+      return;
+    }
+    area = o.area;
+    const double inv = 1.0 / o.area;
+    for (int a = 0; a < 4; ++a) {
+      pass.mortar_own[4 * p + a] = o.own[a] * inv;
+      const std::int32_t i = f.nodes[a];
+      if (!in.vx.empty()) mortar_velocity += Vec3{in.vx[i], in.vy[i], in.vz[i]} * (o.own[a] * inv);
+    }
+    for (int k = 0; k < o.count; ++k) {
+      pass.mortar_facet[kMaxOverlaps * p + k] = o.facet[k];
+      const auto& nodes = target.surface.facets[o.facet[k]];
+      for (int b = 0; b < 4; ++b) {
+        const double w = o.target[k][b] * inv;
+        pass.mortar_target[4 * (kMaxOverlaps * p + k) + b] = w;
+        if (!in.vx.empty())
+          mortar_velocity -= Vec3{in.vx[nodes[b]], in.vy[nodes[b]], in.vz[nodes[b]]} * w;
+      }
+    }
+    pass.mortar_count[p] = static_cast<std::uint8_t>(o.count);
+  }
   const bool from_behind = s.sense == ContactSense::Negative;
   const bool bilateral = s.sense == ContactSense::Bilateral;
   const double gap =
@@ -378,7 +418,9 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   }
   const double k_n = response.stiffness * area;
   const double c = damping_of(k_n, r);
-  const Vec3 v_rel = f.v - r.velocity;
+  // The cell's mean relative velocity (the same weights as its force: its damping and friction
+  // only dissipate), else the point's.
+  const Vec3 v_rel = facing_cell ? mortar_velocity : f.v - r.velocity;
   const double v_n = dot(v_rel, normal);  // < 0 while approaching
   const double elastic = response.pressure * area;
   // Damping may reduce the push but never pulls, unless the contact holds in tension.

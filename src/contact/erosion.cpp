@@ -48,6 +48,8 @@ void ContactInterface::erode(std::span<const std::uint8_t> eroded) {
       side.point_xi.push_back(-1.0);
       side.point_eta.push_back(-1.0);
       side.point_weight.push_back(0.0);
+      side.point_cell.insert(side.point_cell.end(), {-1.0, 1.0, -1.0, 1.0});
+      side.point_reach.push_back(0.0);
       init_point(side, side.point_facet.size() - 1, no_free_edges, 1.0);
       for (Pass& pass : passes_)
         if (pass.own == static_cast<int>(side_index)) {

@@ -11,10 +11,12 @@ namespace {
 
 struct Point1D {
   double s, w;
+  double lo = 0.0, hi = 0.0;  // its cell: the weights laid end to end from the interval's start
 };
 
 // Gauss-Legendre rule with n points on [a, b].
 void gauss_on(int n, double a, double b, std::vector<Point1D>& out) {
+  const std::size_t first = out.size();
   const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
   if (n == 1) {
     out.push_back({mid, 2.0 * half});
@@ -27,6 +29,12 @@ void gauss_on(int n, double a, double b, std::vector<Point1D>& out) {
     out.push_back({mid - g * half, 5.0 / 9.0 * half});
     out.push_back({mid, 8.0 / 9.0 * half});
     out.push_back({mid + g * half, 5.0 / 9.0 * half});
+  }
+  double at = a;
+  for (std::size_t k = first; k < out.size(); ++k) {
+    out[k].lo = at;
+    at = k + 1 == out.size() ? b : at + out[k].w;
+    out[k].hi = at;
   }
 }
 
@@ -57,7 +65,8 @@ std::vector<FacetPoint> facet_rule(int accuracy_level, bool edge_refinement, std
   std::vector<FacetPoint> points;
   points.reserve(along_xi.size() * along_eta.size());
   for (const Point1D& e : along_eta)
-    for (const Point1D& x : along_xi) points.push_back({x.s, e.s, x.w * e.w});
+    for (const Point1D& x : along_xi)
+      points.push_back({x.s, e.s, x.w * e.w, x.lo, x.hi, e.lo, e.hi});
   return points;
 }
 

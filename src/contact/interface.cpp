@@ -87,10 +87,15 @@ void ContactInterface::rebuild_broad_phase(const ContactInput& in) {
     const Side& own = sides_[pass.own];
     const Side& target = sides_[pass.target];
     std::vector<Box> boxes(target.surface.size());
+    // An S2S point acts with the part of its cell over the other surface (cell_cover.cpp): its
+    // partner may lie beyond the border, as far as its cell reaches.
+    const double reach = own.point_reach.empty()
+                             ? 0.0
+                             : *std::max_element(own.point_reach.begin(), own.point_reach.end());
     for (std::size_t f = 0; f < boxes.size(); ++f) {
       const QuadCorners c = quad_corners(target.surface.facets[f], in.x, in.y, in.z);
-      const double grow =
-          std::max({target.depth[f], above}) + target.facet_gap[f] + own.max_point_gap + margin_;
+      const double grow = std::max(std::max(target.depth[f], above) + margin_, reach) +
+                          target.facet_gap[f] + own.max_point_gap;
       for (int k = 0; k < 3; ++k) {
         const double lo = std::min({c[0][k], c[1][k], c[2][k], c[3][k]});
         const double hi = std::max({c[0][k], c[1][k], c[2][k], c[3][k]});

@@ -210,12 +210,15 @@ void ContactInterface::build_points(Side& side, const ContactInput& in, double o
   const ContactSettings& s = settings_;
   const ContactSurface& surface = side.surface;
   std::vector<double> facet_area(surface.size(), 0.0);
-  auto add_point = [&](std::int32_t f, std::int32_t node, double xi, double eta, double weight) {
+  auto add_point = [&](std::int32_t f, std::int32_t node, double xi, double eta, double weight,
+                       const CellBounds& cell = {}, double reach = 0.0) {
     side.point_facet.push_back(f);
     side.point_node.push_back(node);
     side.point_xi.push_back(xi);
     side.point_eta.push_back(eta);
     side.point_weight.push_back(weight);
+    side.point_cell.insert(side.point_cell.end(), {cell.xi0, cell.xi1, cell.eta0, cell.eta1});
+    side.point_reach.push_back(reach);
   };
   // Integration points (S2S). A facet two or more times larger than the facets it meets would
   // press its few points into single small facets of the other side with the stiffness of its
@@ -250,8 +253,18 @@ void ContactInterface::build_points(Side& side, const ContactInput& in, double o
             for (int a = 0; a < 4; ++a)
               side.node_area[surface.facets[f][a]] += shape[a] * weight * jacobian;
           facet_area[f] += weight * jacobian;
-          if (s.discretisation == Discretisation::SurfaceToSurface)
-            add_point(static_cast<std::int32_t>(f), -1, xi, eta, weight);
+          if (s.discretisation == Discretisation::SurfaceToSurface) {
+            const CellBounds cell{
+                -1.0 + (2.0 * i + 1.0 + q.xi0) * inv, -1.0 + (2.0 * i + 1.0 + q.xi1) * inv,
+                -1.0 + (2.0 * j + 1.0 + q.eta0) * inv, -1.0 + (2.0 * j + 1.0 + q.eta1) * inv};
+            // Its cell's farthest corner from it.
+            const Vec3 x = quad_point(c, xi, eta);
+            double reach = 0.0;
+            for (const double a : {cell.xi0, cell.xi1})
+              for (const double b : {cell.eta0, cell.eta1})
+                reach = std::max(reach, norm(quad_point(c, a, b) - x));
+            add_point(static_cast<std::int32_t>(f), -1, xi, eta, weight, cell, reach);
+          }
         }
       }
   }
@@ -371,6 +384,11 @@ void ContactInterface::size_pass(Pass& pass, std::size_t n) const {
   const bool heat = settings_.thermal.any();
   pass.heat_facet.resize(heat ? n : 0, -1);
   for (auto* v : {&pass.heat_xi, &pass.heat_eta, &pass.heat_conductance}) v->resize(heat ? n : 0);
+  const bool cells = settings_.discretisation == Discretisation::SurfaceToSurface;
+  pass.mortar_own.resize(cells ? 4 * n : 0, 0.0);
+  pass.mortar_target.resize(cells ? 4 * kMaxOverlaps * n : 0, 0.0);
+  pass.mortar_facet.resize(cells ? kMaxOverlaps * n : 0, -1);
+  pass.mortar_count.resize(cells ? n : 0, 0);
   for (auto* v : {&pass.offset,
                   &pass.htx,
                   &pass.hty,
@@ -423,7 +441,12 @@ void ContactInterface::initial_state(const ContactInput& in) {
       const double k_bound = spring(own, p, f.area, target, -1);
       if (m_min > 0.0) omega2[p] = 2.0 * k_bound / m_min;
       if (!f.active) continue;
-      const Partner h = partner_of(pass, p, f, in, -1);
+      Partner h = partner_of(pass, p, f, in, -1);
+      // An integration point's partner and gap as the steps find them: over its cell
+      // (cell_cover.cpp).
+      CellOverlap cell;
+      if (own.point_node[p] < 0 && meet_by_cell(pass, p, f, in, h, cell) && !(cell.area > 0.0))
+        continue;
       if (h.facet < 0) continue;
       if (s.freeze) {
         pass.state[p] = kTied;

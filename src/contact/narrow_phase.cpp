@@ -66,7 +66,7 @@ FacetVerdict judge_facet(const TargetFacets& target, std::int32_t f, const PairR
   Vec3 push = q.normal;
   if (has_normal) {
     const double facing = dot(n_p, q.normal);
-    if (rules.from_behind ? facing <= 0.0 : facing >= 0.0) return v;
+    if (rules.from_behind ? facing <= rules.facing : facing >= -rules.facing) return v;
   }
   if (q.crossed_edges != 0) {
     const bool sharp = (q.crossed_edges & target.sharp[f]) != 0;

@@ -54,7 +54,7 @@ bool ContactInterface::surely_open(const Pass& pass, std::size_t p, const Contac
   const Side& target = sides_[pass.target];
   const Vec3 x = point_at(own, p, in);  // where frame() finds it
   const TargetFacets facets = target_facets(target, target.depth, in);
-  const PartnerRules rules = partner_rules(own, p);
+  const PartnerRules rules = border_rules(own, p);  // a cell may reach beyond its border
   // The broad phase leaves out the facets that share a node with the point's own (its keep
   // filter); the narrow phase passes over inactive ones.
   for (auto k = pass.candidates.offsets[p]; k < pass.candidates.offsets[p + 1]; ++k) {
@@ -93,7 +93,7 @@ double ContactInterface::approach_limit(const Pass& pass, std::size_t p, const C
   const Side& target = sides_[pass.target];
   const Vec3 x = point_at(own, p, in);
   const TargetFacets facets = target_facets(target, target.depth, in);
-  const PartnerRules rules = partner_rules(own, p);
+  const PartnerRules rules = border_rules(own, p);  // a cell may reach beyond its border
   double clearance = kInfinity;
   for (auto k = first; k < last; ++k) {
     const std::int32_t f = pass.candidates.facets[k];

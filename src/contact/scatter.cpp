@@ -1,6 +1,7 @@
 // Scatter: the forces of the evaluated points to the nodes, serially in point order (so the sums
 // do not depend on the thread count), with the interface's statistics, nodal pressure and wear.
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "abut/contact/interface.hpp"
@@ -34,9 +35,27 @@ void ContactInterface::scatter(const ContactInput& in, ContactForces& out, bool 
       const auto n_own = quad_shape(own.point_xi[p], own.point_eta[p]);
       const auto n_target = quad_shape(pass.hit_xi[p], pass.hit_eta[p]);
       const Vec3 force = Vec3{pass.fx[p], pass.fy[p], pass.fz[p]} * w;
-      // Action on the point's nodes, reaction on the partner facet's nodes at the projection.
-      for (int a = 0; a < 4; ++a) out.add(own_nodes[a], force * n_own[a]);
-      for (int a = 0; a < 4; ++a) out.add(target_nodes[a], force * -n_target[a]);
+      // Action on the point's nodes, reaction on the partner facet's nodes at the projection;
+      // an integration point's over its cell and the facets the cell covers (mortar.hpp).
+      const int covered = pass.mortar_count.empty() ? 0 : pass.mortar_count[p];
+      std::array<double, 4> spread_own = n_own;
+      if (covered > 0)
+        for (int a = 0; a < 4; ++a) spread_own[a] = pass.mortar_own[4 * p + a];
+      for (int a = 0; a < 4; ++a) out.add(own_nodes[a], force * spread_own[a]);
+      // The reaction on the facets of the other surface: (facet, weights) per covered facet.
+      auto each_target = [&](auto&& visit) {
+        if (covered == 0) {
+          visit(target_nodes, n_target.data());
+          return;
+        }
+        for (int k = 0; k < covered; ++k) {
+          const std::size_t slot = kMaxOverlaps * p + static_cast<std::size_t>(k);
+          visit(target.surface.facets[pass.mortar_facet[slot]], &pass.mortar_target[4 * slot]);
+        }
+      };
+      each_target([&](const std::array<std::int32_t, 4>& nodes, const double* weights) {
+        for (int a = 0; a < 4; ++a) out.add(nodes[a], force * -weights[a]);
+      });
       if (pass.own == 0) stats_.force += force;
       if (pass.target == 0) stats_.force -= force;
       stats_.normal_force += w * pass.normal_force[p];
@@ -54,22 +73,26 @@ void ContactInterface::scatter(const ContactInput& in, ContactForces& out, bool 
 
       // Nodal pressure and wear: area-weighted averages over each node's tributary area.
       const double load = w * pass.area[p];
-      for (int a = 0; a < 4; ++a) {
-        pressure_[own_nodes[a]] += load * n_own[a] * pass.pressure[p] / own.node_area[own_nodes[a]];
-        pressure_[target_nodes[a]] +=
-            load * n_target[a] * pass.pressure[p] / target.node_area[target_nodes[a]];
-      }
+      for (int a = 0; a < 4; ++a)
+        pressure_[own_nodes[a]] +=
+            load * spread_own[a] * pass.pressure[p] / own.node_area[own_nodes[a]];
+      each_target([&](const std::array<std::int32_t, 4>& nodes, const double* weights) {
+        for (int a = 0; a < 4; ++a)
+          pressure_[nodes[a]] += load * weights[a] * pass.pressure[p] / target.node_area[nodes[a]];
+      });
       const WearRateFunction& own_rate = *wear_rate[self_contact() ? 0 : pass.own];
       const WearRateFunction& target_rate = *wear_rate[self_contact() ? 0 : pass.target];
       if (own_rate) {
         const double dose = load * own_rate(pass.pressure[p], pass.slip_speed[p]) * in.dt;
         for (int a = 0; a < 4; ++a)
-          wear_[own_nodes[a]] += dose * n_own[a] / own.node_area[own_nodes[a]];
+          wear_[own_nodes[a]] += dose * spread_own[a] / own.node_area[own_nodes[a]];
       }
       if (target_rate) {
         const double dose = load * target_rate(pass.pressure[p], pass.slip_speed[p]) * in.dt;
-        for (int a = 0; a < 4; ++a)
-          wear_[target_nodes[a]] += dose * n_target[a] / target.node_area[target_nodes[a]];
+        each_target([&](const std::array<std::int32_t, 4>& nodes, const double* weights) {
+          for (int a = 0; a < 4; ++a)
+            wear_[nodes[a]] += dose * weights[a] / target.node_area[nodes[a]];
+        });
       }
     }
   }

@@ -17,6 +17,9 @@ namespace abut {
 struct FacetPoint {
   double xi = 0.0, eta = 0.0;
   double weight = 0.0;  // reference-area weight; the weights of a facet sum to 4
+  // The cell the point stands for (mortar.hpp): per direction the Gauss weights laid end to end,
+  // so that the cells tile the square and each has the point's weight as its area.
+  double xi0 = -1.0, xi1 = 1.0, eta0 = -1.0, eta1 = 1.0;
 };
 
 // Gauss points per direction of an accuracy level: 1, 2 or 3.

@@ -14,13 +14,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <optional>
 #include <span>
 #include <vector>
 
 #include "abut/contact/broad_phase.hpp"
 #include "abut/contact/corner_walls.hpp"
 #include "abut/contact/edge_contact.hpp"
+#include "abut/contact/mortar.hpp"
 #include "abut/contact/narrow_phase.hpp"
 #include "abut/contact/penetration_zone.hpp"
 #include "abut/contact/settings.hpp"
@@ -175,6 +175,10 @@ class ContactInterface {
     // Contact points. S2S: a point on facet point_facet at (xi, eta); N2S: node point_node.
     std::vector<std::int32_t> point_facet, point_node;
     std::vector<double> point_xi, point_eta, point_weight;
+    // S2S: the cell each point stands for (mortar.hpp), xi0, xi1, eta0, eta1 per point, and how
+    // far its cell reached from it at the start (a point beyond its partner's border still acts
+    // with the part of its cell over it). Node points: a whole square and 0.
+    std::vector<double> point_cell, point_reach;
     std::vector<double> point_pfac, point_ks, point_share, point_depth, point_thickness;
     std::vector<double> point_gap;       // g_s, capped by Gap_max_s (gap.hpp)
     std::vector<double> point_min_edge;  // g_s_l: shortest edge at the point in self contact
@@ -193,9 +197,13 @@ class ContactInterface {
     void archive(StateArchive& a) {
       a.values(sharp, free_edges, off, active, depth, facet_gap, facet_min_edge, node_area,
                facet_km, facet_part, node_facet_start, node_facets, point_facet, point_node,
-               point_xi, point_eta, point_weight, point_pfac, point_ks, point_share, point_depth,
-               point_thickness, point_gap, point_min_edge, max_point_gap, max_facet_gap, point_part,
-               node_free, max_point_depth, max_km, max_pfac);
+               point_xi, point_eta, point_weight, point_cell, point_reach, point_pfac, point_ks,
+               point_share, point_depth, point_thickness, point_gap, point_min_edge, max_point_gap,
+               max_facet_gap, point_part, node_free, max_point_depth, max_km, max_pfac);
+    }
+    CellBounds cell(std::size_t p) const {
+      return {point_cell[4 * p], point_cell[4 * p + 1], point_cell[4 * p + 2],
+              point_cell[4 * p + 3]};
     }
     std::array<std::int32_t, 4> point_nodes(std::size_t p) const {
       const std::int32_t n = point_node[p];
@@ -248,6 +256,12 @@ class ContactInterface {
     std::vector<double> area, pressure, slip_speed, normal_force, tangential_force;
     std::vector<double> energy, damping_work, slip_work, penetration, omega2, pair_gap;
     std::vector<double> released;  // spring energy the point let go of in this step
+    // S2S (mortar.hpp): how the point's force spreads, as fractions of it: over its own facet's
+    // nodes (4 per point) and over the nodes of each facet of the other surface its cell covers
+    // (kMaxOverlaps facets of 4 per point; mortar_count of them used). Empty for node points.
+    std::vector<double> mortar_own, mortar_target;
+    std::vector<std::int32_t> mortar_facet;
+    std::vector<std::uint8_t> mortar_count;
     // N2S: kMaxCornerWalls slots per point for the other walls of a concave corner it presses
     // (this step's, like the results above; not archived: every step finds them anew). Empty for
     // integration points.
@@ -264,8 +278,9 @@ class ContactInterface {
       a.values(own, target, weight, grid, candidates, state, adhered, approach_omega2, offset,
                shift, htx, hty, htz, slip, tie_facet, tie_xi, tie_eta, hit, hit_facet, hit_xi,
                hit_eta, fx, fy, fz, area, pressure, slip_speed, normal_force, tangential_force,
-               energy, damping_work, slip_work, penetration, omega2, pair_gap, released, heat_facet,
-               heat_xi, heat_eta, heat_conductance);
+               energy, damping_work, slip_work, penetration, omega2, pair_gap, released, mortar_own,
+               mortar_target, mortar_facet, mortar_count, heat_facet, heat_xi, heat_eta,
+               heat_conductance);
     }
   };
 
@@ -310,6 +325,19 @@ class ContactInterface {
   TargetFacets target_facets(const Side& target, std::span<const double> depth,
                              const ContactInput& in, bool banded = false) const;
   PartnerRules partner_rules(const Side& own, std::size_t p) const;
+  // S2S (cell_cover.cpp): the part of point p's cell over the other surface around its partner
+  // h, and the mean gap over it (the mortar gap) less the pair's gap.
+  CellOverlap cover(const Side& own, std::size_t p, const Side& target, const Partner& h,
+                    const ContactInput& in) const;
+  double cell_gap(const Side& own, std::size_t p, const Side& target, const Partner& h,
+                  const CellOverlap& o, const ContactInput& in) const;
+  // Whether integration point p meets the other surface cell by cell: its partner h faces it
+  // within alpha_edge, or a facing facet within its cell's reach does (h replaced); then its
+  // overlap o and mortar gap (h.gap). False: h acts at the point with its whole area. The
+  // narrow phase's rules for a cell (the edge tolerance widened to the cell's reach).
+  bool meet_by_cell(const Pass& pass, std::size_t p, const PointFrame& f, const ContactInput& in,
+                    Partner& h, CellOverlap& o) const;
+  PartnerRules border_rules(const Side& own, std::size_t p) const;
   // The partner among the broad-phase candidates; failing that, near `previous` (last step's
   // partner, or -1).
   Partner partner_of(const Pass& pass, std::size_t p, const PointFrame& f, const ContactInput& in,

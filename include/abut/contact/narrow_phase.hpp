@@ -53,6 +53,10 @@ struct PartnerRules {
   double point_depth = 0.0;  // the point's own detection depth: a pair uses the larger one
   double depth_above = 0.0;  // largest accepted gap outside the facet
   bool from_behind = false;  // the point must face the back of the facet (contact sense negative)
+  // How squarely the point must face the facet: n_point . n_facet < -facing (0: any facing at
+  // all; S2S points beyond the other surface's border: cos(alpha_edge), so that a cell reaches
+  // only over a surface that faces its own, not over the side walls beyond that border).
+  double facing = 0.0;
   double edge_tolerance = 0.0;                                      // delta_edge
   double smooth_reach = 0.0;                                        // tan(alpha_edge)
   double point_gap = 0.0;                                           // g_s, capped (gap.hpp)

@@ -1,0 +1,61 @@
+#pragma once
+// Cell-wise segment-to-segment integration of surface-to-surface contact (issue 27, item 3).
+//
+// An integration point of a facet stands for a cell of it: the integration cells tile the facet
+// (integration.hpp, FacetPoint's cell). Its traction is taken constant over the cell, and the
+// cell is integrated over its overlap with the facets of the other surface that it faces, in the
+// manner of mortar methods with a piecewise constant multiplier (Puso & Laursen 2004, "A mortar
+// segment-to-segment contact method for large deformation solid mechanics", CMAME 193:601;
+// CalculiX's face-to-face contact, Dhondt's manual "Contact"; Tribol's mortar method): the cell
+// and each facet are projected onto the plane of the point's partner facet, the cell's polygon is
+// clipped against each facet's (Sutherland & Hodgman 1974, "Reentrant polygon clipping", CACM
+// 17:32), and on every overlap polygon the shape functions of both facets are integrated exactly
+// for parallelogram facets (a rule exact for quadratics on each triangle of the polygon, the
+// reference coordinates being affine in the plane there). The facets of one surface do not
+// overlap, so the polygons add up to the part of the cell that lies over the other surface:
+//   area       = |cell ∩ other surface|,
+//   own[a]     = int over it of N_a (the point's own facet),
+//   target[k]b = int over cell ∩ facet k of N_b (facet k of the other surface).
+// A uniform pressure p then loads every node of both surfaces with p times its consistent share
+// of the true contact area, whatever the two meshes: the contact patch test (Taylor &
+// Papadopoulos 1991; Crisfield 2000) holds to round-off. Areas are measured in the projection
+// plane and scaled by the cell's own area over its projected area (a cell tilted against its
+// partner keeps its own area when fully covered).
+#include <array>
+#include <cstdint>
+#include <span>
+
+#include "abut/contact/quad.hpp"
+
+namespace abut {
+
+// Facets of the other surface one cell may be integrated against: more are folded into the
+// partner facet's slot (extrapolated shape functions: the force and its moment stay, only the
+// split between the nodes of the two facets is lost).
+inline constexpr int kMaxOverlaps = 8;
+
+// A cell of a facet in its reference square: [xi0, xi1] x [eta0, eta1].
+struct CellBounds {
+  double xi0 = -1.0, xi1 = 1.0, eta0 = -1.0, eta1 = 1.0;
+};
+
+struct CellOverlap {
+  double area = 0.0;            // covered area of the cell
+  std::array<double, 4> own{};  // int of the own facet's N_a over the covered part
+  int count = 0;                // facets of the other surface overlapped (at most kMaxOverlaps)
+  std::array<std::int32_t, kMaxOverlaps> facet{};
+  std::array<std::array<double, 4>, kMaxOverlaps> target{};  // int of facet k's N_b over its part
+};
+
+// The cell `cell` of facet `own`, projected along `normal` (unit) onto a plane, against the
+// facets `ids` of the other surface with corners `corners` (same order; the first is the
+// point's partner, into whose slot overflowing facets fold). Facets whose projection is
+// degenerate are passed over.
+CellOverlap overlap_cell(const QuadCorners& own, const CellBounds& cell, const Vec3& normal,
+                         std::span<const std::int32_t> ids, std::span<const QuadCorners> corners);
+
+// The area of a convex polygon clipped against a convex one (both counter-clockwise), for tests.
+double clipped_area(std::span<const std::array<double, 2>> subject,
+                    std::span<const std::array<double, 2>> clip);
+
+}  // namespace abut

@@ -1,0 +1,154 @@
+// S2S contact on non-matching meshes (issue 27, item 3): a rigid block on a rigid plane whose mesh
+// lines do not line up with the block's edges (the plane 13 x 7 elements, the block turned about
+// z and moved by random fractions of a plane element, fixed seed).
+//
+// Sources: mortar integration over the overlap of the two meshes transmits a uniform pressure
+// exactly (Puso & Laursen 2004, CMAME 193:601; the contact patch test of Taylor & Papadopoulos
+// 1991 and Crisfield 2000, IJNME 48:435), so every global response that only needs the true
+// contact area A is exact:
+//  - normal stiffness: a block of weight F = M g resting on the plane sinks d = F / (pfac A)
+//    (the linear penalty law, seed 000: pressure = pfac d);
+//  - Tresca friction (Metafor TrescaContactMaterial, seed 002): the slip limit tau A stops a block
+//    sliding at v0 after v0^2 M / (2 tau A), as in tests/verification/test_friction_laws.cpp.
+// Before the cell-wise integration the plane's points, which straddle the block's border, saw
+// 79-110% of the footprint (symmetric contact: d and the distance off by 5-10%).
+// Model: the block and plane of test_friction_laws.cpp (steel block 0.1 x 0.1 x 0.02 m, 2 x 2 x 1
+// elements, M = 1.56 kg, A = 0.01 m^2, pfac = 6.2e9 Pa/m), the block's rotations held.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "run_to.hpp"
+
+namespace abut {
+namespace {
+
+constexpr double kG = 9.81, kMass = 7800.0 * 0.1 * 0.1 * 0.02, kArea = 0.01, kPfac = 6.2e9;
+
+std::string num(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+// The block (part 1) on the plane (part 2), gravity -g z, initial speed v0 along x; `contact3`
+// and `contact4`: the *CONTACT lines 3 and 4 (damping, one_way), `friction`: *CONTACT_FRICTION.
+std::string deck(double end_time, double g, double v0, bool one_way, const std::string& friction) {
+  return R"(
+*UNIT_SYSTEM
+SI
+*TIME
+)" + num(end_time) +
+         R"(
+*COMPONENT_BOX
+1, 1, 2, 2, 1
+0.0, -0.05, 0.0, 0.1, 0.05, 0.02
+*COMPONENT_BOX
+2, 2, 13, 7, 1
+-0.05, -0.1, -0.02, 0.45, 0.1, 0.0
+*MAT_RIGID
+1, 7800.0
+*MAT_RIGID
+2, 7800.0
+*PART
+"block"
+1, 1
+"plane"
+2, 2
+*INITIAL_VELOCITY
+P, 1, )" +
+         num(v0) +
+         R"(, 0.0, 0.0
+*BC_MOTION
+P, 2, XYZ, XYZ
+*BC_MOTION
+P, 1, 0, XYZ
+*CURVE
+1
+0.0, )" + num(-g) +
+         "\n1.0, " + num(-g) + R"(
+*LOAD_GRAVITY
+Z, 1
+*CONTACT
+"block on plane"
+1
+P, 1, P, 2, , )" +
+         num(kPfac) + "\n0, 0.1\n, , , , " + (one_way ? "1" : "0") + "\n" +
+         (friction.empty() ? "" : "*CONTACT_FRICTION\n" + friction + "\n") + "*END\n";
+}
+
+// The block turned by `angle` about its centre's vertical and moved by (dx, dy).
+Model placed(const std::string& text, double angle, double dx, double dy) {
+  Model m = read_deck_string(text, "nonmatching.k");
+  std::vector<std::uint8_t> block(m.mesh.nodes.size(), 0);
+  for (std::size_t h = 0; h < m.mesh.hex_count(); ++h)
+    if (m.mesh.hex_part[h] == 1)
+      for (const std::int32_t a : m.mesh.hexes[h]) block[a] = 1;
+  const double c = std::cos(angle), s = std::sin(angle);
+  for (std::size_t i = 0; i < block.size(); ++i) {
+    if (!block[i]) continue;
+    const double x = m.mesh.nodes.x[i] - 0.05, y = m.mesh.nodes.y[i];
+    m.mesh.nodes.x[i] = 0.05 + c * x - s * y + dx;
+    m.mesh.nodes.y[i] = s * x + c * y + dy;
+  }
+  return m;
+}
+
+struct Placement {
+  double angle, dx, dy;
+};
+Placement random_placement(std::mt19937& random) {
+  std::uniform_real_distribution<double> fraction(0.0, 1.0);
+  // Up to 17 degrees, up to one plane element (0.5/13 by 0.2/7 m).
+  return {0.6 * (fraction(random) - 0.5), fraction(random) * 0.5 / 13, fraction(random) * 0.2 / 7};
+}
+
+TEST(NonMatchingContact, RestingBlockSinksWeightOverPenaltyTimesTrueArea) {
+  std::mt19937 random(2704);
+  const double expected = kMass * kG / (kPfac * kArea);
+  for (const bool one_way : {false, true})
+    for (int trial = 0; trial < 2; ++trial) {
+      const Placement at = random_placement(random);
+      const Model model = placed(deck(0.04, kG, 0.0, one_way, ""), at.angle, at.dx, at.dy);
+      Simulation sim(model);
+      const double z0 = sim.part_states()[0].centre_of_mass.z;
+      verification::run_to(sim, sim.end_time());
+      const double sink = z0 - sim.part_states()[0].centre_of_mass.z;
+      std::cout << (one_way ? "one-way" : "symmetric") << ", turned " << at.angle << " rad, moved "
+                << at.dx << ", " << at.dy << ": sinks " << sink << " m, F / (pfac A) = " << expected
+                << " m, error " << 100.0 * (sink - expected) / expected << "%, " << sim.cycle()
+                << " cycles\n";
+      EXPECT_NEAR(sink, expected, 0.01 * expected);
+    }
+}
+
+// Tresca: m_s = 1, m_d = 0.8, k = 1000 Pa: tau A = 8 N stops the block from 1 m/s after 0.0975 m.
+TEST(NonMatchingContact, TrescaStoppingDistanceIsExactOnAnyMeshAlignment) {
+  std::mt19937 random(2705);
+  const double v0 = 1.0, tau = 0.8 * 1000.0;
+  const double expected = v0 * v0 * kMass / (2.0 * tau * kArea);
+  for (const bool one_way : {false, true}) {
+    const Placement at = random_placement(random);
+    const Model model =
+        placed(deck(0.25, kG, v0, one_way, "1, TRESCA, 1.0, 0.8\n1000.0"), at.angle, at.dx, at.dy);
+    Simulation sim(model);  // the simulation refers to the model
+    const double x0 = sim.part_states()[0].centre_of_mass.x;
+    verification::run_to(sim, sim.end_time());
+    const PartState block = sim.part_states()[0];
+    const double distance = block.centre_of_mass.x - x0;
+    std::cout << (one_way ? "one-way" : "symmetric") << ", turned " << at.angle << " rad: slides "
+              << distance << " m, v0^2 M / (2 tau A) = " << expected << " m, error "
+              << 100.0 * (distance - expected) / expected << "%, final speed " << block.velocity.x
+              << " m/s, " << sim.cycle() << " cycles\n";
+    EXPECT_NEAR(distance, expected, 0.01 * expected);
+    EXPECT_LT(std::abs(block.velocity.x), 1e-3 * v0);
+  }
+}
+
+}  // namespace
+}  // namespace abut
