@@ -9,15 +9,21 @@
 
 namespace abut {
 
-// The facets a cell may cover: the partner and the facets around its corners that continue it
-// smoothly (normals within alpha_edge of the partner's: beyond a sharp or free edge the other
-// surface ends, and a cell over that border is covered in part). A cell is at most about the size
-// of the other side's facets (build_points), so it does not reach past them.
-CellOverlap ContactInterface::cover(const Side& own, std::size_t p, const Side& target,
+// A facet turned further than about 84 degrees from a cell's normal is a wall to it, not cover.
+constexpr double kEdgeOnCos = 0.1;
+
+// The facets a cell may cover: the broad-phase candidates of its point that face it (the partner
+// first). The cell and the facets are projected along the cell's own normal, so a facet turned
+// towards edge-on covers a vanishing area and none enters or leaves the cover with a jump: the
+// other surface, seen from the cell, is a height field over the cell's plane. Its borders (free
+// edges, the far side of a sharp edge) are where its facets end.
+CellOverlap ContactInterface::cover(const Pass& pass, std::size_t p, const PointFrame& f,
                                     const Partner& h, const ContactInput& in) const {
-  constexpr std::size_t kMaxRing = 32;
-  std::array<std::int32_t, kMaxRing> ids{};
-  std::array<QuadCorners, kMaxRing> corners{};
+  const Side& own = sides_[pass.own];
+  const Side& target = sides_[pass.target];
+  constexpr std::size_t kMaxFacets = 64;
+  std::array<std::int32_t, kMaxFacets> ids{};
+  std::array<QuadCorners, kMaxFacets> corners{};
   std::size_t count = 0;
   const auto& own_nodes = own.surface.facets[own.point_facet[p]];
   // As the narrow phase: never the own facet or one sharing a node with it (self contact).
@@ -26,27 +32,26 @@ CellOverlap ContactInterface::cover(const Side& own, std::size_t p, const Side& 
       if (std::find(own_nodes.begin(), own_nodes.end(), i) != own_nodes.end()) return true;
     return false;
   };
-  const QuadCorners partner = quad_corners(target.surface.facets[h.facet], in.x, in.y, in.z);
-  const Vec3 partner_normal = quad_centre_normal(partner);
-  const double cos_limit = sharp_cos_;
-  ids[count] = h.facet;
-  corners[count++] = partner;
-  for (const std::int32_t node : target.surface.facets[h.facet])
-    for (std::int32_t k = target.node_facet_start[node];
-         k < target.node_facet_start[node + 1] && count < kMaxRing; ++k) {
-      const std::int32_t g = target.node_facets[k];
-      if (!target.active[g] || touches_own(target.surface.facets[g]) ||
-          std::find(ids.begin(), ids.begin() + count, g) !=
-              ids.begin() + static_cast<std::ptrdiff_t>(count))
-        continue;
-      const QuadCorners c = quad_corners(target.surface.facets[g], in.x, in.y, in.z);
-      const double along = dot(quad_centre_normal(c), partner_normal);
-      if (along < cos_limit) continue;  // beyond a sharp edge: the other surface ends there
-      ids[count] = g;
-      corners[count++] = c;
-    }
-  const QuadCorners c_own = quad_corners(own.surface.facets[own.point_facet[p]], in.x, in.y, in.z);
-  return overlap_cell(c_own, own.cell(p), h.normal, {ids.data(), count}, {corners.data(), count});
+  const Vec3 n = f.normal * -1.0;  // from the other surface towards the cell
+  auto add = [&](std::int32_t g) {
+    if (count == kMaxFacets || !target.active[g] || target.surface.twin[g] >= 0 ||
+        touches_own(target.surface.facets[g]))
+      return;
+    const QuadCorners c = quad_corners(target.surface.facets[g], in.x, in.y, in.z);
+    // Facing away (the far side), or edge-on: a wall whose projection is a line and whose
+    // slope has no bound (the side of a block standing on the cell's plate).
+    if (!(dot(quad_centre_normal(c), n) >= kEdgeOnCos)) return;
+    ids[count] = g;
+    corners[count++] = c;
+  };
+  if (h.facet >= 0) add(h.facet);
+  const auto first = pass.candidates.offsets[p], last = pass.candidates.offsets[p + 1];
+  for (auto k = first; k < last; ++k)
+    if (pass.candidates.facets[k] != h.facet) add(pass.candidates.facets[k]);
+  const QuadCorners c_own = quad_corners(own_nodes, in.x, in.y, in.z);
+  CellOverlap o = overlap_cell(c_own, own.cell(p), n, {ids.data(), count}, {corners.data(), count});
+  o.normal = n;
+  return o;
 }
 
 double ContactInterface::cell_gap(const Side& own, std::size_t p, const Side& target,
@@ -62,7 +67,7 @@ double ContactInterface::cell_gap(const Side& own, std::size_t p, const Side& ta
     for (int b = 0; b < 4; ++b)
       centroid -= Vec3{in.x[other[b]], in.y[other[b]], in.z[other[b]]} * (o.target[k][b] * inv);
   }
-  return dot(centroid, h.normal) - h.pair_gap;
+  return dot(centroid, o.normal) - h.pair_gap;
 }
 
 // Shells keep the point-wise rule for now: their contact surfaces lie a gap off the facets and
@@ -78,7 +83,7 @@ bool ContactInterface::meet_by_cell(const Pass& pass, std::size_t p, const Point
     return -dot(f.normal, g.normal) >= sharp_cos_ && target.surface.twin[g.facet] < 0;
   };
   if (h.facet >= 0 && faces(h)) {
-    o = cover(own, p, target, h, in);
+    o = cover(pass, p, f, h, in);
     if (o.area > 0.0) h.gap = cell_gap(own, p, target, h, o, in);
     return true;
   }
@@ -93,7 +98,7 @@ bool ContactInterface::meet_by_cell(const Pass& pass, std::size_t p, const Point
   Partner facing = find_partner(facets, {pass.candidates.facets.data() + first, last - first},
                                 f.nodes, f.x, f.normal, rules);
   if (facing.facet < 0 || !faces(facing)) return false;
-  const CellOverlap covered = cover(own, p, target, facing, in);
+  const CellOverlap covered = cover(pass, p, f, facing, in);
   if (!(covered.area > 0.0)) return false;
   o = covered;
   h = facing;

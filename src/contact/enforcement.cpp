@@ -408,7 +408,9 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   }
   // Along the facet's normal, or radially around a shell's rounded edge.
   const Spring r = partner_spring(h.facet, h.xi, h.eta, h.normal);
-  const Vec3 normal = from_behind ? r.normal * -1.0 : r.normal;  // the push on the point
+  // The push on the point: a cell's along its own normal (the direction of its cover).
+  const Vec3 along = facing_cell ? o.normal : r.normal;
+  const Vec3 normal = from_behind ? along * -1.0 : along;
   NormalResponse response;
   if (adhesive) {
     const double slope = s.adhesion->max_stress / s.adhesion->zone();
@@ -458,7 +460,11 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   pass.hty[p] = spring.y;
   pass.htz[p] = spring.z;
   pass.slip[p] = slip;
-  record(h.facet, h.xi, h.eta, r, std::max(k_n, k_t), normal * fn + ft);
+  // A cell's elastic push follows the slope of the facets it covers (mortar.hpp), so that its
+  // force derives from its energy; damping stays along the normal (it only dissipates).
+  Vec3 push = normal * fn;
+  if (facing_cell) push += ((from_behind ? o.push * -1.0 : o.push) - normal) * elastic;
+  record(h.facet, h.xi, h.eta, r, std::max(k_n, k_t), push + ft);
   pass.pair_gap[p] = h.pair_gap;
   pass.normal_force[p] = fn;
   pass.tangential_force[p] = norm(ft);

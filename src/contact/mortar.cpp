@@ -101,6 +101,15 @@ void integrate(const Polygon& poly, const std::array<P2, 4>& first, const std::a
   }
 }
 
+// A facet's outward normal m scaled to unit component along n (mortar.hpp: the cell's push); its
+// projected area times it is its area vector, which vanishes with the projection as the facet
+// turns edge-on. A facet facing away adds nothing.
+Vec3 slope_normal(const QuadCorners& facet, const Vec3& n) {
+  const Vec3 m = quad_centre_normal(facet);
+  const double along = dot(m, n);
+  return along > 0.0 ? m * (1.0 / along) : Vec3{};
+}
+
 }  // namespace
 
 double clipped_area(std::span<const std::array<double, 2>> subject,
@@ -144,6 +153,7 @@ CellOverlap overlap_cell(const QuadCorners& own, const CellBounds& cell, const V
       hi[k] = std::max(hi[k], subject.v[i][k]);
     }
   std::array<std::size_t, kMaxOverlaps> slot_of{};  // which of `ids` each slot holds
+  Vec3 push;                                        // sum of A_k m_k / (m_k . n)
   for (std::size_t k = 0; k < ids.size(); ++k) {
     std::array<P2, 4> facet_plane;
     Polygon clip;
@@ -177,8 +187,10 @@ CellOverlap overlap_cell(const QuadCorners& own, const CellBounds& cell, const V
       ++r.count;
     }
     r.area += a * scale;
+    push += slope_normal(corners[k], normal) * (a * scale);
     integrate(overlap, own_plane, facet_plane, r.own, r.target[slot], scale);
   }
+  r.push = r.area > 0.0 ? push * (1.0 / r.area) : normal;
   return r;
 }
 

@@ -325,9 +325,10 @@ class ContactInterface {
   TargetFacets target_facets(const Side& target, std::span<const double> depth,
                              const ContactInput& in, bool banded = false) const;
   PartnerRules partner_rules(const Side& own, std::size_t p) const;
-  // S2S (cell_cover.cpp): the part of point p's cell over the other surface around its partner
-  // h, and the mean gap over it (the mortar gap) less the pair's gap.
-  CellOverlap cover(const Side& own, std::size_t p, const Side& target, const Partner& h,
+  // S2S (cell_cover.cpp): the part of point p's cell over the facets of the other surface that
+  // face it (its partner h and its candidates), and the mean gap over it (the mortar gap) less
+  // the pair's gap.
+  CellOverlap cover(const Pass& pass, std::size_t p, const PointFrame& f, const Partner& h,
                     const ContactInput& in) const;
   double cell_gap(const Side& own, std::size_t p, const Side& target, const Partner& h,
                   const CellOverlap& o, const ContactInput& in) const;
