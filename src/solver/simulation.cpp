@@ -173,8 +173,9 @@ void Simulation::Impl::kick() {
                     "(limited by {}); set dt_min of *TIME to choose this limit yourself",
                     scaled, kStepCollapse, dt_initial, limit_description()));
   // At the end time (dt^{n+1/2} = 0) the kick still uses a notional step dt^{n-1/2}: nothing
-  // moves with it, but v^n and the kinetic energy at t^n are then defined as at every other t^n.
-  const double dt_kick = dt_next > 0.0 ? dt_next : dt_prev;
+  // moves with it, but v^n and the kinetic energy at t^n are then defined as at every other t^n,
+  // with the boundary motions prescribed over it (kick_step()).
+  const double dt_kick = kick_step();
   const double dt_avg = n == 0 ? 0.5 * dt_kick : 0.5 * (dt_prev + dt_kick);
 
   // v^{n-1/2} moves to ox, oy, oz by swapping the arrays (no copy), and the kick writes
@@ -321,17 +322,16 @@ void Simulation::Impl::apply_nodal_boundaries(double dt_avg) {
       vars.term = model.time.end_time;
       switch (p.kind) {
         case PrescribedMotion::Kind::Velocity: {
-          vars.t = t + 0.5 * dt_next;
+          vars.t = t + 0.5 * kick_step();
           const double value = p.scale * model.functions.value(p.curve, vars);
           for (const std::int32_t i : nm.nodes) v[d][i] = value;
           break;
         }
         case PrescribedMotion::Kind::Displacement: {
-          if (dt_next <= 0.0) break;  // end time reached: no further motion
-          vars.t = t + dt_next;
+          vars.t = t + kick_step();
           const double target = p.scale * model.functions.value(p.curve, vars);
           for (const std::int32_t i : nm.nodes)
-            v[d][i] = (target - (pos[d][i] - ref[d][i])) / dt_next;
+            v[d][i] = (target - (pos[d][i] - ref[d][i])) / kick_step();
           break;
         }
         case PrescribedMotion::Kind::Acceleration: {
@@ -353,7 +353,7 @@ void Simulation::Impl::apply_nodal_rotation(const PrescribedMotion& p,
   vars.term = model.time.end_time;
   switch (p.kind) {
     case PrescribedMotion::Kind::Velocity: {
-      vars.t = t + 0.5 * dt_next;
+      vars.t = t + 0.5 * kick_step();
       const double value = p.scale * model.functions.value(p.curve, vars);
       for (const std::int32_t i : nodes) w[i] = value;
       break;
@@ -389,7 +389,7 @@ void Simulation::Impl::apply_rigid_boundaries(double dt_avg) {
       vars.term = model.time.end_time;
       switch (p.kind) {
         case PrescribedMotion::Kind::Velocity:
-          vars.t = t + 0.5 * dt_next;
+          vars.t = t + 0.5 * kick_step();
           target = p.scale * model.functions.value(p.curve, vars);
           break;
         case PrescribedMotion::Kind::Displacement: {
@@ -397,10 +397,9 @@ void Simulation::Impl::apply_rigid_boundaries(double dt_avg) {
             throw InputError(p.where,
                              "prescribed rotation angles (D with RX/RY/RZ) are not supported yet; "
                              "prescribe the angular velocity (V) instead");
-          if (dt_next <= 0.0) break;
-          vars.t = t + dt_next;
+          vars.t = t + kick_step();
           const double displacement = p.scale * model.functions.value(p.curve, vars);
-          target = (body.centre0[d] + displacement - body.centre[d]) / dt_next;
+          target = (body.centre0[d] + displacement - body.centre[d]) / kick_step();
           break;
         }
         case PrescribedMotion::Kind::Acceleration:

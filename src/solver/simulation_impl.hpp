@@ -79,6 +79,9 @@ struct Simulation::Impl {
   std::int64_t n = 0;
   double dt_prev = 0.0;  // dt^{n-1/2}
   double dt_next = 0.0;  // dt^{n+1/2}
+  // The step the kick at t^n prepares: dt^{n+1/2}, or at the end time, where that is 0, a
+  // notional dt^{n-1/2} (the boundary motions are prescribed over it as over any other step).
+  double kick_step() const { return dt_next > 0.0 ? dt_next : dt_prev; }
   double stable = 0.0;   // unscaled stable step at x^n
   double dt_initial = 0.0;
   std::int32_t limiting_block = -1;        // index into blocks, or
