@@ -28,4 +28,8 @@ void RigidBody::initialise(const std::vector<double>& x, const std::vector<doubl
 
 Mat3 RigidBody::spatial_inertia() const { return rotation * inertia0 * transpose(rotation); }
 
+double RigidBody::kinetic_energy(const Vec3& v, const Vec3& omega) const {
+  return 0.5 * mass * dot(v, v) + 0.5 * dot(omega, spatial_inertia() * omega);
+}
+
 }  // namespace abut

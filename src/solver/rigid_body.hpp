@@ -22,12 +22,17 @@ struct RigidBody {
   Vec3 centre;             // current centre of mass
   Vec3 velocity;           // of the centre of mass, at the half step
   Vec3 angular_velocity;   // spatial, at the half step
+  // v^{n-1/2} and omega^{n-1/2} during the kick at t^n (velocity and angular_velocity are then
+  // v^{n+1/2} and omega^{n+1/2}); set by each kick, not part of the state.
+  Vec3 previous_velocity, previous_angular_velocity;
   Mat3 rotation = Mat3::identity();
 
   // Builds the body from its nodes' reference positions and lumped masses.
   void initialise(const std::vector<double>& x, const std::vector<double>& y,
                   const std::vector<double>& z, const std::vector<double>& nodal_mass);
   Mat3 spatial_inertia() const;
+  // (1/2) M v.v + (1/2) omega.(R I0 R^T) omega.
+  double kinetic_energy(const Vec3& v, const Vec3& omega) const;
   // The motion (the rest is fixed by the reference configuration), for a restart.
   void archive(StateArchive& a) { a.values(centre, velocity, angular_velocity, rotation); }
 };

@@ -225,7 +225,7 @@ void Simulation::Impl::setup() {
                                  "be > 0; check the densities, moduli and contact stiffness",
                                  dt_initial, limit_description()));
   kick();
-  total0 = energy.total();
+  total0 = conserved_total();
   energy_scale = std::max(energy_scale, std::abs(total0));
 }
 
