@@ -218,9 +218,9 @@ void Simulation::Impl::kick() {
       moment += cross(Vec3{x[node], y[node], z[node]} - body.centre, f);
       if (rotations()) moment += Vec3{mx[node], my[node], mz[node]};
     }
-    const Mat3 inertia = body.spatial_inertia();
     body.velocity += (dt_avg / body.mass) * force;
-    body.angular_velocity = inverse(inertia) * (inertia * body.angular_velocity + dt_avg * moment);
+    body.angular_velocity =
+        body.angular_velocity_of(body.angular_momentum(body.angular_velocity) + dt_avg * moment);
   }
   apply_rigid_boundaries(dt_avg);
   for (const RigidBody& body : bodies) {
