@@ -539,6 +539,10 @@ void Simulation::Impl::gather_contact_heat(double dt) {
 void Simulation::advance() {
   impl_->drift();
   impl_->kick();
+  // The nodes' check (drift) does not see an energy that overflows or turns NaN on its own.
+  if (const std::string fault = impl_->energy_fault(); !fault.empty())
+    throw InstabilityError(fault + " at cycle " + std::to_string(impl_->n) +
+                           ", t = " + std::to_string(impl_->t));
 }
 
 bool Simulation::finished() const {

@@ -136,6 +136,11 @@ struct Simulation::Impl {
                             double* w, const double* w_old, double dt_avg);
   void build_force_slots();
   void advance_heat();
+  // What is wrong with the energies at t^n, or empty: a non-finite energy, work or balance, a
+  // negative kinetic energy (simulation_energy_checks.cpp).
+  std::string energy_fault() const;
+  // InputError when the energies at t^0 are wrong: at the *PART whose kinetic energy overflows.
+  void check_initial_energies() const;
   void gather_contact_heat(double dt);
   void couple_heat();
   void gather_plastic_heat();

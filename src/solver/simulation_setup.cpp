@@ -234,6 +234,7 @@ void Simulation::Impl::setup() {
                                  "be > 0; check the densities, moduli and contact stiffness",
                                  dt_initial, limit_description()));
   kick();
+  check_initial_energies();
   total0 = conserved_total();
   energy_scale = std::max(energy_scale, std::abs(total0));
 }
