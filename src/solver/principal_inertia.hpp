@@ -25,6 +25,7 @@ inline constexpr double kInertiaFloor = 1e-12;
 // Point masses `masses` at `arms` from their centre of mass (sum of m r = 0). The tensor
 // sum m (r.r I - r (x) r) is summed with its diagonal as m (y^2 + z^2), ..., so that no entry is a
 // difference of large terms, then diagonalised (Jacobi).
-PrincipalInertia principal_inertia(const std::vector<Vec3>& arms, const std::vector<double>& masses);
+PrincipalInertia principal_inertia(const std::vector<Vec3>& arms,
+                                   const std::vector<double>& masses);
 
 }  // namespace abut

@@ -49,8 +49,9 @@ void Simulation::Impl::check_initial_energies() const {
                                  p.part_id, kinetic, p.mass, speed));
   }
   if (const std::string fault = energy_fault(); !fault.empty())
-    throw InputError(fault + " at the start; check the densities, *INITIAL_VELOCITY and the "
-                             "contact stiffness");
+    throw InputError(fault +
+                     " at the start; check the densities, *INITIAL_VELOCITY and the "
+                     "contact stiffness");
 }
 
 }  // namespace abut

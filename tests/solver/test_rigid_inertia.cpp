@@ -7,9 +7,8 @@
 // - a spin omega about a principal axis of a free body stays constant (Euler's equations;
 //   Goldstein, Classical Mechanics, ch. 5), with kinetic energy (1/2) I omega^2;
 // - a prescribed translation v without rotation has kinetic energy (1/2) M v^2.
-#include <gtest/gtest.h>
-
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <iostream>
@@ -22,8 +21,8 @@ namespace abut {
 namespace {
 
 bool finite(const Energies& e) {
-  return std::isfinite(e.kinetic) && std::isfinite(e.internal) &&
-         std::isfinite(e.external_work) && std::isfinite(e.total());
+  return std::isfinite(e.kinetic) && std::isfinite(e.internal) && std::isfinite(e.external_work) &&
+         std::isfinite(e.total());
 }
 
 // A rigid hexahedron of cross-section 0.1 x 0.1 m and length `length` along the unit vector
@@ -34,10 +33,12 @@ std::string slender_rod(double length, double phi, const std::string& extra) {
   int id = 1;
   for (const double w : {0.0, 0.1})  // z
     for (const auto& [u, v] : {std::pair{0.0, 0.0}, {length, 0.0}, {length, 0.1}, {0.0, 0.1}})
-      nodes += fmt::format("{}, {:.17g}, {:.17g}, {:.17g}\n", id++, u * c - v * s, u * s + v * c, w);
+      nodes +=
+          fmt::format("{}, {:.17g}, {:.17g}, {:.17g}\n", id++, u * c - v * s, u * s + v * c, w);
   return "*UNIT_SYSTEM\nSI\n*TIME\n1.0e-3, 0.9, 0, 2.5e-4\n*NODE\n" + nodes +
          "*ELEMENT_SOLID\n1, 1, 1, 2, 3, 4, 5, 6, 7, 8\n*MAT_RIGID\n1, 7800.0\n*PART\n\"rod\"\n"
-         "1, 1\n" + extra + "*END\n";
+         "1, 1\n" +
+         extra + "*END\n";
 }
 
 const char* kHeldAtOneMetrePerSecond = R"(*CURVE
@@ -70,8 +71,8 @@ TEST(RigidInertia, SlenderRodsMovedByBcMotionKeepFiniteExactEnergies) {
       EXPECT_NEAR(sim.part_states()[0].velocity.x, 1.0, 1e-12);
     }
     std::cout << "rod at phi = " << phi << ": kinetic energy " << sim.energies().kinetic
-              << " J ((1/2) M v^2 = " << 0.5 * mass << " J), vx "
-              << sim.part_states()[0].velocity.x << " m/s\n";
+              << " J ((1/2) M v^2 = " << 0.5 * mass << " J), vx " << sim.part_states()[0].velocity.x
+              << " m/s\n";
   }
 }
 
@@ -94,8 +95,8 @@ TEST(RigidInertia, SlenderRodsAtRestStayAtRest) {
 // (the form m (r.r - x^2) loses it to about 1e-6).
 TEST(RigidInertia, SpinAboutTheLongAxisOfASlenderRodKeepsItsEnergy) {
   const double length = 3.0e4, omega = 10.0;
-  const std::string spin = fmt::format("*INITIAL_VELOCITY\nP, 1, 0, 0, 0, {}, 0, 0\n{}, 0.05, 0.05\n",
-                                       omega, 0.5 * length);
+  const std::string spin = fmt::format(
+      "*INITIAL_VELOCITY\nP, 1, 0, 0, 0, {}, 0, 0\n{}, 0.05, 0.05\n", omega, 0.5 * length);
   const Model model = read_deck_string(slender_rod(length, 0.0, spin), "spinning_rod.k");
   Simulation sim(model);
   const double mass = 7800.0 * 0.1 * 0.1 * length;

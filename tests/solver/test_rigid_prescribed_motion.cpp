@@ -17,7 +17,7 @@
 namespace abut {
 namespace {
 
-constexpr double kA = 25.0;  // m/s^2
+constexpr double kA = 25.0;    // m/s^2
 constexpr double kMass = 1.0;  // 1000 kg/m^3 times (0.1 m)^3
 
 const char* kDeck = R"(

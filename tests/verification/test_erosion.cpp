@@ -114,8 +114,9 @@ PullRun pull(const std::string& deck) {
 // does not jump. (The total of the energy columns does, by the kinetic energy at t^n of the
 // released head nodes: their velocity there is the mean of the velocities before and after, and
 // they gain some 140 m/s in the step; the balance keeps the energy the scheme conserves, with the
-// kinetic energy (1/2) m v^{n-1/2} . v^{n+1/2}, issue 28.) (After the erosion the stretched bar snaps back freely; the energy balance of such a
-// sudden release is a solver matter of its own, see the verification page.)
+// kinetic energy (1/2) m v^{n-1/2} . v^{n+1/2}, issue 28.) (After the erosion the stretched bar
+// snaps back freely; the energy balance of such a sudden release is a solver matter of its own, see
+// the verification page.)
 TEST(Erosion, WeakLinkErodesAtItsStrainAndItsEnergyIsAccounted) {
   const PullRun r = pull(kDeck);
   const double expected = kL0 * (std::exp(1.5 * kLimit) - 1.0) / kV;
