@@ -15,7 +15,8 @@ namespace abut::restart_file {
 namespace {
 
 constexpr char kMagic[8] = {'A', 'B', 'U', 'T', 'R', 'S', 'T', '\n'};
-constexpr std::uint32_t kVersion = 1;
+// 2: the simulation's state holds the conserved kinetic energy of the balance (issue 28).
+constexpr std::uint32_t kVersion = 2;
 
 // FNV-1a, 64 bits (Fowler, Noll, Vo): a checksum, not a cryptographic hash.
 class Fnv {

@@ -79,14 +79,31 @@ struct Simulation::Impl {
   std::int64_t n = 0;
   double dt_prev = 0.0;  // dt^{n-1/2}
   double dt_next = 0.0;  // dt^{n+1/2}
+  // The step the kick at t^n prepares: dt^{n+1/2}, or at the end time, where that is 0, a
+  // notional dt^{n-1/2} (the boundary motions are prescribed over it as over any other step).
+  double kick_step() const { return dt_next > 0.0 ? dt_next : dt_prev; }
   double stable = 0.0;   // unscaled stable step at x^n
   double dt_initial = 0.0;
   std::int32_t limiting_block = -1;        // index into blocks, or
   std::int32_t limiting_shell_block = -1;  // index into shell_blocks
 
   Energies energy;
-  double total0 = 0.0;
-  // The largest of |total|, |total_0| and |external work| so far: the balance error's scale.
+  // The kinetic energy that central differences conserve, (1/2) m v^{n-1/2} . v^{n+1/2} summed
+  // over the nodes ((1/2) m |v^0|^2 at t^0): with the strain energy of a linear system at a
+  // constant step it is conserved exactly (H_n = x_n K x_n / 2 + v^{n-1/2} M v^{n+1/2} / 2, derived
+  // by summing the update), so the energy balance is kept with it and shows no O(dt^2)
+  // oscillation. energy.kinetic, (1/2) m |v^n|^2, differs from it by O(dt^2) and is never
+  // negative, which this product is where a velocity turns within a step.
+  double conserved_kinetic = 0.0;
+  // energy.total() with the conserved kinetic energy: what the energy balance compares.
+  double conserved_total() const {
+    Energies e = energy;
+    e.kinetic = conserved_kinetic;
+    return e.total();
+  }
+  double total0 = 0.0;  // conserved_total() at t^0
+  // The largest of |conserved total|, |total_0| and |external work| so far: the balance error's
+  // scale.
   double energy_scale = 0.0;
   double external_work_done = 0.0;  // up to t^{n+1/2}
 
@@ -119,6 +136,11 @@ struct Simulation::Impl {
                             double* w, const double* w_old, double dt_avg);
   void build_force_slots();
   void advance_heat();
+  // What is wrong with the energies at t^n, or empty: a non-finite energy, work or balance, a
+  // negative kinetic energy (simulation_energy_checks.cpp).
+  std::string energy_fault() const;
+  // InputError when the energies at t^0 are wrong: at the *PART whose kinetic energy overflows.
+  void check_initial_energies() const;
   void gather_contact_heat(double dt);
   void couple_heat();
   void gather_plastic_heat();

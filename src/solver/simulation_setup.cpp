@@ -143,7 +143,16 @@ void Simulation::Impl::setup() {
   }
   // A node shared by a rigid and a deformable part moves with the rigid body; the mass the
   // deformable elements lump on it belongs to the body, and their forces act on it.
-  for (RigidBody& body : bodies) body.initialise(x0, y0, z0, mass);
+  for (RigidBody& body : bodies) {
+    body.initialise(x0, y0, z0, mass);
+    const Vec3& moments = body.principal_moments;
+    if (!std::isfinite(moments.x + moments.y + moments.z) ||
+        !(std::min({moments.x, moments.y, moments.z}) > 0.0))
+      throw InputError(model.find_part(body.part_id)->where,
+                       fmt::format("rigid part {} has principal moments of inertia {:.4g}, {:.4g}, "
+                                   "{:.4g}; expected finite and positive: check its coordinates",
+                                   body.part_id, moments.x, moments.y, moments.z));
+  }
 
   inverse_mass.assign(n_nodes, 0.0);
   for (std::size_t i = 0; i < n_nodes; ++i)
@@ -174,7 +183,7 @@ void Simulation::Impl::setup() {
       angular_momentum += cross(body.arm0[k], p);
     }
     body.velocity = momentum / body.mass;
-    body.angular_velocity = inverse(body.inertia0) * angular_momentum;
+    body.angular_velocity = body.angular_velocity_of(angular_momentum);
     for (std::size_t k = 0; k < body.nodes.size(); ++k) {
       const std::int32_t node = body.nodes[k];
       const Vec3 v = body.velocity + cross(body.angular_velocity, body.arm0[k]);
@@ -225,7 +234,8 @@ void Simulation::Impl::setup() {
                                  "be > 0; check the densities, moduli and contact stiffness",
                                  dt_initial, limit_description()));
   kick();
-  total0 = energy.total();
+  check_initial_energies();
+  total0 = conserved_total();
   energy_scale = std::max(energy_scale, std::abs(total0));
 }
 

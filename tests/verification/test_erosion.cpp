@@ -79,6 +79,7 @@ V, Z, 1
 struct PullRun {
   double t_erode = -1.0, worst = 0.0, eroded_energy = 0.0;
   double total_before = 0.0, total_after = 0.0, internal_before = 0.0, internal_after = 0.0;
+  double balance_jump = 0.0;  // change of the energy balance error over the erosion step
 };
 
 PullRun pull(const std::string& deck) {
@@ -86,7 +87,7 @@ PullRun pull(const std::string& deck) {
   EXPECT_EQ(model.mesh.hex_count(), 5u);
   Simulation sim(model);
   PullRun r;
-  double previous_total = 0.0, previous_internal = 0.0;
+  double previous_total = 0.0, previous_internal = 0.0, previous_balance = 0.0;
   verification::run_to(sim, sim.end_time(), [&](const Simulation& s) {
     r.worst = std::max(r.worst, std::abs(s.energy_balance_error()));
     const auto eroded = s.eroded_hexes();
@@ -97,19 +98,25 @@ PullRun pull(const std::string& deck) {
       r.internal_before = previous_internal;
       r.total_after = s.energies().total();
       r.internal_after = s.energies().internal;
+      r.balance_jump = s.energy_balance_error() - previous_balance;
       for (std::size_t e = 0; e + 1 < eroded.size(); ++e)
         EXPECT_EQ(eroded[e], 0) << "element " << e;
     }
     previous_total = s.energies().total();
     previous_internal = s.energies().internal;
+    previous_balance = s.energy_balance_error();
   });
   return r;
 }
 
 // Elastic bar: the erosion time, and the bookkeeping at the erosion step: the internal energy
-// drops by the eroded energy (the head's fifth of the bar's strain energy) and the total does not
-// jump. (After the erosion the stretched bar snaps back freely; the energy balance of such a
-// sudden release is a solver matter of its own, see the verification page.)
+// drops by the eroded energy (the head's fifth of the bar's strain energy) and the energy balance
+// does not jump. (The total of the energy columns does, by the kinetic energy at t^n of the
+// released head nodes: their velocity there is the mean of the velocities before and after, and
+// they gain some 140 m/s in the step; the balance keeps the energy the scheme conserves, with the
+// kinetic energy (1/2) m v^{n-1/2} . v^{n+1/2}, issue 28.) (After the erosion the stretched bar
+// snaps back freely; the energy balance of such a sudden release is a solver matter of its own, see
+// the verification page.)
 TEST(Erosion, WeakLinkErodesAtItsStrainAndItsEnergyIsAccounted) {
   const PullRun r = pull(kDeck);
   const double expected = kL0 * (std::exp(1.5 * kLimit) - 1.0) / kV;
@@ -117,13 +124,14 @@ TEST(Erosion, WeakLinkErodesAtItsStrainAndItsEnergyIsAccounted) {
             << " s, error " << 100.0 * (r.t_erode - expected) / expected << "%); eroded energy "
             << r.eroded_energy << " J = " << r.eroded_energy / r.internal_before << " of the bar's "
             << r.internal_before << " J; total energy across the erosion step " << r.total_before
-            << " -> " << r.total_after << " J\n";
+            << " -> " << r.total_after << " J, change of the energy balance error "
+            << r.balance_jump << "\n";
   ASSERT_GT(r.t_erode, 0.0);
   EXPECT_NEAR(r.t_erode, expected, 0.02 * expected);
   EXPECT_NEAR(r.eroded_energy, 0.2 * r.internal_before,
               0.01 * r.internal_before);  // one of five equal elements
   EXPECT_NEAR(r.internal_after, r.internal_before - r.eroded_energy, 0.01 * r.internal_before);
-  EXPECT_NEAR(r.total_after, r.total_before, 0.002 * r.total_before);
+  EXPECT_LT(std::abs(r.balance_jump), 0.002);
 }
 
 // A metal bar (Johnson-Cook, A = 1 MPa, B = 10 MPa, n = 1: hardening keeps the flow uniform; the

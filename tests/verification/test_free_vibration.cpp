@@ -3,11 +3,18 @@
 // 1975, sec. 2.3). The explicit scheme must keep total energy constant (drift < 0.5% over ten
 // periods, the issue's bound) and reproduce the period (1%: the lumped-mass discretisation error
 // for 20 elements is about (pi/20)^2/24 = 0.1%).
+//
+// The energy the scheme conserves has the kinetic energy (1/2) v^{n-1/2} M v^{n+1/2}: the energy
+// balance measures it. The kinetic energy column, (1/2) v^n M v^n with v^n the mean of the two,
+// exceeds it by (1/8) dv M dv, dv = dt M^-1 f: in a mode of frequency omega that is (omega dt)^2/4
+// of the mode's energy at its turning points (issue 28), here 0.5% (omega = pi c / L, dt =
+// 0.9 h / c with h = L / 20, the step of a cube of side h with nu = 0).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <numbers>
 #include <vector>
 
 #include "run_to.hpp"
@@ -44,12 +51,16 @@ TEST(FreeVibration, TotalEnergyIsConservedOverTenPeriods) {
   Simulation sim(model);
   const double e0 = sim.energies().total();
   ASSERT_GT(e0, 0.0);
-  double worst = 0.0;
+  double worst = 0.0, worst_columns = 0.0;
   verification::run_to(sim, model.time.end_time, [&](const Simulation& s) {
-    worst = std::max(worst, std::abs(s.energies().total() - e0) / e0);
+    worst = std::max(worst, std::abs(s.energy_balance_error()));
+    worst_columns = std::max(worst_columns, std::abs(s.energies().total() - e0) / e0);
   });
-  std::cout << "largest total-energy deviation over ten periods " << 100.0 * worst << "%\n";
+  const double omega_dt = 0.9 * std::numbers::pi / 20.0;
+  std::cout << "largest total-energy deviation over ten periods " << 100.0 * worst
+            << "%; of the total of the energy columns " << 100.0 * worst_columns << "%\n";
   EXPECT_LT(worst, 0.005);
+  EXPECT_LT(worst_columns, 0.005 + omega_dt * omega_dt / 4.0);
   EXPECT_NEAR(sim.time(), model.time.end_time, 1e-12);
 }
 
