@@ -11,6 +11,10 @@ namespace {
 constexpr double kEdgeFraction = 1e-6;
 // Relative rounding of a coordinate that shape maps may leave (a few hundred ulps).
 constexpr double kRounding = 1e-13;
+// Never more than this fraction of the shortest edge at the point: far from the origin (a
+// 1e12 m model) the rounding floor above would reach across small elements whose nodes are
+// still distinct at the coordinates' precision (2.2e-16 relative) and join them (issue 28).
+constexpr double kLargestEdgeFraction = 0.25;
 // Cell indices are clamped here: far enough to keep distinct cells apart, near enough that
 // the +-1 neighbour never overflows.
 constexpr double kLargestIndex = 4.0e18;
@@ -94,7 +98,9 @@ std::int32_t NodeMerger::find_or_add(Nodes& nodes, const Vec3& p, std::int64_t& 
 
 double merge_tolerance(const Vec3& p, double shortest_edge) {
   const double reach = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
-  return std::max(kEdgeFraction * shortest_edge, kRounding * reach);
+  const double tolerance = std::max(kEdgeFraction * shortest_edge, kRounding * reach);
+  return shortest_edge > 0.0 ? std::min(tolerance, kLargestEdgeFraction * shortest_edge)
+                             : tolerance;
 }
 
 double largest_merge_tolerance(double reach, double longest_edge) {

@@ -233,6 +233,33 @@ TEST(GenerateBox, SlenderBoxKeepsEveryNode) {
   EXPECT_GT(min_hex_volume(mesh), 0.0);
 }
 
+// Issue 28: a 1e12 m bar 0.1 m thick, and a metre cube of 20^3 elements 1e12 m from the origin.
+// Their nodes lie 0.1 and 0.05 m apart, far above the coordinates' precision there (2.2e-16 *
+// 1e12 = 2.2e-4 m): none may merge, whatever the rounding floor of the merge tolerance (1e-13 *
+// 1e12 = 0.1 m). Reference: the grid's node count and the box volume.
+TEST(GenerateBox, NodesFarFromTheOriginStayDistinctAtTheCoordinatesPrecision) {
+  BoxComponent bar;
+  bar.nx = 10;
+  bar.ny = 1;
+  bar.nz = 1;
+  bar.corner1 = {0.0, 0.0, 0.0};
+  bar.corner2 = {1e12, 0.1, 0.1};
+  Mesh bar_mesh;
+  generate_box(bar_mesh, bar);
+  EXPECT_EQ(bar_mesh.nodes.size(), 11u * 2u * 2u);
+  EXPECT_NEAR(total_volume(bar_mesh), 1e10, 1e-9 * 1e10);
+  BoxComponent cube;
+  cube.nx = cube.ny = cube.nz = 20;
+  cube.corner1 = {1e12, 1e12, 1e12};
+  cube.corner2 = {1e12 + 1.0, 1e12 + 1.0, 1e12 + 1.0};
+  Mesh cube_mesh;
+  generate_box(cube_mesh, cube);
+  EXPECT_EQ(cube_mesh.nodes.size(), 21u * 21u * 21u);
+  EXPECT_EQ(duplicate_nodes(cube_mesh, 0.01), 0u);
+  EXPECT_GT(min_hex_volume(cube_mesh), 0.0);
+  EXPECT_NEAR(total_volume(cube_mesh), 1.0, 1e-3);  // the corners' rounding at 1e12: 1.2e-4 m
+}
+
 TEST(GenerateCylinder, SlenderAndFarCylinderKeepsItsTopology) {
   CylinderComponent c;
   c.n_axial = 4;
