@@ -16,37 +16,42 @@ void BucketGrid::build(std::span<const Box> boxes) {
   if (boxes_.empty()) return;
 
   Box all = boxes_[0];
-  double mean_extent = 0.0;
-  for (const Box& b : boxes_) {
+  std::array<double, 3> mean_extent{0.0, 0.0, 0.0};
+  for (const Box& b : boxes_)
     for (int k = 0; k < 3; ++k) {
       all.lo[k] = std::min(all.lo[k], b.lo[k]);
       all.hi[k] = std::max(all.hi[k], b.hi[k]);
+      mean_extent[k] += b.hi[k] - b.lo[k];
     }
-    mean_extent += std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]});
-  }
-  mean_extent /= static_cast<double>(boxes_.size());
   origin_ = all.lo;
 
-  // Cells about the size of a box; coarser if that would give more than ~2 cells per box.
+  // Cells about the size of a box along each axis; coarser if that would give more than ~2
+  // cells per box. An axis along which the boxes are flat takes the largest mean extent.
   const double largest =
       std::max({all.hi[0] - all.lo[0], all.hi[1] - all.lo[1], all.hi[2] - all.lo[2]});
-  cell_size_ = mean_extent > 0.0 ? mean_extent : (largest > 0.0 ? largest : 1.0);
+  const double widest = std::max({mean_extent[0], mean_extent[1], mean_extent[2]}) /
+                        static_cast<double>(boxes_.size());
+  for (int k = 0; k < 3; ++k) {
+    const double mean = mean_extent[k] / static_cast<double>(boxes_.size());
+    cell_size_[k] = mean > 1e-6 * widest ? mean : widest;
+    if (!(cell_size_[k] > 0.0)) cell_size_[k] = largest > 0.0 ? largest : 1.0;
+  }
   const auto max_cells = static_cast<double>(2 * boxes_.size() + 64);
   for (;;) {
     double cells = 1.0;
     for (int k = 0; k < 3; ++k) {
-      dims_[k] = static_cast<std::int64_t>(std::floor((all.hi[k] - all.lo[k]) / cell_size_)) + 1;
+      dims_[k] = static_cast<std::int64_t>(
+                     std::min(std::floor((all.hi[k] - all.lo[k]) / cell_size_[k]), 1e15)) +
+                 1;
       cells *= static_cast<double>(dims_[k]);
     }
     if (cells <= max_cells) break;
-    cell_size_ *= 1.5;
+    for (double& size : cell_size_) size *= 1.5;
   }
 
   auto range = [&](const Box& b, int k, std::int64_t& first, std::int64_t& last) {
-    first = std::clamp(static_cast<std::int64_t>(std::floor((b.lo[k] - origin_[k]) / cell_size_)),
-                       std::int64_t{0}, dims_[k] - 1);
-    last = std::clamp(static_cast<std::int64_t>(std::floor((b.hi[k] - origin_[k]) / cell_size_)),
-                      std::int64_t{0}, dims_[k] - 1);
+    first = index_along(b.lo[k], k);
+    last = index_along(b.hi[k], k);
   };
   const auto n_cells = static_cast<std::size_t>(dims_[0] * dims_[1] * dims_[2]);
   cell_start_.assign(n_cells + 1, 0);
@@ -74,11 +79,17 @@ void BucketGrid::build(std::span<const Box> boxes) {
   }
 }
 
+std::int64_t BucketGrid::index_along(double coordinate, int k) const {
+  const double s = std::floor((coordinate - origin_[k]) / cell_size_[k]);
+  if (!(s > 0.0)) return 0;  // below the grid, or NaN
+  return s >= static_cast<double>(dims_[k]) ? dims_[k] - 1 : static_cast<std::int64_t>(s);
+}
+
 bool BucketGrid::cell_of(double x, double y, double z, std::size_t& cell) const {
   const double p[3] = {x, y, z};
   std::int64_t idx[3];
   for (int k = 0; k < 3; ++k) {
-    const double s = std::floor((p[k] - origin_[k]) / cell_size_);
+    const double s = std::floor((p[k] - origin_[k]) / cell_size_[k]);
     // Outside the grid (or NaN): no box can contain the point.
     if (!(s >= 0.0) || s >= static_cast<double>(dims_[k])) return false;
     idx[k] = static_cast<std::int64_t>(s);
@@ -118,6 +129,66 @@ void BucketGrid::query(std::span<const double> x, std::span<const double> y,
           out.facets[at++] = b;
       }
       if (pass == 0) out.offsets[p + 1] = count;
+    }
+  }
+}
+
+void BucketGrid::query(std::span<const Box> regions, CandidateList& out,
+                       const std::function<bool(std::size_t, std::int32_t)>& keep) const {
+  const std::size_t n = regions.size();
+  out.offsets.assign(n + 1, 0);
+  if (boxes_.empty()) {
+    out.facets.clear();
+    return;
+  }
+  // As the point query. A pair is taken in one cell only, the first the two boxes share along
+  // each axis; the rows are then sorted into facet order.
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 1) {
+      for (std::size_t p = 0; p < n; ++p) out.offsets[p + 1] += out.offsets[p];
+      out.facets.resize(out.offsets[n]);
+    }
+#pragma omp parallel for schedule(static) if (n >= static_cast <std::size_t>(kParallelMinimum))
+    for (std::size_t p = 0; p < n; ++p) {
+      const Box& region = regions[p];
+      bool outside = false;
+      std::int64_t r[3][2];
+      for (int k = 0; k < 3; ++k) {
+        // Beyond the grid (or NaN): no box overlaps it.
+        outside = outside || !(region.hi[k] >= origin_[k]) ||
+                  !((region.lo[k] - origin_[k]) / cell_size_[k] < static_cast<double>(dims_[k]));
+        r[k][0] = index_along(region.lo[k], k);
+        r[k][1] = index_along(region.hi[k], k);
+      }
+      if (outside) continue;
+      std::size_t count = 0;
+      const std::size_t first = pass == 1 ? out.offsets[p] : 0;
+      std::size_t at = first;
+      for (std::int64_t cz = r[2][0]; cz <= r[2][1]; ++cz)
+        for (std::int64_t cy = r[1][0]; cy <= r[1][1]; ++cy)
+          for (std::int64_t cx = r[0][0]; cx <= r[0][1]; ++cx) {
+            const std::int64_t here[3] = {cx, cy, cz};
+            const auto c = static_cast<std::size_t>((cz * dims_[1] + cy) * dims_[0] + cx);
+            for (std::size_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
+              const std::int32_t b = cell_boxes_[k];
+              const Box& box = boxes_[b];
+              if (!box.overlaps(region)) continue;
+              bool first_shared = true;
+              for (int a = 0; a < 3; ++a)
+                first_shared =
+                    first_shared && index_along(std::max(box.lo[a], region.lo[a]), a) == here[a];
+              if (!first_shared) continue;
+              if (keep && !keep(p, b)) continue;
+              if (pass == 0)
+                ++count;
+              else
+                out.facets[at++] = b;
+            }
+          }
+      if (pass == 0) out.offsets[p + 1] = count;
+      if (pass == 1)
+        std::sort(out.facets.begin() + static_cast<std::ptrdiff_t>(first),
+                  out.facets.begin() + static_cast<std::ptrdiff_t>(at));
     }
   }
 }

@@ -80,31 +80,101 @@ ContactInterface::PointPositions ContactInterface::point_positions(const Side& o
   return q;
 }
 
+std::vector<Box> ContactInterface::cell_regions(const Side& own, const ContactInput& in) const {
+  const std::size_t n = own.point_facet.size();
+  std::vector<Box> regions(n);
+#pragma omp parallel for schedule(static) if (n >= static_cast <std::size_t>(kParallelMinimum))
+  for (std::size_t p = 0; p < n; ++p) {
+    Box& r = regions[p];
+    if (own.point_node[p] >= 0) {
+      const std::int32_t i = own.point_node[p];
+      r.lo = r.hi = {in.x[i], in.y[i], in.z[i]};
+      continue;
+    }
+    const QuadCorners c = quad_corners(own.surface.facets[own.point_facet[p]], in.x, in.y, in.z);
+    const CellBounds b = own.cell(p);
+    r.lo = {kInfinity, kInfinity, kInfinity};
+    r.hi = {-kInfinity, -kInfinity, -kInfinity};
+    for (const double xi : {b.xi0, b.xi1})
+      for (const double eta : {b.eta0, b.eta1}) {
+        const Vec3 x = quad_point(c, xi, eta);
+        const double v[3] = {x.x, x.y, x.z};
+        for (int k = 0; k < 3; ++k) {
+          r.lo[k] = std::min(r.lo[k], v[k]);
+          r.hi[k] = std::max(r.hi[k], v[k]);
+        }
+      }
+  }
+  return regions;
+}
+
 void ContactInterface::rebuild_broad_phase(const ContactInput& in) {
   const double above =
       std::max(settings_.adhesion ? settings_.adhesion->zone() : 0.0, settings_.edge_tolerance);
   for (Pass& pass : passes_) {
     const Side& own = sides_[pass.own];
     const Side& target = sides_[pass.target];
+    // A solid facet's box: the facet swept along its normals through the detection depth (and
+    // the zone above it), widened by the search margin and the edge tolerance, and across its
+    // sharp and free edges by kOnBorder of its diagonal: a point can meet it only there
+    // (narrow_phase.cpp). Beyond a smooth edge the neighbour's box covers the dead zone. Not
+    // grown by the depth sideways: the long sides of a slab lie side by side, and each of their
+    // points would see all of them (issue 28). A shell facet's edges are rounded: its box grows
+    // by the depth every way.
     std::vector<Box> boxes(target.surface.size());
-    // An S2S point acts with the part of its cell over the other surface (cell_cover.cpp): its
-    // partner may lie beyond the border, as far as its cell reaches.
-    const double reach = own.point_reach.empty()
-                             ? 0.0
-                             : *std::max_element(own.point_reach.begin(), own.point_reach.end());
     for (std::size_t f = 0; f < boxes.size(); ++f) {
       const QuadCorners c = quad_corners(target.surface.facets[f], in.x, in.y, in.z);
-      const double grow = std::max(std::max(target.depth[f], above) + margin_, reach) +
-                          target.facet_gap[f] + own.max_point_gap;
+      const double gaps = target.facet_gap[f] + own.max_point_gap;
+      const double deep = std::max(target.depth[f], above) + margin_ + gaps;
+      const bool shell = target.surface.twin[f] >= 0;
+      const double aside = shell ? deep : margin_ + gaps + settings_.edge_tolerance;
+      Box& box = boxes[f];
+      box.lo = {kInfinity, kInfinity, kInfinity};
+      box.hi = {-kInfinity, -kInfinity, -kInfinity};
+      auto include = [&box](const Vec3& x) {
+        const double v[3] = {x.x, x.y, x.z};
+        for (int k = 0; k < 3; ++k) {
+          box.lo[k] = std::min(box.lo[k], v[k]);
+          box.hi[k] = std::max(box.hi[k], v[k]);
+        }
+      };
+      // The corners, moved across the facet's sharp and free edges (edge e runs from corner e
+      // to corner e + 1, as quad.cpp numbers the crossed edges).
+      std::array<Vec3, 4> corners = c;
+      const unsigned borders = shell ? 0u : (target.sharp[f] | target.free_edges[f]);
+      const double across = kOnBorder * norm(c[2] - c[0]);
+      const Vec3 centre = (c[0] + c[1] + c[2] + c[3]) * 0.25;
+      for (int e = 0; e < 4; ++e) {
+        if (!(borders & (1u << e))) continue;
+        const Vec3& a = c[e];
+        const Vec3& b = c[(e + 1) % 4];
+        const Vec3 edge_middle = (a + b) * 0.5;
+        Vec3 out = (edge_middle - centre) - (b - a) * (dot(edge_middle - centre, b - a) /
+                                                       std::max(dot(b - a, b - a), 1e-300));
+        const double length = norm(out);
+        if (!(length > 0.0)) continue;
+        out = out * (across / length);
+        corners[e] += out;
+        corners[(e + 1) % 4] += out;
+      }
+      const Vec3 centre_normal = quad_centre_normal(c);
+      const double xi[4] = {-1.0, 1.0, 1.0, -1.0}, eta[4] = {-1.0, -1.0, 1.0, 1.0};
+      for (int a = 0; a < 4; ++a) {
+        double jacobian = 0.0;
+        const Vec3 corner_normal = quad_normal(c, xi[a], eta[a], jacobian);
+        for (const Vec3& n : {centre_normal, corner_normal}) {
+          if (shell || !(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z))) continue;
+          include(corners[a] + n * deep);
+          include(corners[a] - n * deep);
+        }
+        include(corners[a]);
+      }
       for (int k = 0; k < 3; ++k) {
-        const double lo = std::min({c[0][k], c[1][k], c[2][k], c[3][k]});
-        const double hi = std::max({c[0][k], c[1][k], c[2][k], c[3][k]});
-        boxes[f].lo[k] = lo - grow;
-        boxes[f].hi[k] = hi + grow;
+        box.lo[k] -= aside;
+        box.hi[k] += aside;
       }
     }
     pass.grid.build(boxes);
-    const PointPositions q = point_positions(own, in);
     // Facets that share a node with the point's own never touch it (narrow_phase.hpp): dropped
     // here once per build instead of at every step, so that in self contact the points on a
     // smooth surface have no candidate at all.
@@ -115,7 +185,14 @@ void ContactInterface::rebuild_broad_phase(const ContactInput& in) {
           if (a == b) return false;
       return true;
     };
-    pass.grid.query(q.x, q.y, q.z, pass.candidates, keep);
+    if (own.point_cell.empty()) {
+      const PointPositions q = point_positions(own, in);
+      pass.grid.query(q.x, q.y, q.z, pass.candidates, keep);
+    } else {
+      // An S2S point acts with the part of its cell over the other surface (cell_cover.cpp):
+      // its candidates are the facets whose boxes overlap its cell's.
+      pass.grid.query(cell_regions(own, in), pass.candidates, keep);
+    }
   }
   rebuild_pending_ = false;
   awake_current_ = false;

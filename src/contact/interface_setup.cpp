@@ -222,29 +222,34 @@ void ContactInterface::build_points(Side& side, const ContactInput& in, double o
   };
   // Integration points (S2S). A facet two or more times larger than the facets it meets would
   // press its few points into single small facets of the other side with the stiffness of its
-  // whole area: it is split into m x m cells about the size of the other side's facets, each
+  // whole area: it is split into m x n cells about the size of the other side's facets along
+  // each of its directions (a long thin facet, a slab's side, into a row of cells), each
   // integrated with the rule of the accuracy level, so both sides resolve the overlap alike.
   std::vector<FacetPoint> rules[16];
+  auto cells_along = [other_size](double length) {
+    return static_cast<int>(std::clamp(std::floor(length / other_size), 1.0, 32.0));
+  };
   for (std::size_t f = 0; f < surface.size(); ++f) {
     const QuadCorners c = quad_corners(surface.facets[f], in.x, in.y, in.z);
-    const int cells =
-        static_cast<int>(std::clamp(std::floor(longest_edge(c) / other_size), 1.0, 32.0));
-    for (int j = 0; j < cells; ++j)
-      for (int i = 0; i < cells; ++i) {
+    // Edges 0 and 2 run along xi, 1 and 3 along eta.
+    const int cells_xi = cells_along(std::max(norm(c[1] - c[0]), norm(c[2] - c[3])));
+    const int cells_eta = cells_along(std::max(norm(c[2] - c[1]), norm(c[3] - c[0])));
+    for (int j = 0; j < cells_eta; ++j)
+      for (int i = 0; i < cells_xi; ++i) {
         // Sharp-edge strips only in cells on the facet's sharp edges (edge 0: eta = -1,
         // 1: xi = +1, 2: eta = +1, 3: xi = -1).
         std::uint8_t sharp = side.sharp[f];
         if (j > 0) sharp &= ~1u;
-        if (i < cells - 1) sharp &= ~2u;
-        if (j < cells - 1) sharp &= ~4u;
+        if (i < cells_xi - 1) sharp &= ~2u;
+        if (j < cells_eta - 1) sharp &= ~4u;
         if (i > 0) sharp &= ~8u;
         std::vector<FacetPoint>& cell_rule = rules[sharp];
         if (cell_rule.empty()) cell_rule = facet_rule(s.accuracy_level, s.accuracy_edge, sharp);
-        const double inv = 1.0 / cells;
+        const double inv_xi = 1.0 / cells_xi, inv_eta = 1.0 / cells_eta;
         for (const FacetPoint& q : cell_rule) {
-          const double xi = -1.0 + (2.0 * i + 1.0 + q.xi) * inv,
-                       eta = -1.0 + (2.0 * j + 1.0 + q.eta) * inv;
-          const double weight = q.weight * inv * inv;
+          const double xi = -1.0 + (2.0 * i + 1.0 + q.xi) * inv_xi,
+                       eta = -1.0 + (2.0 * j + 1.0 + q.eta) * inv_eta;
+          const double weight = q.weight * inv_xi * inv_eta;
           double jacobian = 0.0;
           quad_normal(c, xi, eta, jacobian);
           const auto shape = quad_shape(xi, eta);
@@ -254,9 +259,10 @@ void ContactInterface::build_points(Side& side, const ContactInput& in, double o
               side.node_area[surface.facets[f][a]] += shape[a] * weight * jacobian;
           facet_area[f] += weight * jacobian;
           if (s.discretisation == Discretisation::SurfaceToSurface) {
-            const CellBounds cell{
-                -1.0 + (2.0 * i + 1.0 + q.xi0) * inv, -1.0 + (2.0 * i + 1.0 + q.xi1) * inv,
-                -1.0 + (2.0 * j + 1.0 + q.eta0) * inv, -1.0 + (2.0 * j + 1.0 + q.eta1) * inv};
+            const CellBounds cell{-1.0 + (2.0 * i + 1.0 + q.xi0) * inv_xi,
+                                  -1.0 + (2.0 * i + 1.0 + q.xi1) * inv_xi,
+                                  -1.0 + (2.0 * j + 1.0 + q.eta0) * inv_eta,
+                                  -1.0 + (2.0 * j + 1.0 + q.eta1) * inv_eta};
             // Its cell's farthest corner from it.
             const Vec3 x = quad_point(c, xi, eta);
             double reach = 0.0;

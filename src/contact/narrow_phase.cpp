@@ -10,7 +10,6 @@ namespace abut {
 namespace {
 
 constexpr double kEdgeRoundOff = 1e-9;
-constexpr double kOnBorder = 1e-2;  // of a facet's diagonal
 constexpr double kFacingRoundOff = 1e-9;
 
 bool share_a_node(const std::array<std::int32_t, 4>& a, const std::array<std::int32_t, 4>& b) {

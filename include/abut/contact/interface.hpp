@@ -316,6 +316,8 @@ class ContactInterface {
     std::vector<double> x, y, z;
   };
   PointPositions point_positions(const Side& own, const ContactInput& in) const;
+  // The bounding box of each S2S point's cell (a node point's position), for the broad phase.
+  std::vector<Box> cell_regions(const Side& own, const ContactInput& in) const;
   void update_near_bound();  // near_omega2_ from the candidates of the last build
   bool needs_rebuild(const ContactInput& in) const;
   PointFrame frame(const Side& side, std::size_t p, const ContactInput& in) const;

@@ -31,6 +31,10 @@
 
 namespace abut {
 
+// Beyond a sharp or free edge a point still meets a facet within this fraction of the facet's
+// diagonal (a node on the border of a matched mesh; narrow_phase.cpp), or the edge tolerance.
+inline constexpr double kOnBorder = 1e-2;
+
 // The facets a point may meet, with what the acceptance rules need of each.
 struct TargetFacets {
   std::span<const std::array<std::int32_t, 4>> nodes;
