@@ -16,7 +16,8 @@ namespace {
 
 constexpr char kMagic[8] = {'A', 'B', 'U', 'T', 'R', 'S', 'T', '\n'};
 // 2: the simulation's state holds the conserved kinetic energy of the balance (issue 28).
-constexpr std::uint32_t kVersion = 2;
+// 3: the contact broad phase's grid has a cell size per axis (issue 28).
+constexpr std::uint32_t kVersion = 3;
 
 // FNV-1a, 64 bits (Fowler, Noll, Vo): a checksum, not a cryptographic hash.
 class Fnv {
