@@ -9,6 +9,7 @@
 #include "abut/contact/integration.hpp"
 #include "abut/contact/interface.hpp"
 #include "abut/contact/quad.hpp"
+#include "abut/core/memory.hpp"
 #include "abut/core/parallel.hpp"
 
 namespace abut {
@@ -204,6 +205,25 @@ void ContactInterface::build_sides(const ContactInput& in,
                        surface_nodes_.end());
 }
 
+// Bytes per contact point of one pass, rounded up from measurements: a slab of 2 x 8000 x 1
+// hexahedra in S2S self contact, 256k points, 230 MB in all (about 870 bytes per point with the
+// mesh and solver): the point's arrays on its side and in its pass (with the overlap slots of
+// its cell, mortar.hpp) and its candidates.
+constexpr double kBytesPerPoint = 1000.0;
+
+void ContactInterface::require_point_memory(std::size_t planned) const {
+  std::size_t made = 0;
+  for (const Side& side : sides_) made += side.point_facet.size();
+  const double points = static_cast<double>(made + planned);
+  const double need = kBytesPerPoint * points;
+  if (need <= settings_.memory_limit) return;
+  throw ContactSetupError(
+      "memory", "its surfaces make " + std::to_string(made + planned) +
+                    " contact points, which need about " + gigabytes(need) +
+                    " of memory, but only " + gigabytes(settings_.memory_limit) +
+                    " are available: coarsen the surfaces, lower the accuracy level or use N2S");
+}
+
 void ContactInterface::build_points(Side& side, const ContactInput& in, double other_size,
                                     std::span<const std::int32_t> secondary_nodes,
                                     const std::vector<std::uint8_t>& free_edges) {
@@ -229,22 +249,41 @@ void ContactInterface::build_points(Side& side, const ContactInput& in, double o
   auto cells_along = [other_size](double length) {
     return static_cast<int>(std::clamp(std::floor(length / other_size), 1.0, 32.0));
   };
+  // Edges 0 and 2 run along xi, 1 and 3 along eta.
+  auto cells_of = [&](const QuadCorners& c) {
+    return std::array<int, 2>{cells_along(std::max(norm(c[1] - c[0]), norm(c[2] - c[3]))),
+                              cells_along(std::max(norm(c[2] - c[1]), norm(c[3] - c[0])))};
+  };
+  // The rule of cell (i, j): sharp-edge strips only in cells on the facet's sharp edges (edge 0:
+  // eta = -1, 1: xi = +1, 2: eta = +1, 3: xi = -1).
+  auto rule_of = [&](std::size_t f, int i, int j,
+                     const std::array<int, 2>& cells) -> const std::vector<FacetPoint>& {
+    std::uint8_t sharp = side.sharp[f];
+    if (j > 0) sharp &= ~1u;
+    if (i < cells[0] - 1) sharp &= ~2u;
+    if (j < cells[1] - 1) sharp &= ~4u;
+    if (i > 0) sharp &= ~8u;
+    std::vector<FacetPoint>& cell_rule = rules[sharp];
+    if (cell_rule.empty()) cell_rule = facet_rule(s.accuracy_level, s.accuracy_edge, sharp);
+    return cell_rule;
+  };
+  if (s.discretisation == Discretisation::SurfaceToSurface) {
+    // Counted before they are made: a model whose points would not fit is refused.
+    std::size_t planned = 0;
+    for (std::size_t f = 0; f < surface.size(); ++f) {
+      const auto cells = cells_of(quad_corners(surface.facets[f], in.x, in.y, in.z));
+      for (int j = 0; j < cells[1]; ++j)
+        for (int i = 0; i < cells[0]; ++i) planned += rule_of(f, i, j, cells).size();
+    }
+    require_point_memory(planned);
+  }
   for (std::size_t f = 0; f < surface.size(); ++f) {
     const QuadCorners c = quad_corners(surface.facets[f], in.x, in.y, in.z);
-    // Edges 0 and 2 run along xi, 1 and 3 along eta.
-    const int cells_xi = cells_along(std::max(norm(c[1] - c[0]), norm(c[2] - c[3])));
-    const int cells_eta = cells_along(std::max(norm(c[2] - c[1]), norm(c[3] - c[0])));
+    const std::array<int, 2> cells = cells_of(c);
+    const int cells_xi = cells[0], cells_eta = cells[1];
     for (int j = 0; j < cells_eta; ++j)
       for (int i = 0; i < cells_xi; ++i) {
-        // Sharp-edge strips only in cells on the facet's sharp edges (edge 0: eta = -1,
-        // 1: xi = +1, 2: eta = +1, 3: xi = -1).
-        std::uint8_t sharp = side.sharp[f];
-        if (j > 0) sharp &= ~1u;
-        if (i < cells_xi - 1) sharp &= ~2u;
-        if (j < cells_eta - 1) sharp &= ~4u;
-        if (i > 0) sharp &= ~8u;
-        std::vector<FacetPoint>& cell_rule = rules[sharp];
-        if (cell_rule.empty()) cell_rule = facet_rule(s.accuracy_level, s.accuracy_edge, sharp);
+        const std::vector<FacetPoint>& cell_rule = rule_of(f, i, j, cells);
         const double inv_xi = 1.0 / cells_xi, inv_eta = 1.0 / cells_eta;
         for (const FacetPoint& q : cell_rule) {
           const double xi = -1.0 + (2.0 * i + 1.0 + q.xi) * inv_xi,

@@ -6,15 +6,13 @@
 #include <string>
 
 #include "abut/core/error.hpp"
+#include "abut/core/memory.hpp"
 #include "abut/mesh/generators.hpp"
 
 namespace abut::deck {
 
-// Bytes the machine can still give: MemAvailable of /proc/meminfo on Linux, else the free
-// physical pages; at most ABUT_MEMORY_MB megabytes when that environment variable is a positive
-// number (a batch slot, a shared machine, the fuzzer's memory limit); empty when unknown (then
-// nothing is refused).
-std::optional<double> available_memory();
+// available_memory() and gigabytes(): abut/core/memory.hpp.
+using abut::available_memory;
 
 // Estimated peak bytes of `abut run` for a mesh of this size (solver state included).
 double run_memory(const MeshSize& size);

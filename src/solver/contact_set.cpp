@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "abut/contact/penalty.hpp"
+#include "abut/core/memory.hpp"
 #include "abut/element/shell4.hpp"
 #include "abut/element/stable_step.hpp"
 #include "abut/mesh/skin.hpp"
@@ -473,8 +474,12 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
     report.title = spec.title;
     for (const auto& [part, p] : penalties) report.parts.push_back(p);
     describe(spec, report);
+    ContactSettings settings = settings_of(model, spec);
+    // What the contact points may take: the memory still available (a model that would not fit
+    // is refused at its *CONTACT line before its points are made).
+    settings.memory_limit = available_memory().value_or(settings.memory_limit);
     try {
-      interfaces_.emplace_back(settings_of(model, spec),
+      interfaces_.emplace_back(std::move(settings),
                                contact_surface(model.mesh, faces1, penalty_of, moduli_of),
                                contact_surface(model.mesh, faces2, penalty_of, moduli_of),
                                node_mass, initial, secondary_nodes);

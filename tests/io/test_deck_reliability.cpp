@@ -413,6 +413,28 @@ TEST(DeckReliability, MemoryLimitOfTheEnvironmentCapsTheBudget) {
   EXPECT_THAT(e.message(), HasSubstr("available"));
 }
 
+// Issue 28: the contact points count against the memory too. A slab of 2 x 2000 x 1 hexahedra
+// in S2S self contact makes 64 032 points (about 64 MB at kBytesPerPoint): within 100 MB it runs,
+// within 20 MB it is refused at its *CONTACT line before the points are made. The mesh itself
+// (4000 hexes, about 5 MB) fits both.
+TEST(DeckReliability, ContactPointsBeyondTheMemoryAreRefusedAtTheContact) {
+  const std::string slab =
+      "*UNIT_SYSTEM\nSI\n*TIME\n1e-12\n*COMPONENT_BOX\n1, 1, 2, 2000, 1\n0, 0, 0, 1, 1, 1\n"
+      "*MAT_ELASTIC\n1, 7800, 2e11, 0.3\n*PART\n1, 1\n*CONTACT\n\"self\"\n1\nALL, , ALL\n";
+  {
+    const ScopedEnvironment roomy("ABUT_MEMORY_MB", "100");
+    const Model m = testing::model_of(slab);
+    const Simulation sim(m);
+    EXPECT_GT(sim.contact_reports().at(0).points, 60000u);
+  }
+  const ScopedEnvironment tight("ABUT_MEMORY_MB", "20");
+  const InputError e = simulation_error(slab);
+  EXPECT_EQ(e.where().keyword, "*CONTACT");
+  EXPECT_EQ(e.where().line, 14u);
+  EXPECT_THAT(e.message(), HasSubstr("contact points"));
+  EXPECT_THAT(e.message(), HasSubstr("available"));
+}
+
 TEST(DeckReliability, InpWithoutElementsIsAnErrorAtItsLastCard) {
   // deck_libfuzzer_inp_reader: a step without a mesh was "the input has no *ELEMENT" with no line.
   try {

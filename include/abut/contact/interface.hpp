@@ -341,6 +341,9 @@ class ContactInterface {
   bool meet_by_cell(const Pass& pass, std::size_t p, const PointFrame& f, const ContactInput& in,
                     Partner& h, CellOverlap& o) const;
   PartnerRules border_rules(const Side& own, std::size_t p) const;
+  // ContactSetupError "memory" when the points made so far and `planned` more would need more
+  // than settings_.memory_limit.
+  void require_point_memory(std::size_t planned) const;
   // The partner among the broad-phase candidates; failing that, near `previous` (last step's
   // partner, or -1).
   Partner partner_of(const Pass& pass, std::size_t p, const PointFrame& f, const ContactInput& in,

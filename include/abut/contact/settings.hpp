@@ -5,6 +5,7 @@
 // ContactSetupError naming the setting in the library's own terms.
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -130,6 +131,9 @@ struct ContactSettings {
   double edge_angle = 20.0;           // alpha_edge [degrees]
   WearRateFunction wear_rate1, wear_rate2;
   ThermalContactSettings thermal;
+  // Bytes the contact points may take (their count is known before they are made); more is a
+  // ContactSetupError "memory". A host passes what it can spare (abut: abut/core/memory.hpp).
+  double memory_limit = std::numeric_limits<double>::infinity();
   std::optional<double>
       search_margin;  // broad-phase margin; default: half the smallest detection depth
   // Speed only, results are the same either way (tested): points that are surely open are skipped
