@@ -93,7 +93,8 @@ TEST(LargestEigenvalue, LanesGiveTheValuesOfOneMatrixAtATime) {
     const Lanes length = hex8_critical_length(lanes, volume, 1.2e11, 8.1e10);
     for (int l = 0; l < kLanes; ++l) {
       const double one = hex8_critical_length(a[l].data(), 2.0, 1.2e11, 8.1e10);
-      EXPECT_EQ(std::memcmp(&one, &length[l], sizeof(double)), 0) << "lane " << l;
+      const double lane = length[l];  // clang takes no address of a vector's element
+      EXPECT_EQ(std::memcmp(&one, &lane, sizeof(double)), 0) << "lane " << l;
     }
   }
 }

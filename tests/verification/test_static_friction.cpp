@@ -148,11 +148,11 @@ Motion run(const Case& c, const Slope& slope) {
   const double x0 = sim.part_states().at(0).centre_of_mass.x;
   Motion m;
   verification::run_to(sim, sim.end_time(), [&](const Simulation& s) {
-    const PartState& b = s.part_states()[0];
+    const PartState b = s.part_states()[0];  // a copy: part_states() returns a new vector
     if (m.stop_distance < 0.0 && slope.v0 > 0.0 && b.velocity.x <= 0.0)
       m.stop_distance = b.centre_of_mass.x - x0;
   });
-  const PartState& b = sim.part_states()[0];
+  const PartState b = sim.part_states()[0];
   m.final_distance = b.centre_of_mass.x - x0;
   m.final_speed = norm(b.velocity);
   return m;

@@ -109,7 +109,7 @@ TEST(TubeCrush, MeanCrushingForceIsAbramowiczAndJones) {
   const double kinetic0 = sim.part_states()[plate].kinetic;
   double crush = 0.0, kinetic_at_crush = kinetic0, penetration = 0.0;
   verification::run_to(sim, model.time.end_time, [&](const Simulation& s) {
-    const auto& p = s.part_states()[plate];
+    const PartState p = s.part_states()[plate];  // a copy: part_states() returns a new vector
     if (z0 - p.centre_of_mass.z > crush) {
       crush = z0 - p.centre_of_mass.z;
       kinetic_at_crush = p.kinetic;
