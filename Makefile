@@ -56,7 +56,7 @@ sanitize-build: setup
 	  -DABUT_SANITIZE=ON -DABUT_LIBFUZZER=ON $(CMAKE_ARGS)
 	cmake --build $(SANITIZE_DIR) -j $(JOBS)
 
-# The whole test suite under the sanitizers (about 45 minutes on 2 cores).
+# The whole test suite under the sanitizers (about 20 minutes on 2 cores).
 sanitize: sanitize-build
 	cd $(SANITIZE_DIR) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS) --timeout 1800
 

@@ -194,4 +194,58 @@ CellOverlap overlap_cell(const QuadCorners& own, const CellBounds& cell, const V
   return r;
 }
 
+CellOverlap cover_cell(const std::array<std::int32_t, 4>& own, const CellBounds& cell,
+                       const Vec3& normal, std::int32_t partner,
+                       std::span<const std::int32_t> candidates, const CoverFacets& other) {
+  constexpr std::size_t kMaxFacets = 64;
+  std::array<std::int32_t, kMaxFacets> ids{};
+  std::array<QuadCorners, kMaxFacets> corners{};
+  std::size_t count = 0;
+  auto touches_own = [&own](const std::array<std::int32_t, 4>& nodes) {
+    for (const std::int32_t i : nodes)
+      if (std::find(own.begin(), own.end(), i) != own.end()) return true;
+    return false;
+  };
+  auto add = [&](std::int32_t g) {
+    const auto f = static_cast<std::size_t>(g);
+    if (count == kMaxFacets || (!other.active.empty() && !other.active[f]) ||
+        (!other.twin.empty() && other.twin[f] >= 0) || touches_own(other.facets[f]))
+      return;
+    const QuadCorners c = quad_corners(other.facets[f], other.x, other.y, other.z);
+    // Facing away (the far side), or edge-on: a wall whose projection is a line and whose
+    // slope has no bound (the side of a block standing on the cell's plate).
+    if (!(dot(quad_centre_normal(c), normal) >= kCoverMinCos)) return;
+    ids[count] = g;
+    corners[count++] = c;
+  };
+  if (partner >= 0) add(partner);
+  for (const std::int32_t g : candidates)
+    if (g != partner) add(g);
+  const QuadCorners c_own = quad_corners(own, other.x, other.y, other.z);
+  CellOverlap o = overlap_cell(c_own, cell, normal, {ids.data(), count}, {corners.data(), count});
+  o.normal = normal;
+  return o;
+}
+
+double cell_mean_gap(const std::array<std::int32_t, 4>& own, const CellOverlap& o,
+                     const CoverFacets& other) {
+  const double inv = 1.0 / o.area;
+  auto at = [&other](std::int32_t i) {
+    const auto k = static_cast<std::size_t>(i);
+    return Vec3{other.x[k], other.y[k], other.z[k]};
+  };
+  // Own centroid less the other side's, over the covered part, both taken from a node of the
+  // cell's facet: the weights sum to 1 on either side only to round-off, which would otherwise
+  // scale with the distance from the origin (two coplanar faces would be found a few ulps of
+  // their coordinates apart, open or closed at random).
+  const Vec3 origin = at(own[0]);
+  Vec3 centroid;
+  for (int a = 0; a < 4; ++a) centroid += (at(own[a]) - origin) * (o.own[a] * inv);
+  for (int k = 0; k < o.count; ++k)
+    for (int b = 0; b < 4; ++b)
+      centroid -= (at(other.facets[static_cast<std::size_t>(o.facet[k])][b]) - origin) *
+                  (o.target[k][b] * inv);
+  return dot(centroid, o.normal);
+}
+
 }  // namespace abut

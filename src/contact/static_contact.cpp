@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "abut/contact/adjust.hpp"
 #include "abut/contact/integration.hpp"
@@ -64,6 +65,7 @@ StaticContact::StaticContact(StaticContactSettings settings, ContactSurface seco
         point_xi_.push_back(p.xi);
         point_eta_.push_back(p.eta);
         point_weight_.push_back(p.weight);
+        point_cell_.push_back({p.xi0, p.xi1, p.eta0, p.eta1});
       }
   }
   committed_.assign(point_facet_.size(), History{});
@@ -111,9 +113,15 @@ void StaticContact::evaluate(const ContactInput& in) {
   const double search = std::max(settings_.search_distance, reach_at_clearance(settings_.normal));
   const double reach = std::max(search, settings_.depth);
   const double edge_tolerance = 0.01 * mean_edge_length(main_, in.x, in.y, in.z);
-  // Positions, areas and normals of the points.
+  // S2S points meet the other surface cell by cell (mortar.hpp), but for tied and small-sliding
+  // pairs, which keep the point's partner and place on it.
+  const bool by_cells = !settings_.node_to_surface && !settings_.tied && !settings_.small_sliding;
+  const double facing_cos = std::cos(settings_.edge_angle * kPi / 180.0);
+  // Positions, areas and normals of the points, and the boxes of their cells (S2S).
   std::vector<double> qx(np), qy(np), qz(np);
   std::vector<Vec3> own_normal(np);
+  std::vector<Box> regions(by_cells ? np : 0);
+  std::vector<double> cell_reach(by_cells ? np : 0);
   for (std::size_t p = 0; p < np; ++p) {
     StaticContactPoint& out = points_[p];
     out = StaticContactPoint{};
@@ -143,6 +151,20 @@ void StaticContact::evaluate(const ContactInput& in) {
       own_normal[p] = quad_normal(c, point_xi_[p], point_eta_[p], jacobian);
       out.position = quad_point(c, point_xi_[p], point_eta_[p]);
       out.area = point_weight_[p] * jacobian;
+      if (by_cells) {  // the cell's box, and the distance to its farthest corner
+        const CellBounds& b = point_cell_[p];
+        Box& r = regions[p];
+        r.lo = r.hi = {out.position.x, out.position.y, out.position.z};
+        for (const double cxi : {b.xi0, b.xi1})
+          for (const double ceta : {b.eta0, b.eta1}) {
+            const Vec3 corner = quad_point(c, cxi, ceta);
+            cell_reach[p] = std::max(cell_reach[p], norm(corner - out.position));
+            for (int k = 0; k < 3; ++k) {
+              r.lo[k] = std::min(r.lo[k], corner[k]);
+              r.hi[k] = std::max(r.hi[k], corner[k]);
+            }
+          }
+      }
     }
     out.area *= settings_.weight;
     qx[p] = out.position.x, qy[p] = out.position.y, qz[p] = out.position.z;
@@ -165,8 +187,12 @@ void StaticContact::evaluate(const ContactInput& in) {
   CandidateList candidates;
   if (!boxes.empty()) {
     grid.build(boxes);
-    grid.query(qx, qy, qz, candidates);
+    if (by_cells)
+      grid.query(regions, candidates);
+    else
+      grid.query(qx, qy, qz, candidates);
   }
+  const CoverFacets cover{main_.facets, main_active_, main_twin_, in.x, in.y, in.z};
   const TargetFacets target{main_.facets, main_sharp_, main_active_, main_depth_,
                             main_twin_,   main_free_,  main_gap_,    main_min_edge_,
                             in.x,         in.y,        in.z};
@@ -190,6 +216,7 @@ void StaticContact::evaluate(const ContactInput& in) {
     h.initial_offset = c.initial_offset;
     if (!released_.empty() && released_[p]) continue;
     const Vec3 x = out.position;
+    std::optional<CellOverlap> cell;
     // The partner: fixed for tied pairs and small sliding once found, else searched.
     std::int32_t facet = -1;
     double xi = 0.0, eta = 0.0;
@@ -218,7 +245,29 @@ void StaticContact::evaluate(const ContactInput& in) {
               ? std::span<const std::int32_t>(candidates.facets.data() + candidates.offsets[p],
                                               candidates.offsets[p + 1] - candidates.offsets[p])
               : std::span<const std::int32_t>();
-      const Partner partner = find_partner(target, cand, own, x, own_normal[p], rules);
+      Partner partner = find_partner(target, cand, own, x, own_normal[p], rules);
+      if (by_cells) {
+        // The cell over the facets it faces, when its partner faces it within alpha_edge; else
+        // (its point misses the other surface, or meets a wall) the nearest facet within the
+        // cell's reach that faces it, as the explicit interface does (cell_cover.cpp). Without
+        // either, the point acts alone with its whole area.
+        auto faces = [&](const Partner& g) {
+          return g.facet >= 0 && -dot(own_normal[p], g.normal) >= facing_cos;
+        };
+        if (!faces(partner)) {
+          PartnerRules cell_rules = rules;
+          cell_rules.facing = facing_cos;
+          cell_rules.edge_tolerance = std::max(edge_tolerance, cell_reach[p]);
+          const Partner facing = find_partner(target, cand, own, x, own_normal[p], cell_rules);
+          if (faces(facing)) partner = facing;
+        }
+        if (faces(partner)) {
+          const CellOverlap o =
+              cover_cell(own, point_cell_[p], own_normal[p] * -1.0, partner.facet, cand, cover);
+          if (!(o.area > 0.0)) continue;  // the cell lies beside the other surface
+          cell = o;
+        }
+      }
       if (partner.facet >= 0) {
         facet = partner.facet, xi = partner.xi, eta = partner.eta, normal = partner.normal;
         q = quad_point(quad_corners(main_.facets[facet], in.x, in.y, in.z), xi, eta);
@@ -226,22 +275,37 @@ void StaticContact::evaluate(const ContactInput& in) {
     }
     if (facet < 0) continue;
     out.paired = true;
-    const double distance = dot(x - q, normal);
+    // A cell pushes along its own normal n, from the other surface, at its mean gap over the
+    // covered part, with the area of that part.
+    if (cell) {
+      normal = cell->normal;
+      out.area = cell->area * settings_.weight;
+    }
+    const double distance = cell ? cell_mean_gap(own, *cell, cover) : dot(x - q, normal);
     if (distance >= 0.0) h.initial_offset = 0.0;  // separated: the initial offset has done its job
     const double gap = distance + h.initial_offset + (shift_.empty() ? 0.0 : shift_[p]);
     const double d = -gap;
     out.gap = gap;
     h.facet = facet, h.xi = xi, h.eta = eta;
     // Weights of the element: +N on the point's own nodes, -phi on the partner's.
+    // A cell's: the integrals of the overlap over its area (mortar.hpp).
     ContactWeights wt;
-    if (out.node >= 0) {
+    if (cell) {
+      const double inv = 1.0 / cell->area;
+      for (int a = 0; a < 4; ++a) wt.add(own[a], cell->own[a] * inv);
+      for (int k = 0; k < cell->count; ++k)
+        for (int b = 0; b < 4; ++b)
+          wt.add(main_.facets[cell->facet[k]][b], -cell->target[k][b] * inv);
+    } else if (out.node >= 0) {
       wt.add(out.node, 1.0);
     } else {
       const auto n = quad_shape(point_xi_[p], point_eta_[p]);
       for (int a = 0; a < 4; ++a) wt.add(own[a], n[a]);
     }
-    const auto phi = quad_shape(xi, eta);
-    for (int a = 0; a < 4; ++a) wt.add(main_.facets[facet][a], -phi[a]);
+    if (!cell) {
+      const auto phi = quad_shape(xi, eta);
+      for (int a = 0; a < 4; ++a) wt.add(main_.facets[facet][a], -phi[a]);
+    }
     out.weights = wt;
     out.partner = facet;
     // Relative motion since the last converged state.
@@ -311,12 +375,15 @@ void StaticContact::evaluate(const ContactInput& in) {
     out.energy = out.area * energy;
     active[p] = 1;
     out.normal = normal;
+    // A cell's pressure pushes along the slope of the facets it covers (mortar.hpp: the gradient
+    // of its energy); its tangent keeps n (x) n, the frozen-geometry part, as CalculiX's does.
+    out.push = cell ? cell->push : normal;
     StaticContactElement& e = slot[p];
     e.count = wt.count;
     e.nodes = wt.nodes;
     e.weights = wt.weights;
     e.area = out.area;
-    e.traction = normal * pressure + traction;
+    e.traction = out.push * pressure + traction;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) e.tangent[3 * i + j] = C[i][j];
   }
@@ -349,7 +416,7 @@ void StaticContact::commit() {
 Vec3 StaticContact::total_force() const {
   Vec3 f{};
   for (const StaticContactPoint& p : points_)
-    if (p.active) f = f + (p.normal * p.pressure + p.traction) * p.area;
+    if (p.active) f = f + (p.push * p.pressure + p.traction) * p.area;
   return f;
 }
 

@@ -63,6 +63,14 @@ DECKS = {
     # Hueeber's 2D-in-3D Hertz-like benchmark, face-to-face, 17524 nodes.
     "hueeber1": (REQUIRED, ""),
     "hueeber3": (REQUIRED, ""),
+    # The same two blocks loaded on the other one, the surfaces' roles swapped (Sslav2 on Smast2;
+    # 70 slave facets on 60). U differs by 3.9e-4 (hueeber2) and 2.3e-4 (hueeber4) of the largest
+    # displacement, most at the contact's free end (x = 0). The difference stays with a ten times
+    # stiffer penalty in both codes (K = 1e16: 3.8e-4) and with 3 x 3 integration cells per
+    # facet (3.9e-4), and with node-to-surface in both the codes agree to 7e-7 (issue 27): it lies
+    # in how the two face-to-face formulations hold the slave's border; not found yet.
+    "hueeber2": (KNOWN, "face-to-face at the slave's free end: 3.9e-4, not the penalty"),
+    "hueeber4": (KNOWN, "face-to-face at the slave's free end: 2.3e-4, not the penalty"),
     # Tied contact changed to linear in step 2.
     # Tied pair pulled apart in step 1, changed to LINEAR (it lets go) in step 2 (reference: ccx run).
     "changesurfbeh": (REQUIRED, ""),

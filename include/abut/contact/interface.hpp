@@ -334,6 +334,7 @@ class ContactInterface {
                     const ContactInput& in) const;
   double cell_gap(const Side& own, std::size_t p, const Side& target, const Partner& h,
                   const CellOverlap& o, const ContactInput& in) const;
+  static CoverFacets cover_facets(const Side& target, const ContactInput& in);
   // Whether integration point p meets the other surface cell by cell: its partner h faces it
   // within alpha_edge, or a facing facet within its cell's reach does (h replaced); then its
   // overlap o and mortar gap (h.gap). False: h acts at the point with its whole area. The

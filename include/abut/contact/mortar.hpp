@@ -65,6 +65,33 @@ struct CellOverlap {
 CellOverlap overlap_cell(const QuadCorners& own, const CellBounds& cell, const Vec3& normal,
                          std::span<const std::int32_t> ids, std::span<const QuadCorners> corners);
 
+// A facet turned further than about 84 degrees from a cell's normal is a wall to it, not cover.
+inline constexpr double kCoverMinCos = 0.1;
+
+// The facets of the other surface, as a cell's cover sees them.
+struct CoverFacets {
+  std::span<const std::array<std::int32_t, 4>> facets;
+  std::span<const std::uint8_t> active;  // empty: every facet is active
+  std::span<const std::int32_t> twin;  // a shell's facets (twin >= 0) are passed over; empty: none
+  std::span<const double> x, y, z;
+};
+
+// The cell `cell` of the facet with nodes `own` against the facets of the other surface that it
+// may cover: `partner` first, then `candidates` (the broad phase's), each once, never the own
+// facet or one sharing a node with it (self contact), and only those that face the cell
+// (m . n >= kCoverMinCos). `normal` (unit) points from the other surface towards the cell: minus
+// the cell's own normal. The cell and the facets are projected along it, so a facet turning
+// towards edge-on covers a vanishing area and none enters or leaves the cover with a jump: the
+// other surface, seen from the cell, is a height field over the cell's plane.
+CellOverlap cover_cell(const std::array<std::int32_t, 4>& own, const CellBounds& cell,
+                       const Vec3& normal, std::int32_t partner,
+                       std::span<const std::int32_t> candidates, const CoverFacets& other);
+
+// The mean gap over the covered part of a cell, along o.normal: the own side's centroid less the
+// other side's, both weighted by the integrals of the overlap (positive: open).
+double cell_mean_gap(const std::array<std::int32_t, 4>& own, const CellOverlap& o,
+                     const CoverFacets& other);
+
 // The area of a convex polygon clipped against a convex one (both counter-clockwise), for tests.
 double clipped_area(std::span<const std::array<double, 2>> subject,
                     std::span<const std::array<double, 2>> clip);

@@ -11,6 +11,13 @@
 //   tangential traction t: an elastic stick spring k_t on the relative motion since the last
 //   converged state, returned to |t| <= mu p (Coulomb),
 //   force on node a: f_a = w_a A (p n + t).
+// A surface-to-surface point stands for its cell (mortar.hpp; issue 27): unless tied or small
+// sliding, it acts over the part of its cell that lies over the facets it faces, with A that
+// area, n the cell's own normal (from the other surface), w_a the integrals of the overlap over
+// A (+ on its own facet's nodes, - on each covered facet's), g the mean gap over the covered
+// part, and the pressure along the covered facets' slope (push, the gradient of its energy);
+// uniform pressure then loads both surfaces' nodes exactly, on any two meshes (the contact patch
+// test).
 // Tangent (-df/du), with the partner point and normal frozen within an iteration as CalculiX
 // does for its face-to-face contact (CalculiX User's Manual 2.x, "Face-to-Face Penalty Contact",
 // eq. 193; the geometric terms of node-to-face contact, eqs. 118-122, are left out):
@@ -31,6 +38,7 @@
 #include "abut/contact/interface.hpp"
 #include "abut/contact/laws/normal.hpp"
 #include "abut/contact/laws/thermal.hpp"
+#include "abut/contact/mortar.hpp"
 #include "abut/contact/settings.hpp"
 #include "abut/contact/surface.hpp"
 #include "abut/contact/thermal_contact_element.hpp"
@@ -73,8 +81,8 @@ struct StaticContactSettings {
 // point's area A, its traction tau = p n + t and the 3 x 3 tangent C, so that
 //   force on node a   f_a = w_a A tau,      -d f_a / d u_b = A w_a w_b C.
 struct StaticContactElement {
-  std::array<std::int32_t, 8> nodes{};
-  std::array<double, 8> weights{};
+  std::array<std::int32_t, ContactWeights::kCapacity> nodes{};
+  std::array<double, ContactWeights::kCapacity> weights{};
   int count = 0;
   double area = 0.0;
   Vec3 traction;
@@ -91,7 +99,9 @@ struct StaticContactPoint {
   bool active = false;        // closed: carries a spring
   bool slipping = false;
   double area = 0.0;
-  Vec3 normal;            // partner's normal (the push direction)
+  Vec3 normal;            // the normal along which the gap is measured (the point's partner's;
+                          // a cell's own, from the other surface)
+  Vec3 push;              // direction of the normal traction: n, or a cell's push (mortar.hpp)
   double gap = 0.0;       // negative = penetration (after the initial shifts, see settings)
   double pressure = 0.0;  // normal traction, positive in compression
   Vec3 traction;          // tangential traction on the point
@@ -161,6 +171,7 @@ class StaticContact {
   // Points: own facet and Gauss point (S2S) or node (N2S).
   std::vector<std::int32_t> point_facet_, point_node_;
   std::vector<double> point_xi_, point_eta_, point_weight_;
+  std::vector<CellBounds> point_cell_;  // S2S: the cell each point stands for (mortar.hpp)
   std::vector<std::int32_t> node_facet_start_, node_facets_;  // N2S: facets around each node
   std::vector<double> x0_, y0_, z0_;                          // reference coordinates
   std::vector<double> xc_, yc_, zc_;                          // at the last commit

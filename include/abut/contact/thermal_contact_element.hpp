@@ -6,13 +6,17 @@
 #include <array>
 #include <cstdint>
 
+#include "abut/contact/mortar.hpp"
+
 namespace abut {
 
 // The nodes of a contact element with their weights, repeated nodes merged (a triangle repeats
-// its third node; a node-to-surface point is one node).
+// its third node; a node-to-surface point is one node). At most the 4 nodes of the point's own
+// facet and 4 of each facet of the other surface its cell covers (mortar.hpp).
 struct ContactWeights {
-  std::array<std::int32_t, 8> nodes{};
-  std::array<double, 8> weights{};
+  static constexpr int kCapacity = 4 + 4 * kMaxOverlaps;
+  std::array<std::int32_t, kCapacity> nodes{};
+  std::array<double, kCapacity> weights{};
   int count = 0;
   void add(std::int32_t node, double weight) {
     for (int k = 0; k < count; ++k)

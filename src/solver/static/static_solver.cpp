@@ -253,7 +253,7 @@ struct StaticSolver::Impl {
                          elements.stiffness(static_cast<std::size_t>(e)),
                          &element_values[static_cast<std::size_t>(assembly.value_start(e))]);
       std::size_t e = elements.count();
-      std::array<double, 576> k{};
+      std::vector<double> k(9 * ContactWeights::kCapacity * ContactWeights::kCapacity);
       for (const StaticContact& c : contacts)
         for (const StaticContactElement& ce : c.elements()) {
           contact_matrix(ce, k.data());
