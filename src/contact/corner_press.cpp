@@ -51,7 +51,7 @@ void ContactInterface::press_corner_walls(Pass& pass, std::size_t p, const Point
     press.normal_force = fn;
     press.area = area;
     press.energy = response.energy * area;
-    press.damping_work = (fn - elastic) * (-v_n) * in.dt;
+    press.damping = wall.normal * (fn - elastic);
     press.penetration = penetration;
     press.omega2 = m > 0.0 ? k_n / m : 0.0;
   }
@@ -76,7 +76,8 @@ double ContactInterface::scatter_corner(const Pass& pass, std::size_t p, Contact
     if (pass.target == 0) stats_.force -= force;
     stats_.normal_force += pass.weight * press.normal_force;
     stats_.elastic_energy += pass.weight * press.energy;
-    stats_.damping_energy += pass.weight * press.damping_work;
+    add_damping(node, press.damping * pass.weight);
+    for (int a = 0; a < 4; ++a) add_damping(nodes[a], press.damping * (-pass.weight * shape[a]));
     stats_.max_penetration = std::max(stats_.max_penetration, press.penetration);
     // Nodal pressure: area-weighted over each node's tributary area, as scatter() does (the
     // pressure fn / area times the area).

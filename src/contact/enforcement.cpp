@@ -304,7 +304,9 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     pass.pressure[p] = fn / area;
     pass.slip_speed[p] = norm(v_rel - r.normal * dot(v_rel, r.normal));
     pass.energy[p] = 0.5 * r.stiffness * dot(stretch, stretch);
-    pass.damping_work[p] = c * dot(v_rel, v_rel) * in.dt;
+    pass.dfx[p] = -c * v_rel.x;
+    pass.dfy[p] = -c * v_rel.y;
+    pass.dfz[p] = -c * v_rel.z;
     pass.slip_work[p] = 0.0;
     pass.penetration[p] = std::max(-dot(stretch, r.normal), 0.0);
     conduct(pass, p, facet, pass.tie_xi[p], pass.tie_eta[p], std::max(fn, 0.0) / area, 0.0, area);
@@ -433,7 +435,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   const double k_t = s.tangential_penalty ? *s.tangential_penalty * area : r.stiffness;
   const Vec3 previous{pass.htx[p], pass.hty[p], pass.htz[p]};
   Vec3 ft, spring;  // the tangential force, and its elastic part (the history)
-  double slip = 0.0, slip_work = 0.0, stick_damping_work = 0.0;
+  double slip = 0.0, slip_work = 0.0;
   if (adhesive) {  // viscous resistance replaces friction in the adhesive zone
     ft = s.adhesion->viscous_force(v_t, area);
     slip_work = -dot(ft, v_t) * in.dt;
@@ -447,7 +449,6 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
       ft = t.force;
       spring = t.spring;
       slip_work = t.slip_work;
-      stick_damping_work = t.damping_work;
     }
     if (s.friction_filter.kind != FrictionFilter::Kind::None) {  // Radioss Ifiltr
       const double a = s.friction_filter.alpha(in.dt);
@@ -471,7 +472,13 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   pass.pressure[p] = fn / area;
   pass.slip_speed[p] = slip_speed;
   pass.energy[p] = response.energy * area + 0.5 * dot(spring, spring) / k_t;
-  pass.damping_work[p] = (fn - elastic) * (-v_n) * in.dt + stick_damping_work;
+  // The damping part of the force: along the normal, and the stick spring's (an adhesive zone's
+  // viscous resistance counts as friction).
+  Vec3 damping = normal * (fn - elastic);
+  if (!adhesive) damping += ft - spring;
+  pass.dfx[p] = damping.x;
+  pass.dfy[p] = damping.y;
+  pass.dfz[p] = damping.z;
   pass.slip_work[p] = slip_work;
   pass.penetration[p] = penetration;
   conduct(pass, p, h.facet, h.xi, h.eta, std::max(fn, 0.0) / area, -penetration, area);

@@ -245,13 +245,28 @@ void ContactInterface::archive(StateArchive& a) {
   for (const std::uint64_t points : initial_points_)
     a.expect(points, "the contact points of a side as built");
   a.expect(settings_.thermal.any(), "whether a contact exchanges heat");
-  a.values(sides_, passes_, mass_, bx_, by_, bz_, wear_, pressure_, margin_, initial_stable_step_,
-           builds_, rebuild_pending_, gap_pairs_, edges_, stats_);
+  a.values(sides_, passes_, mass_, bx_, by_, bz_, wear_, pressure_, damping_fx_, damping_fy_,
+           damping_fz_, margin_, initial_stable_step_, builds_, rebuild_pending_, gap_pairs_,
+           edges_, stats_);
   if (!a.saving()) {
     awake_current_ = false;
     update_near_bound();
     update_near_facets();
   }
+}
+
+double ContactInterface::spring_step(double omega2) const {
+  if (!(omega2 > 0.0)) return kInfinity;
+  const double xi = settings_.damping;
+  return 2.0 / std::sqrt(omega2) * (std::sqrt(1.0 + xi * xi) - xi);
+}
+
+void ContactInterface::book_damping(const ContactInput& in) {
+  if (in.vx.empty()) return;
+  double power = 0.0;  // of the damping forces on the nodes (< 0: they dissipate)
+  for (const auto i : surface_nodes_)
+    power += damping_fx_[i] * in.vx[i] + damping_fy_[i] * in.vy[i] + damping_fz_[i] * in.vz[i];
+  stats_.damping_energy -= 0.5 * power * in.dt;
 }
 
 std::vector<PairStiffness> ContactInterface::pair_stiffness() const {
@@ -312,12 +327,15 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   stats_.active_points = 0;
   stats_.heat_flow = 0.0;
   stats_.stable_step = kInfinity;
+  // Last step's damping forces did the other half of their work over the step just taken.
+  book_damping(in);
   // Far from every facet a point cannot touch before the next broad-phase build sees it, as long
   // as no node crosses a quarter of the search margin in one step; at rest (no speed to judge
   // by) the bound before touching holds as before contact.
   double speed2 = 0.0;
   for (auto i : surface_nodes_) {
     pressure_[i] = 0.0;
+    damping_fx_[i] = damping_fy_[i] = damping_fz_[i] = 0.0;
     if (!in.vx.empty())
       speed2 = std::max(speed2, in.vx[i] * in.vx[i] + in.vy[i] * in.vy[i] + in.vz[i] * in.vz[i]);
   }
@@ -351,7 +369,7 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   // is below half that bound: the bound does not limit the caller then (its own safety factor on
   // the step taken into account), and sparing the points' look at their candidates costs at most
   // one step at the bound once the caller's other limits rise above it.
-  const double near_spring_step = near_omega2_ > 0.0 ? 2.0 / std::sqrt(near_omega2_) : kInfinity;
+  const double near_spring_step = spring_step(near_omega2_);
   const bool per_point = speed2 > 0.0 && !edges_ && in.dt >= 0.5 * near_spring_step;
   const double speed = std::sqrt(speed2);
   double near_step = kInfinity;
@@ -388,8 +406,7 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
     stats_.damping_energy += e.damping_work;
     stats_.max_penetration = std::max(stats_.max_penetration, e.max_penetration);
     stats_.active_points += e.active_pairs;
-    if (e.omega2 > 0.0)
-      stats_.stable_step = std::min(stats_.stable_step, 2.0 / std::sqrt(e.omega2));
+    if (e.omega2 > 0.0) stats_.stable_step = std::min(stats_.stable_step, spring_step(e.omega2));
   }
 }
 

@@ -77,6 +77,9 @@ ContactInterface::ContactInterface(ContactSettings settings, ContactSurface surf
         "group is one-way");
   wear_.assign(mass_.size(), 0.0);
   pressure_.assign(mass_.size(), 0.0);
+  damping_fx_.assign(mass_.size(), 0.0);
+  damping_fy_.assign(mass_.size(), 0.0);
+  damping_fz_.assign(mass_.size(), 0.0);
   if (settings_.gaps.skip_close) {
     x0_.assign(initial.x.begin(), initial.x.begin() + static_cast<std::ptrdiff_t>(mass_.size()));
     y0_.assign(initial.y.begin(), initial.y.begin() + static_cast<std::ptrdiff_t>(mass_.size()));
@@ -444,13 +447,15 @@ void ContactInterface::size_pass(Pass& pass, std::size_t n) const {
                   &pass.fx,
                   &pass.fy,
                   &pass.fz,
+                  &pass.dfx,
+                  &pass.dfy,
+                  &pass.dfz,
                   &pass.area,
                   &pass.pressure,
                   &pass.slip_speed,
                   &pass.normal_force,
                   &pass.tangential_force,
                   &pass.energy,
-                  &pass.damping_work,
                   &pass.slip_work,
                   &pass.penetration,
                   &pass.omega2,
@@ -561,7 +566,7 @@ void ContactInterface::initial_state(const ContactInput& in) {
       pass.approach_omega2[p] = w;
     }
   }
-  if (omega2_max > 0.0) initial_stable_step_ = 2.0 / std::sqrt(omega2_max);
+  initial_stable_step_ = spring_step(omega2_max);
   update_near_bound();  // the build above came before the bounds
 }
 

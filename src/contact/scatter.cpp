@@ -41,7 +41,11 @@ void ContactInterface::scatter(const ContactInput& in, ContactForces& out, bool 
       std::array<double, 4> spread_own = n_own;
       if (covered > 0)
         for (int a = 0; a < 4; ++a) spread_own[a] = pass.mortar_own[4 * p + a];
-      for (int a = 0; a < 4; ++a) out.add(own_nodes[a], force * spread_own[a]);
+      const Vec3 damping = Vec3{pass.dfx[p], pass.dfy[p], pass.dfz[p]} * w;
+      for (int a = 0; a < 4; ++a) {
+        out.add(own_nodes[a], force * spread_own[a]);
+        add_damping(own_nodes[a], damping * spread_own[a]);
+      }
       // The reaction on the facets of the other surface: (facet, weights) per covered facet.
       auto each_target = [&](auto&& visit) {
         if (covered == 0) {
@@ -54,14 +58,16 @@ void ContactInterface::scatter(const ContactInput& in, ContactForces& out, bool 
         }
       };
       each_target([&](const std::array<std::int32_t, 4>& nodes, const double* weights) {
-        for (int a = 0; a < 4; ++a) out.add(nodes[a], force * -weights[a]);
+        for (int a = 0; a < 4; ++a) {
+          out.add(nodes[a], force * -weights[a]);
+          add_damping(nodes[a], damping * -weights[a]);
+        }
       });
       if (pass.own == 0) stats_.force += force;
       if (pass.target == 0) stats_.force -= force;
       stats_.normal_force += w * pass.normal_force[p];
       stats_.tangential_force += w * pass.tangential_force[p];
       stats_.elastic_energy += w * pass.energy[p];
-      stats_.damping_energy += w * pass.damping_work[p];
       stats_.friction_energy += w * pass.slip_work[p];
       stats_.max_penetration = std::max(stats_.max_penetration, pass.penetration[p]);
       if (gap_pairs_ == 0 || pass.pair_gap[p] < stats_.gap_min) stats_.gap_min = pass.pair_gap[p];
@@ -96,9 +102,10 @@ void ContactInterface::scatter(const ContactInput& in, ContactForces& out, bool 
       }
     }
   }
-  if (omega2_max > 0.0) stats_.stable_step = 2.0 / std::sqrt(omega2_max);
+  book_damping(in);  // this step's damping forces, the first half of their work
+  if (omega2_max > 0.0) stats_.stable_step = spring_step(omega2_max);
   if (approach_omega2 > 0.0)
-    stats_.approach_step = std::min(stats_.approach_step, 2.0 / std::sqrt(approach_omega2));
+    stats_.approach_step = std::min(stats_.approach_step, spring_step(approach_omega2));
 }
 
 }  // namespace abut

@@ -17,7 +17,9 @@ namespace {
 constexpr char kMagic[8] = {'A', 'B', 'U', 'T', 'R', 'S', 'T', '\n'};
 // 2: the simulation's state holds the conserved kinetic energy of the balance (issue 28).
 // 3: the contact broad phase's grid has a cell size per axis (issue 28).
-constexpr std::uint32_t kVersion = 3;
+// 4: contacts keep the damping part of each point's force and the nodal damping forces of the
+//    last step, whose work they book over the step after (issue 27).
+constexpr std::uint32_t kVersion = 4;
 
 // FNV-1a, 64 bits (Fowler, Noll, Vo): a checksum, not a cryptographic hash.
 class Fnv {

@@ -57,7 +57,12 @@ struct ContactStats {
   double normal_force = 0.0;      // sum of the normal forces of the active points
   double tangential_force = 0.0;  // sum of the magnitudes of their tangential forces
   double elastic_energy = 0.0;    // energy stored in the penalty springs now
-  double damping_energy = 0.0;    // work of the contact damping so far
+  // Work of the contact damping so far: over each step, the mean of the damping forces at its
+  // two ends times the nodes' motion, 1/2 (F_d^n + F_d^(n+1)) . (x^(n+1) - x^n), the work the
+  // kinetic energy's product form 1/2 m v^(n-1/2) . v^(n+1/2) sees (booked one step late, when
+  // the motion over the step is known). F_d^n . v^(n-1/2) dt alone overstates it by
+  // F_d^n . a^n dt^2 / 2, a fifth or more of it at a step set by the contact springs.
+  double damping_energy = 0.0;
   double friction_energy = 0.0;   // energy dissipated by friction so far
   // Spring energy that vanished without doing work so far: adhesive bonds that broke, ties that
   // failed, the springs of points whose facet eroded or left or that lost their partner while
@@ -125,8 +130,9 @@ class ContactInterface {
   void erode(std::span<const std::uint8_t> eroded);
 
   const ContactStats& stats() const { return stats_; }
-  // Stable step bound of every spring that may act, 2 / sqrt(max over points of 2 k / m_min), as
-  // if every point touched (stats().approach_step takes it over the points that may touch only).
+  // Stable step bound of every spring that may act, spring_step of the largest 2 k / m_min over
+  // the points, as if every point touched (stats().approach_step takes it over the points that may
+  // touch only).
   double initial_stable_step() const { return initial_stable_step_; }
   // Accumulated wear depth and current contact pressure per node (0 away from the surfaces).
   std::span<const double> wear() const { return wear_; }
@@ -217,7 +223,8 @@ class ContactInterface {
     std::int32_t facet = -1;  // -1: none
     double xi = 0.0, eta = 0.0;
     Vec3 force;  // on the node (before the pass's weight)
-    double normal_force = 0.0, area = 0.0, energy = 0.0, damping_work = 0.0, penetration = 0.0;
+    Vec3 damping;  // the damping part of `force`
+    double normal_force = 0.0, area = 0.0, energy = 0.0, penetration = 0.0;
     double omega2 = 0.0;  // k / m of its spring
   };
 
@@ -252,9 +259,10 @@ class ContactInterface {
     std::vector<std::uint8_t> hit;
     std::vector<std::int32_t> hit_facet;
     std::vector<double> hit_xi, hit_eta;
-    std::vector<double> fx, fy, fz;  // force on the point (before `weight`)
+    std::vector<double> fx, fy, fz;     // force on the point (before `weight`)
+    std::vector<double> dfx, dfy, dfz;  // the damping part of it
     std::vector<double> area, pressure, slip_speed, normal_force, tangential_force;
-    std::vector<double> energy, damping_work, slip_work, penetration, omega2, pair_gap;
+    std::vector<double> energy, slip_work, penetration, omega2, pair_gap;
     std::vector<double> released;  // spring energy the point let go of in this step
     // S2S (mortar.hpp): how the point's force spreads, as fractions of it: over its own facet's
     // nodes (4 per point) and over the nodes of each facet of the other surface its cell covers
@@ -277,9 +285,9 @@ class ContactInterface {
     void archive(StateArchive& a) {
       a.values(own, target, weight, grid, candidates, state, adhered, approach_omega2, offset,
                shift, htx, hty, htz, slip, tie_facet, tie_xi, tie_eta, hit, hit_facet, hit_xi,
-               hit_eta, fx, fy, fz, area, pressure, slip_speed, normal_force, tangential_force,
-               energy, damping_work, slip_work, penetration, omega2, pair_gap, released, mortar_own,
-               mortar_target, mortar_facet, mortar_count, heat_facet, heat_xi, heat_eta,
+               hit_eta, fx, fy, fz, dfx, dfy, dfz, area, pressure, slip_speed, normal_force,
+               tangential_force, energy, slip_work, penetration, omega2, pair_gap, released,
+               mortar_own, mortar_target, mortar_facet, mortar_count, heat_facet, heat_xi, heat_eta,
                heat_conductance);
     }
   };
@@ -386,6 +394,20 @@ class ContactInterface {
   // `near_bound`: the bound before touching holds for every point with a candidate (at rest, with
   // edge-to-edge contact); otherwise only for the points that touch (apply takes the others).
   void scatter(const ContactInput& in, ContactForces& out, bool near_bound);
+  // Half the work of the nodal damping forces over the step just taken (in.v in.dt), into
+  // ContactStats::damping_energy: last step's at the start of apply, this step's after scatter.
+  void book_damping(const ContactInput& in);
+  // The stable step of central differences for springs of squared frequency omega2 (infinite
+  // for 0), damped at the contact's fraction of critical damping xi with the velocity of the
+  // half step before: (2 / omega)(sqrt(1 + xi^2) - xi) (Belytschko, Liu & Moran, Nonlinear
+  // Finite Elements for Continua and Structures, 2000, section 6.2: stability with damping).
+  // Undamped, 2 / omega; xi = 0.1 (the default) takes 9.5% off it.
+  double spring_step(double omega2) const;
+  void add_damping(std::int32_t node, const Vec3& force) {
+    damping_fx_[node] += force.x;
+    damping_fy_[node] += force.y;
+    damping_fz_[node] += force.z;
+  }
   // Thermal contact (heat_exchange.cpp): the conductance of point p with its partner, and the
   // heat of every pass to the nodes, serially in point order.
   void conduct(Pass& pass, std::size_t p, std::int32_t facet, double xi, double eta,
@@ -401,6 +423,8 @@ class ContactInterface {
   std::vector<std::int32_t> surface_nodes_;  // union of both sides' nodes, sorted
   std::vector<double> bx_, by_, bz_;         // their positions at the last broad-phase build
   std::vector<double> wear_, pressure_;
+  // The damping forces of the last step on each node (scatter; ContactStats::damping_energy).
+  std::vector<double> damping_fx_, damping_fy_, damping_fz_;
   std::vector<std::int64_t> part_ids_;  // local part index -> user part id
   std::vector<double> part_scale_;      // pair scale, part_ids_.size()^2
   double margin_ = 0.0;
