@@ -58,15 +58,18 @@ sanitize-build: setup
 
 # The whole test suite under the sanitizers (about 20 minutes on 2 cores).
 sanitize: sanitize-build
+	sh tools/clean_omp_registrations.sh
 	cd $(SANITIZE_DIR) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS) --timeout 1800
 
 # CI: the test suite under the sanitizers, less the long verification runs (SANITIZE_SKIP).
 ci-sanitize: sanitize-build
+	sh tools/clean_omp_registrations.sh
 	cd $(SANITIZE_DIR) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS) --timeout 900 -E '$(SANITIZE_SKIP)'
 
 # CI: FUZZ_SECONDS of libFuzzer on each deck reader, seeded from the repository's decks; a fixed
 # FUZZ_SEED, so that a run is repeated where the machine is as fast (0: a new one each run).
 ci-fuzz: sanitize-build
+	sh tools/clean_omp_registrations.sh
 	$(SANITIZE_ENV) sh fuzz/ci_fuzz.sh $(SANITIZE_DIR) $(FUZZ_SECONDS) $(FUZZ_SEED)
 
 clean:
