@@ -9,13 +9,16 @@
 //  - normal stiffness: a block of weight F = M g resting on the plane sinks d = F / (pfac A)
 //    (the linear penalty law, seed 000: pressure = pfac d);
 //  - Tresca friction (Metafor TrescaContactMaterial, seed 002): the slip limit tau A stops a block
-//    sliding at v0 after v0^2 M / (2 tau A), as in tests/verification/test_friction_laws.cpp.
+//    sliding at v0 after v0^2 M / (2 tau A), as in tests/verification/test_friction_laws.cpp;
+//  - adhesion (Radioss IVIS2 = -1, seed 004, comment 12): a block pressed on and pulled off
+//    pulls at most SigMaxAdh A, at the adhesive zone's border, as in test_contact_ties.cpp.
 // Before the cell-wise integration the plane's points, which straddle the block's border, saw
 // 79-110% of the footprint (symmetric contact: d and the distance off by 5-10%).
 // Model: the block and plane of test_friction_laws.cpp (steel block 0.1 x 0.1 x 0.02 m, 2 x 2 x 1
 // elements, M = 1.56 kg, A = 0.01 m^2, pfac = 6.2e9 Pa/m), the block's rotations held.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <random>
@@ -148,6 +151,70 @@ TEST(NonMatchingContact, TrescaStoppingDistanceIsExactOnAnyMeshAlignment) {
     EXPECT_NEAR(distance, expected, 0.01 * expected);
     EXPECT_LT(std::abs(block.velocity.x), 1e-3 * v0);
   }
+}
+
+// The block of deck() without gravity, moved by *BC_MOTION as in test_contact_ties.cpp: pressed
+// 10 um into the plane (0.01 m/s for 1 ms), then pulled off at 0.01 m/s, so that its face crosses
+// the adhesive zone (Gap / 2 = 0.1 mm) in 10 ms; no contact damping (it would add to the pull),
+// dt_max = 1e-5 s (the opening grows by 1e-3 of the zone per step).
+std::string adhesion_deck(bool one_way) {
+  return R"(
+*UNIT_SYSTEM
+SI
+*TIME
+0.014, 0.9, 0.0, 1.0e-5
+*COMPONENT_BOX
+1, 1, 2, 2, 1
+0.0, -0.05, 0.0, 0.1, 0.05, 0.02
+*COMPONENT_BOX
+2, 2, 13, 7, 1
+-0.05, -0.1, -0.02, 0.45, 0.1, 0.0
+*MAT_RIGID
+1, 7800.0
+*MAT_RIGID
+2, 7800.0
+*PART
+"block"
+1, 1
+"plane"
+2, 2
+*BC_MOTION
+P, 2, XYZ, XYZ
+*CURVE
+3
+0.0, -0.01
+0.001, -0.01
+0.001000001, 0.01
+1.0, 0.01
+*BC_MOTION
+P, 1, XY, XYZ
+V, Z, 3
+*CONTACT
+1
+P, 1, P, 2, , )" +
+         num(kPfac) + "\n0, 0.0\n, , , , " + (one_way ? "1" : "0") +
+         "\n*CONTACT_ADHESION\n1, 2.0e-4, 1.0e4\n*END\n";
+}
+
+// SigMaxAdh = 1e4 Pa: the largest pull is SigMaxAdh A = 100 N whatever the meshes.
+TEST(NonMatchingContact, AdhesivePullOffIsSigMaxTimesTrueArea) {
+  std::mt19937 random(2706);
+  const double expected = 1.0e4 * kArea;
+  for (const bool one_way : {false, true})
+    for (int trial = 0; trial < 2; ++trial) {
+      const Placement at = random_placement(random);
+      const Model model = placed(adhesion_deck(one_way), at.angle, at.dx, at.dy);
+      Simulation sim(model);
+      double largest_pull = 0.0;
+      verification::run_to(sim, sim.end_time(), [&](const Simulation& s) {
+        largest_pull = std::max(largest_pull, -s.contact_reports()[0].stats.force.z);
+      });
+      std::cout << (one_way ? "one-way" : "symmetric") << ", turned " << at.angle << " rad, moved "
+                << at.dx << ", " << at.dy << ": largest pull " << largest_pull
+                << " N, SigMaxAdh A = " << expected << " N, error "
+                << 100.0 * (largest_pull - expected) / expected << "%\n";
+      EXPECT_NEAR(largest_pull, expected, 0.01 * expected);
+    }
 }
 
 }  // namespace
