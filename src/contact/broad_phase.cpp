@@ -98,16 +98,15 @@ bool BucketGrid::cell_of(double x, double y, double z, std::size_t& cell) const 
   return true;
 }
 
-void BucketGrid::query(std::span<const double> x, std::span<const double> y,
-                       std::span<const double> z, CandidateList& out,
-                       const std::function<bool(std::size_t, std::int32_t)>& keep) const {
-  const std::size_t n = x.size();
+namespace {
+
+// Fills the rows of `out` for n queries in two passes, each query writing only its own row:
+// `visit(p, emit)` calls emit(b) for every box b of query p, in the same order both times;
+// pass 1 counts, a prefix sum makes the offsets, pass 2 stores, and `finish(p, first, last)` may
+// reorder the stored row.
+template <class Visit, class Finish>
+void fill_rows(std::size_t n, CandidateList& out, const Visit& visit, const Finish& finish) {
   out.offsets.assign(n + 1, 0);
-  if (boxes_.empty()) {
-    out.facets.clear();
-    return;
-  }
-  // Pass 1: count per point; prefix sum; pass 2: fill. Each point writes only its own row.
   for (int pass = 0; pass < 2; ++pass) {
     if (pass == 1) {
       for (std::size_t p = 0; p < n; ++p) out.offsets[p + 1] += out.offsets[p];
@@ -115,82 +114,87 @@ void BucketGrid::query(std::span<const double> x, std::span<const double> y,
     }
 #pragma omp parallel for schedule(static) if (n >= static_cast <std::size_t>(kParallelMinimum))
     for (std::size_t p = 0; p < n; ++p) {
-      std::size_t cell = 0;
-      if (!cell_of(x[p], y[p], z[p], cell)) continue;
-      std::size_t count = 0;
-      std::size_t at = pass == 1 ? out.offsets[p] : 0;
-      for (std::size_t k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
-        const std::int32_t b = cell_boxes_[k];
-        if (!boxes_[b].contains(x[p], y[p], z[p])) continue;
-        if (keep && !keep(p, b)) continue;
-        if (pass == 0)
-          ++count;
-        else
-          out.facets[at++] = b;
+      if (pass == 0) {
+        std::size_t count = 0;
+        visit(p, [&count](std::int32_t) { ++count; });
+        out.offsets[p + 1] = count;
+      } else {
+        const std::size_t first = out.offsets[p];
+        std::size_t at = first;
+        visit(p, [&](std::int32_t b) { out.facets[at++] = b; });
+        finish(first, at);
       }
-      if (pass == 0) out.offsets[p + 1] = count;
     }
   }
 }
 
+}  // namespace
+
+void BucketGrid::query(std::span<const double> x, std::span<const double> y,
+                       std::span<const double> z, CandidateList& out,
+                       const std::function<bool(std::size_t, std::int32_t)>& keep) const {
+  if (boxes_.empty()) {
+    out.offsets.assign(x.size() + 1, 0);
+    out.facets.clear();
+    return;
+  }
+  fill_rows(
+      x.size(), out,
+      [&](std::size_t p, const auto& emit) {
+        std::size_t cell = 0;
+        if (!cell_of(x[p], y[p], z[p], cell)) return;
+        for (std::size_t k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
+          const std::int32_t b = cell_boxes_[k];
+          if (boxes_[b].contains(x[p], y[p], z[p]) && (!keep || keep(p, b))) emit(b);
+        }
+      },
+      [](std::size_t, std::size_t) {});  // a cell's boxes are in facet order already
+}
+
 void BucketGrid::query(std::span<const Box> regions, CandidateList& out,
                        const std::function<bool(std::size_t, std::int32_t)>& keep) const {
-  const std::size_t n = regions.size();
-  out.offsets.assign(n + 1, 0);
   if (boxes_.empty()) {
+    out.offsets.assign(regions.size() + 1, 0);
     out.facets.clear();
     return;
   }
   // As the point query. A pair is taken in one cell only, the first the two boxes share along
   // each axis; the rows are then sorted into facet order.
-  for (int pass = 0; pass < 2; ++pass) {
-    if (pass == 1) {
-      for (std::size_t p = 0; p < n; ++p) out.offsets[p + 1] += out.offsets[p];
-      out.facets.resize(out.offsets[n]);
-    }
-#pragma omp parallel for schedule(static) if (n >= static_cast <std::size_t>(kParallelMinimum))
-    for (std::size_t p = 0; p < n; ++p) {
-      const Box& region = regions[p];
-      bool outside = false;
-      std::int64_t r[3][2];
-      for (int k = 0; k < 3; ++k) {
-        // Beyond the grid (or NaN): no box overlaps it.
-        outside = outside || !(region.hi[k] >= origin_[k]) ||
-                  !((region.lo[k] - origin_[k]) / cell_size_[k] < static_cast<double>(dims_[k]));
-        r[k][0] = index_along(region.lo[k], k);
-        r[k][1] = index_along(region.hi[k], k);
-      }
-      if (outside) continue;
-      std::size_t count = 0;
-      const std::size_t first = pass == 1 ? out.offsets[p] : 0;
-      std::size_t at = first;
-      for (std::int64_t cz = r[2][0]; cz <= r[2][1]; ++cz)
-        for (std::int64_t cy = r[1][0]; cy <= r[1][1]; ++cy)
-          for (std::int64_t cx = r[0][0]; cx <= r[0][1]; ++cx) {
-            const std::int64_t here[3] = {cx, cy, cz};
-            const auto c = static_cast<std::size_t>((cz * dims_[1] + cy) * dims_[0] + cx);
-            for (std::size_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
-              const std::int32_t b = cell_boxes_[k];
-              const Box& box = boxes_[b];
-              if (!box.overlaps(region)) continue;
-              bool first_shared = true;
-              for (int a = 0; a < 3; ++a)
-                first_shared =
-                    first_shared && index_along(std::max(box.lo[a], region.lo[a]), a) == here[a];
-              if (!first_shared) continue;
-              if (keep && !keep(p, b)) continue;
-              if (pass == 0)
-                ++count;
-              else
-                out.facets[at++] = b;
+  fill_rows(
+      regions.size(), out,
+      [&](std::size_t p, const auto& emit) {
+        const Box& region = regions[p];
+        bool outside = false;
+        std::int64_t r[3][2];
+        for (int k = 0; k < 3; ++k) {
+          // Beyond the grid (or NaN): no box overlaps it.
+          outside = outside || !(region.hi[k] >= origin_[k]) ||
+                    !((region.lo[k] - origin_[k]) / cell_size_[k] < static_cast<double>(dims_[k]));
+          r[k][0] = index_along(region.lo[k], k);
+          r[k][1] = index_along(region.hi[k], k);
+        }
+        if (outside) return;
+        for (std::int64_t cz = r[2][0]; cz <= r[2][1]; ++cz)
+          for (std::int64_t cy = r[1][0]; cy <= r[1][1]; ++cy)
+            for (std::int64_t cx = r[0][0]; cx <= r[0][1]; ++cx) {
+              const std::int64_t here[3] = {cx, cy, cz};
+              const auto c = static_cast<std::size_t>((cz * dims_[1] + cy) * dims_[0] + cx);
+              for (std::size_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
+                const std::int32_t b = cell_boxes_[k];
+                const Box& box = boxes_[b];
+                if (!box.overlaps(region)) continue;
+                bool first_shared = true;
+                for (int a = 0; a < 3; ++a)
+                  first_shared =
+                      first_shared && index_along(std::max(box.lo[a], region.lo[a]), a) == here[a];
+                if (first_shared && (!keep || keep(p, b))) emit(b);
+              }
             }
-          }
-      if (pass == 0) out.offsets[p + 1] = count;
-      if (pass == 1)
+      },
+      [&out](std::size_t first, std::size_t last) {
         std::sort(out.facets.begin() + static_cast<std::ptrdiff_t>(first),
-                  out.facets.begin() + static_cast<std::ptrdiff_t>(at));
-    }
-  }
+                  out.facets.begin() + static_cast<std::ptrdiff_t>(last));
+      });
 }
 
 }  // namespace abut

@@ -39,15 +39,9 @@ std::string num(double v) {
   return s.str();
 }
 
-// The block (part 1) on the plane (part 2), gravity -g z, initial speed v0 along x; `contact3`
-// and `contact4`: the *CONTACT lines 3 and 4 (damping, one_way), `friction`: *CONTACT_FRICTION.
-std::string deck(double end_time, double g, double v0, bool one_way, const std::string& friction) {
-  return R"(
-*UNIT_SYSTEM
-SI
-*TIME
-)" + num(end_time) +
-         R"(
+// The rigid block (part 1) on the rigid plane (part 2); `time`: the *TIME line.
+std::string block_and_plane(const std::string& time) {
+  return "\n*UNIT_SYSTEM\nSI\n*TIME\n" + time + R"(
 *COMPONENT_BOX
 1, 1, 2, 2, 1
 0.0, -0.05, 0.0, 0.1, 0.05, 0.02
@@ -63,7 +57,13 @@ SI
 1, 1
 "plane"
 2, 2
-*INITIAL_VELOCITY
+)";
+}
+
+// The block (part 1) on the plane (part 2), gravity -g z, initial speed v0 along x; `contact3`
+// and `contact4`: the *CONTACT lines 3 and 4 (damping, one_way), `friction`: *CONTACT_FRICTION.
+std::string deck(double end_time, double g, double v0, bool one_way, const std::string& friction) {
+  return block_and_plane(num(end_time)) + R"(*INITIAL_VELOCITY
 P, 1, )" +
          num(v0) +
          R"(, 0.0, 0.0
@@ -158,27 +158,7 @@ TEST(NonMatchingContact, TrescaStoppingDistanceIsExactOnAnyMeshAlignment) {
 // the adhesive zone (Gap / 2 = 0.1 mm) in 10 ms; no contact damping (it would add to the pull),
 // dt_max = 1e-5 s (the opening grows by 1e-3 of the zone per step).
 std::string adhesion_deck(bool one_way) {
-  return R"(
-*UNIT_SYSTEM
-SI
-*TIME
-0.014, 0.9, 0.0, 1.0e-5
-*COMPONENT_BOX
-1, 1, 2, 2, 1
-0.0, -0.05, 0.0, 0.1, 0.05, 0.02
-*COMPONENT_BOX
-2, 2, 13, 7, 1
--0.05, -0.1, -0.02, 0.45, 0.1, 0.0
-*MAT_RIGID
-1, 7800.0
-*MAT_RIGID
-2, 7800.0
-*PART
-"block"
-1, 1
-"plane"
-2, 2
-*BC_MOTION
+  return block_and_plane("0.014, 0.9, 0.0, 1.0e-5") + R"(*BC_MOTION
 P, 2, XYZ, XYZ
 *CURVE
 3

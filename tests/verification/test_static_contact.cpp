@@ -28,13 +28,8 @@ StaticControls tight() {
   return c;
 }
 
-// A lower block [0,1]^2 x [0,1] (part 1, n1 x n1 x 2 hexes) and an upper block [0,1]^2 x [1,2]
-// (part 2, n2 x n2 x 2), touching at z = 1; the bottom held in z, the planes x = 0 and y = 0 in x
-// and y (symmetry: no rigid motion, free Poisson expansion).
-Model two_blocks(int n1, int n2) {
-  Model m;
-  generate_box(m.mesh, {1, n1, n1, 2, {0, 0, 0}, {1, 1, 1}});
-  generate_box(m.mesh, {2, n2, n2, 2, {0, 0, 1}, {1, 1, 2}});
+// Parts 1 and 2 of one elastic material (steel-like, N and mm), fully integrated hexes.
+void add_elastic_parts(Model& m) {
   Material mat;
   mat.id = 1;
   mat.params = ElasticParams{7.8e-9, kE, kNu};
@@ -46,6 +41,16 @@ Model two_blocks(int n1, int n2) {
     p.solid_integration = Part::SolidIntegration::Full;
     m.parts.push_back(p);
   }
+}
+
+// A lower block [0,1]^2 x [0,1] (part 1, n1 x n1 x 2 hexes) and an upper block [0,1]^2 x [1,2]
+// (part 2, n2 x n2 x 2), touching at z = 1; the bottom held in z, the planes x = 0 and y = 0 in x
+// and y (symmetry: no rigid motion, free Poisson expansion).
+Model two_blocks(int n1, int n2) {
+  Model m;
+  generate_box(m.mesh, {1, n1, n1, 2, {0, 0, 0}, {1, 1, 1}});
+  generate_box(m.mesh, {2, n2, n2, 2, {0, 0, 1}, {1, 1, 2}});
+  add_elastic_parts(m);
   StaticStep step;
   const Nodes& n = m.mesh.nodes;
   for (std::size_t i = 0; i < n.size(); ++i) {
@@ -193,17 +198,7 @@ TEST(StaticContact, PatchTestOnATurnedAndOffsetBlockHoldsToRoundOff) {
         Model m;
         generate_box(m.mesh, {1, 5, 5, 1, {-1.0, -1.0, 0.0}, {2.0, 2.0, 1.0}});
         generate_box(m.mesh, {2, 4, 4, 2, {0.0, 0.0, 1.0}, {1.0, 1.0, 2.0}});
-        Material mat;
-        mat.id = 1;
-        mat.params = ElasticParams{7.8e-9, kE, kNu};
-        m.materials.push_back(mat);
-        for (int id = 1; id <= 2; ++id) {
-          Part part;
-          part.id = id;
-          part.material_id = 1;
-          part.solid_integration = Part::SolidIntegration::Full;
-          m.parts.push_back(part);
-        }
+        add_elastic_parts(m);
         // Turn the block about its axis and offset it.
         std::vector<std::uint8_t> block(m.mesh.nodes.size(), 0);
         for (std::size_t h = 0; h < m.mesh.hex_count(); ++h)
