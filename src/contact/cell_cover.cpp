@@ -1,6 +1,8 @@
 // The part of an S2S point's cell that lies over the other surface, and how its force spreads
 // (mortar.hpp): the cell against its partner facet and the other facets it faces.
 #include <algorithm>
+#include <array>
+#include <limits>
 
 #include "abut/contact/interface.hpp"
 
@@ -71,6 +73,64 @@ PartnerRules ContactInterface::border_rules(const Side& own, std::size_t p) cons
   if (own.point_node[p] < 0 && !own.point_reach.empty())
     rules.edge_tolerance = std::max(rules.edge_tolerance, own.point_reach[p]);
   return rules;
+}
+
+// Issue 27: in symmetric N2S on matched meshes the plane's nodes along a block's border pressed
+// with their whole tributary area, half or three quarters of which lies beside the block (a block
+// set down on a slope walked off). A node's area is a quarter of each of its facets (the corner
+// quadrant of the facet's reference square); each quadrant is covered as an S2S cell is
+// (mortar.hpp), against the partner h and the facets sharing a node with h. That ring holds every
+// facet a quadrant can reach only while the quadrant is no larger than h, and the cover only
+// means something where the node's facets all face h within alpha_edge and h is a solid's face:
+// elsewhere (a node on an edge or in a corner, against a shell, or a coarse side pressing a fine
+// one) the node keeps its whole area, as before.
+double ContactInterface::node_cover(const Pass& pass, std::size_t p, const Partner& h,
+                                    const ContactInput& in) const {
+  const Side& own = sides_[pass.own];
+  const Side& target = sides_[pass.target];
+  if (h.facet < 0 || target.surface.twin[h.facet] >= 0) return 1.0;
+  const std::int32_t node = own.point_node[p];
+  constexpr std::size_t kMaxRing = 64;
+  std::array<std::int32_t, kMaxRing> ring{};
+  std::size_t count = 0;
+  ring[count++] = h.facet;
+  const auto& h_nodes = target.surface.facets[h.facet];
+  for (const std::int32_t b : h_nodes)
+    for (auto k = target.node_facet_start[b]; k < target.node_facet_start[b + 1]; ++k) {
+      const std::int32_t g = target.node_facets[k];
+      if (count < kMaxRing &&
+          std::find(ring.begin(), ring.begin() + count, g) == ring.begin() + count)
+        ring[count++] = g;
+    }
+  const QuadCorners ch = quad_corners(h_nodes, in.x, in.y, in.z);
+  double h_size = std::numeric_limits<double>::infinity();
+  for (int e = 0; e < 4; ++e) {
+    const double length = norm(ch[(e + 1) % 4] - ch[e]);
+    if (length > 0.0) h_size = std::min(h_size, length);
+  }
+  const CoverFacets other = cover_facets(target, in);
+  double covered = 0.0, total = 0.0;
+  for (auto k = own.node_facet_start[node]; k < own.node_facet_start[node + 1]; ++k) {
+    const std::int32_t g = own.node_facets[k];
+    if (!own.active[g]) continue;
+    const auto& nodes = own.surface.facets[g];
+    const QuadCorners c = quad_corners(nodes, in.x, in.y, in.z);
+    const Vec3 n = quad_centre_normal(c);
+    if (-dot(n, h.normal) < sharp_cos_) return 1.0;  // the node's surface turns: an edge
+    const int a = static_cast<int>(std::find(nodes.begin(), nodes.end(), node) - nodes.begin());
+    // The quadrant at corner a (0: xi = eta = -1, 1: xi = +1, 2: both +1, 3: eta = +1).
+    const bool high_xi = a == 1 || a == 2, high_eta = a == 2 || a == 3;
+    const CellBounds quadrant{high_xi ? 0.0 : -1.0, high_xi ? 1.0 : 0.0, high_eta ? 0.0 : -1.0,
+                              high_eta ? 1.0 : 0.0};
+    const Vec3 x00 = quad_point(c, quadrant.xi0, quadrant.eta0),
+               x11 = quad_point(c, quadrant.xi1, quadrant.eta1),
+               x10 = quad_point(c, quadrant.xi1, quadrant.eta0),
+               x01 = quad_point(c, quadrant.xi0, quadrant.eta1);
+    if (std::max(norm(x11 - x00), norm(x01 - x10)) > h_size) return 1.0;  // coarser than h
+    covered += cover_cell(nodes, quadrant, n * -1.0, h.facet, {ring.data(), count}, other).area;
+    total += 0.5 * norm(cross(x11 - x00, x01 - x10));
+  }
+  return total > 0.0 ? std::min(covered / total, 1.0) : 1.0;
 }
 
 }  // namespace abut

@@ -408,6 +408,8 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     clear_history();
     return;
   }
+  // A node on the other surface's border presses with the part of its area over that surface.
+  if (node_point && !f.free && !f.two_sided && !from_behind) area *= node_cover(pass, p, h, in);
   // Along the facet's normal, or radially around a shell's rounded edge.
   const Spring r = partner_spring(h.facet, h.xi, h.eta, h.normal);
   // The push on the point: a cell's along its own normal (the direction of its cover).
