@@ -102,7 +102,7 @@ namespace {
 
 // Fills the rows of `out` for n queries in two passes, each query writing only its own row:
 // `visit(p, emit)` calls emit(b) for every box b of query p, in the same order both times;
-// pass 1 counts, a prefix sum makes the offsets, pass 2 stores, and `finish(p, first, last)` may
+// pass 1 counts, a prefix sum makes the offsets, pass 2 stores, and `finish(first, last)` may
 // reorder the stored row.
 template <class Visit, class Finish>
 void fill_rows(std::size_t n, CandidateList& out, const Visit& visit, const Finish& finish) {
