@@ -264,8 +264,7 @@ double ContactInterface::spring_step(double omega2) const {
 void ContactInterface::book_damping(const ContactInput& in) {
   if (in.vx.empty()) return;
   double power = 0.0;  // of the damping forces on the nodes (< 0: they dissipate)
-  for (const auto i : surface_nodes_)
-    power += damping_fx_[i] * in.vx[i] + damping_fy_[i] * in.vy[i] + damping_fz_[i] * in.vz[i];
+  for (const auto i : surface_nodes_) power += damping_power(i, in);
   stats_.damping_energy -= 0.5 * power * in.dt;
 }
 
@@ -327,18 +326,20 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   stats_.active_points = 0;
   stats_.heat_flow = 0.0;
   stats_.stable_step = kInfinity;
-  // Last step's damping forces did the other half of their work over the step just taken.
-  book_damping(in);
   // Far from every facet a point cannot touch before the next broad-phase build sees it, as long
   // as no node crosses a quarter of the search margin in one step; at rest (no speed to judge
-  // by) the bound before touching holds as before contact.
-  double speed2 = 0.0;
+  // by) the bound before touching holds as before contact. Last step's damping forces did the
+  // other half of their work over the step just taken (book_damping), and are cleared.
+  double speed2 = 0.0, power = 0.0;
   for (auto i : surface_nodes_) {
     pressure_[i] = 0.0;
-    damping_fx_[i] = damping_fy_[i] = damping_fz_[i] = 0.0;
-    if (!in.vx.empty())
+    if (!in.vx.empty()) {
       speed2 = std::max(speed2, in.vx[i] * in.vx[i] + in.vy[i] * in.vy[i] + in.vz[i] * in.vz[i]);
+      power += damping_power(i, in);
+    }
+    damping_fx_[i] = damping_fy_[i] = damping_fz_[i] = 0.0;
   }
+  stats_.damping_energy -= 0.5 * power * in.dt;
   // Edge-to-edge springs and contacts outside their time window (points may lie anywhere when it
   // opens) keep the bound everywhere.
   const bool outside_window = in.time < settings_.begin_time || in.time > settings_.end_time;

@@ -400,8 +400,13 @@ class ContactInterface {
   // edge-to-edge contact); otherwise only for the points that touch (apply takes the others).
   void scatter(const ContactInput& in, ContactForces& out, bool near_bound);
   // Half the work of the nodal damping forces over the step just taken (in.v in.dt), into
-  // ContactStats::damping_energy: last step's at the start of apply, this step's after scatter.
+  // ContactStats::damping_energy: this step's after scatter; apply books last step's in its
+  // loop over the surface nodes, where it clears them.
   void book_damping(const ContactInput& in);
+  double damping_power(std::size_t node, const ContactInput& in) const {
+    return damping_fx_[node] * in.vx[node] + damping_fy_[node] * in.vy[node] +
+           damping_fz_[node] * in.vz[node];
+  }
   // The stable step of central differences for springs of squared frequency omega2 (infinite
   // for 0), damped at the contact's fraction of critical damping xi with the velocity of the
   // half step before: (2 / omega)(sqrt(1 + xi^2) - xi) (Belytschko, Liu & Moran, Nonlinear
