@@ -309,7 +309,8 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     pass.dfz[p] = -c * v_rel.z;
     pass.slip_work[p] = 0.0;
     pass.penetration[p] = std::max(-dot(stretch, r.normal), 0.0);
-    conduct(pass, p, facet, pass.tie_xi[p], pass.tie_eta[p], std::max(fn, 0.0) / area, 0.0, area);
+    record_conductance(pass, p, facet, pass.tie_xi[p], pass.tie_eta[p], std::max(fn, 0.0) / area,
+                       0.0, area);
     return true;
   };
 
@@ -397,9 +398,9 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     // Open within reach of the partner: heat may still cross the gap (thermal.hpp).
     if (s.thermal.conductance &&
         (!node_point || facing_area(from_behind ? h.normal * -1.0 : h.normal)))
-      conduct(pass, p, h.facet, h.xi, h.eta, 0.0,
-              -penetration <= kTouchingGapFraction * own.point_thickness[p] ? 0.0 : -penetration,
-              area);
+      record_conductance(
+          pass, p, h.facet, h.xi, h.eta, 0.0,
+          -penetration <= kTouchingGapFraction * own.point_thickness[p] ? 0.0 : -penetration, area);
     return;
   }
 
@@ -483,7 +484,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   pass.dfz[p] = damping.z;
   pass.slip_work[p] = slip_work;
   pass.penetration[p] = penetration;
-  conduct(pass, p, h.facet, h.xi, h.eta, std::max(fn, 0.0) / area, -penetration, area);
+  record_conductance(pass, p, h.facet, h.xi, h.eta, std::max(fn, 0.0) / area, -penetration, area);
 }
 
 }  // namespace abut

@@ -4,6 +4,11 @@
 // depend on the thread count. Temperatures and heat are interpolated with the same shape functions
 // as the forces: the point's own nodes on one side, the partner facet's nodes at the projection on
 // the other, so that what one side loses the other gains.
+//
+// The conduction is linear in the temperatures with the geometry held, so a caller whose thermal
+// step is shorter than the mechanical one evaluates it again at each of its thermal steps
+// (conduct_heat, issue 29): evaluated once per mechanical step and spread over many thermal
+// steps, it is forward Euler at the mechanical step, unstable beyond 2 C / G.
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -13,8 +18,8 @@
 
 namespace abut {
 
-void ContactInterface::conduct(Pass& pass, std::size_t p, std::int32_t facet, double xi, double eta,
-                               double pressure, double gap, double area) {
+void ContactInterface::record_conductance(Pass& pass, std::size_t p, std::int32_t facet, double xi,
+                                          double eta, double pressure, double gap, double area) {
   if (!settings_.thermal.conductance) return;
   const double h = conductance(*settings_.thermal.conductance, pressure, gap);
   // A negative or undefined conductance (a user function) conducts nothing: it would let heat
@@ -26,65 +31,94 @@ void ContactInterface::conduct(Pass& pass, std::size_t p, std::int32_t facet, do
   pass.heat_conductance[p] = h * area;
 }
 
-void ContactInterface::scatter_heat(const ContactInput& in, ContactForces& out) {
+double ContactInterface::conduct_heat(std::span<const double> temperature, double duration,
+                                      std::span<double> heat) {
   const std::size_t node_count = mass_.size();
-  const bool conduction = settings_.thermal.conductance && !in.temperature.empty();
-  const bool friction = settings_.thermal.friction_heat && in.dt > 0.0;
-  if (out.heat.empty() || (!conduction && !friction)) return;
-  if (out.heat.size() < node_count || (conduction && in.temperature.size() < node_count) ||
-      (!out.conductance.empty() && out.conductance.size() < node_count))
+  if (heat.size() < node_count || temperature.size() < node_count)
     throw std::invalid_argument(
-        "ContactInterface::apply: temperature or heat arrays shorter than the node masses");
-  for (const Pass& pass : passes_) {
-    const Side& own = sides_[pass.own];
-    const Side& target = sides_[pass.target];
-    const double w = pass.weight;
-    // Surface 1 to surface 2 is positive: a pass whose points lie on surface 2 counts the other
-    // way (self contact has one side and no direction).
-    const double direction = pass.own == 0 ? 1.0 : -1.0;
-    for (std::size_t p = 0; p < pass.heat_facet.size(); ++p) {
-      const std::int32_t facet = pass.heat_facet[p];
-      const bool rubbing = friction && pass.hit[p] && pass.slip_work[p] > 0.0;
-      if (facet < 0 && !rubbing) continue;
-      const auto own_nodes = own.point_nodes(p);
-      const auto n_own = quad_shape(own.point_xi[p], own.point_eta[p]);
-      if (conduction && facet >= 0) {
+        "ContactInterface::conduct_heat: temperature or heat arrays shorter than the node masses");
+  double flow = 0.0;
+  if (settings_.thermal.conductance)
+    for (const Pass& pass : passes_) {
+      const Side& own = sides_[pass.own];
+      const Side& target = sides_[pass.target];
+      // Surface 1 to surface 2 is positive: a pass whose points lie on surface 2 counts the other
+      // way (self contact has one side and no direction).
+      const double direction = pass.own == 0 ? 1.0 : -1.0;
+      for (std::size_t p = 0; p < pass.heat_facet.size(); ++p) {
+        const std::int32_t facet = pass.heat_facet[p];
+        if (facet < 0) continue;
+        const auto own_nodes = own.point_nodes(p);
+        const auto n_own = quad_shape(own.point_xi[p], own.point_eta[p]);
         const auto& target_nodes = target.surface.facets[facet];
         const auto n_target = quad_shape(pass.heat_xi[p], pass.heat_eta[p]);
         double t_own = 0.0, t_target = 0.0;
         for (int a = 0; a < 4; ++a) {
-          t_own += n_own[a] * in.temperature[own_nodes[a]];
-          t_target += n_target[a] * in.temperature[target_nodes[a]];
+          t_own += n_own[a] * temperature[own_nodes[a]];
+          t_target += n_target[a] * temperature[target_nodes[a]];
         }
-        const double g = w * pass.heat_conductance[p];
-        const double q = g * (t_own - t_target);  // from the point to its partner [power]
+        const double q = pass.weight * pass.heat_conductance[p] * (t_own - t_target);
         for (int a = 0; a < 4; ++a) {
-          out.heat[own_nodes[a]] -= q * n_own[a];
-          out.heat[target_nodes[a]] += q * n_target[a];
+          heat[own_nodes[a]] -= q * n_own[a];
+          heat[target_nodes[a]] += q * n_target[a];
         }
-        if (!out.conductance.empty())
-          for (int a = 0; a < 4; ++a) {
-            out.conductance[own_nodes[a]] += g * n_own[a];
-            out.conductance[target_nodes[a]] += g * n_target[a];
-          }
-        stats_.heat_flow += direction * q;
-        stats_.conducted_heat += direction * q * in.dt;
+        flow += direction * q;
       }
-      if (rubbing) {
-        // The friction work of the step as heat [power], shared between the point's side and its
-        // partner's (FrictionHeatSplit: to_side1 for surface 1).
-        const double work = w * pass.slip_work[p];
-        const FrictionHeatSplit& split = *settings_.thermal.friction_heat;
-        const double to_own = pass.own == 0 ? split.side1(work) : split.side2(work);
-        const double to_target = work - to_own;
-        const auto& target_nodes = target.surface.facets[pass.hit_facet[p]];
-        const auto n_target = quad_shape(pass.hit_xi[p], pass.hit_eta[p]);
+    }
+  stats_.heat_flow = flow;
+  stats_.conducted_heat += flow * duration;
+  return flow;
+}
+
+void ContactInterface::scatter_heat(const ContactInput& in, ContactForces& out) {
+  const std::size_t node_count = mass_.size();
+  const bool conduction = settings_.thermal.conductance.has_value();
+  const bool friction = settings_.thermal.friction_heat && in.dt > 0.0;
+  if (out.heat.empty() || (!conduction && !friction)) return;
+  if (out.heat.size() < node_count ||
+      (!out.conductance.empty() && out.conductance.size() < node_count))
+    throw std::invalid_argument(
+        "ContactInterface::apply: heat or conductance arrays shorter than the node masses");
+  if (conduction && !out.conductance.empty())
+    for (const Pass& pass : passes_) {
+      const Side& own = sides_[pass.own];
+      const Side& target = sides_[pass.target];
+      for (std::size_t p = 0; p < pass.heat_facet.size(); ++p) {
+        const std::int32_t facet = pass.heat_facet[p];
+        if (facet < 0) continue;
+        const auto own_nodes = own.point_nodes(p);
+        const auto n_own = quad_shape(own.point_xi[p], own.point_eta[p]);
+        const auto& target_nodes = target.surface.facets[facet];
+        const auto n_target = quad_shape(pass.heat_xi[p], pass.heat_eta[p]);
+        const double g = pass.weight * pass.heat_conductance[p];
         for (int a = 0; a < 4; ++a) {
-          out.heat[own_nodes[a]] += to_own / in.dt * n_own[a];
-          out.heat[target_nodes[a]] += to_target / in.dt * n_target[a];
+          out.conductance[own_nodes[a]] += g * n_own[a];
+          out.conductance[target_nodes[a]] += g * n_target[a];
         }
-        stats_.friction_heat += work;
       }
+    }
+  if (conduction && !in.temperature.empty()) conduct_heat(in.temperature, in.dt, out.heat);
+  if (!friction) return;
+  for (const Pass& pass : passes_) {
+    const Side& own = sides_[pass.own];
+    const Side& target = sides_[pass.target];
+    for (std::size_t p = 0; p < pass.heat_facet.size(); ++p) {
+      if (!pass.hit[p] || !(pass.slip_work[p] > 0.0)) continue;
+      // The friction work of the step as heat [power], shared between the point's side and its
+      // partner's (FrictionHeatSplit: to_side1 for surface 1).
+      const double work = pass.weight * pass.slip_work[p];
+      const FrictionHeatSplit& split = *settings_.thermal.friction_heat;
+      const double to_own = pass.own == 0 ? split.side1(work) : split.side2(work);
+      const double to_target = work - to_own;
+      const auto own_nodes = own.point_nodes(p);
+      const auto n_own = quad_shape(own.point_xi[p], own.point_eta[p]);
+      const auto& target_nodes = target.surface.facets[pass.hit_facet[p]];
+      const auto n_target = quad_shape(pass.hit_xi[p], pass.hit_eta[p]);
+      for (int a = 0; a < 4; ++a) {
+        out.heat[own_nodes[a]] += to_own / in.dt * n_own[a];
+        out.heat[target_nodes[a]] += to_target / in.dt * n_target[a];
+      }
+      stats_.friction_heat += work;
     }
   }
 }

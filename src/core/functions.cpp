@@ -192,6 +192,11 @@ FunctionRef FunctionTable::find(std::int64_t id, const SourceLocation& where) co
 
 bool FunctionTable::is_curve(FunctionRef ref) const { return impl_->entry(ref).is_curve; }
 
+std::span<const double> FunctionTable::breakpoints(FunctionRef ref) const {
+  const Entry& e = impl_->entry(ref);
+  return e.is_curve ? std::span<const double>(e.curve.x) : std::span<const double>();
+}
+
 bool FunctionTable::uses(FunctionRef ref, const std::string& variable) const {
   impl_->entry(ref);  // checks the handle
   std::vector<bool> visited(impl_->entries.size(), false);

@@ -19,7 +19,9 @@ constexpr char kMagic[8] = {'A', 'B', 'U', 'T', 'R', 'S', 'T', '\n'};
 // 3: the contact broad phase's grid has a cell size per axis (issue 28).
 // 4: contacts keep the damping part of each point's force and the nodal damping forces of the
 //    last step, whose work they book over the step after (issue 27).
-constexpr std::uint32_t kVersion = 4;
+// 5: the heat balance keeps the largest heat of the run; the simulation keeps the heat the contact
+//    conducts apart from the mechanics' heat, and the thermal expansion work (issue 29).
+constexpr std::uint32_t kVersion = 5;
 
 // FNV-1a, 64 bits (Fowler, Noll, Vo): a checksum, not a cryptographic hash.
 class Fnv {

@@ -16,13 +16,6 @@ double steps_per_thermal_step(const Simulation& sim, std::int64_t cycles) {
              : 0.0;
 }
 
-// The balance error relative to the largest heat term, for the log (0 when nothing moved).
-double relative_error(const HeatBalance& b) {
-  const double scale = std::max(
-      {std::abs(b.stored), std::abs(b.boundary), std::abs(b.prescribed), std::abs(b.sources)});
-  return scale > 0.0 ? b.error() / scale : 0.0;
-}
-
 }  // namespace
 
 std::vector<std::string> energy_columns() {
@@ -45,6 +38,7 @@ void write_summary(JsonWriter& json, const Simulation& sim, std::int64_t cycles)
   json.member("stored", b.stored).member("boundary", b.boundary);
   json.member("prescribed", b.prescribed).member("sources", b.sources);
   json.member("error", b.error());
+  json.member("largest", b.largest).member("relative_error", b.relative_error());
   json.end_object();
   json.end_object();
 }
@@ -71,7 +65,7 @@ std::string end_line(const Simulation& sim, std::int64_t cycles) {
       "abut: heat: {} thermal steps ({:.3g} mechanical steps per thermal step), heat stored "
       "{:.6g}, heat balance error {:.3g} ({:.3f}%)\n",
       sim.thermal_steps(), steps_per_thermal_step(sim, cycles), b.stored, b.error(),
-      100.0 * relative_error(b));
+      100.0 * b.relative_error());
 }
 
 }  // namespace abut::thermal_output

@@ -20,7 +20,7 @@ std::vector<std::string> energy_columns();
 void append_energy_values(const Simulation& sim, std::vector<CsvHistory::Value>& values);
 
 // "thermal": {thermal_steps, thermal_stable_step, mechanical_steps_per_thermal_step,
-// heat_balance: {stored, boundary, prescribed, sources, error}}.
+// heat_balance: {stored, boundary, prescribed, sources, error, largest, relative_error}}.
 void write_summary(JsonWriter& json, const Simulation& sim, std::int64_t cycles);
 
 // Before the run: the thermal stable step and how the heat is sub-cycled.

@@ -540,6 +540,14 @@ void ContactSet::apply(const ContactInput& in, std::span<double> fx, std::span<d
   }
 }
 
+void ContactSet::conduct_heat(std::span<const double> temperature, double duration,
+                              std::span<double> heat) {
+  for (std::size_t c = 0; c < interfaces_.size(); ++c) {
+    interfaces_[c].conduct_heat(temperature, duration, heat);
+    reports_[c].stats = interfaces_[c].stats();
+  }
+}
+
 void ContactSet::erode(std::span<const std::uint8_t> eroded) {
   for (ContactInterface& c : interfaces_) c.erode(eroded);
 }

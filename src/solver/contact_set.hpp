@@ -34,11 +34,17 @@ class ContactSet {
   double friction_energy() const;
   double released_energy() const;  // ContactStats::released_energy, summed
   // Thermal contact (*CONTACT fid_thermal, fric_heat, *CONTACT_THERMAL): the heat into each node
-  // [power] and each node's conductance through contact [power/temperature] of the last apply();
-  // empty without thermal contact.
+  // [power] (friction, and conduction when apply() had temperatures) and each node's conductance
+  // through contact [power/temperature] of the last apply(); empty without thermal contact.
   bool thermal() const { return thermal_; }
   std::span<const double> heat() const { return heat_; }
   std::span<const double> conductance() const { return conductance_; }
+  // The heat conducted into each node at `temperature` through the partners of the last apply(),
+  // added to `heat` [power] and booked over `duration` in the reports (for a caller that steps its
+  // heat on its own clock: ContactInterface::conduct_heat); apply() then gets no temperatures.
+  void conduct_heat(std::span<const double> temperature, double duration, std::span<double> heat);
+  // Every node of the contacts' surfaces, sorted: the only nodes apply() and conduct_heat() load.
+  std::span<const std::int32_t> surface_nodes() const { return surface_nodes_; }
 
   // Penalties and the statistics of the last apply(), one per interface.
   const std::vector<ContactReport>& reports() const { return reports_; }

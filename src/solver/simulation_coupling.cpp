@@ -63,13 +63,10 @@ void Simulation::Impl::couple_heat() {
 
 // The Taylor-Quinney heat (Taylor & Quinney 1934, Proc. R. Soc. A 143:307): the share chi of
 // each element's plastic work over the step becomes heat, 1/8 on each of its nodes, gathered as
-// energy until the next thermal step (advance_heat). Serial, in block and element order, so the
-// sums do not depend on the number of threads.
+// energy for the end of the mechanical step (advance_heat). Serial, in block and element order, so
+// the sums do not depend on the number of threads.
 void Simulation::Impl::gather_plastic_heat() {
-  if (heat_energy.empty()) {
-    heat_energy.assign(n_nodes, 0.0);
-    heat_source.assign(n_nodes, 0.0);
-  }
+  if (heat_energy.empty()) heat_energy.assign(n_nodes, 0.0);
   for (std::size_t b = 0; b < blocks.size(); ++b) {
     const double chi = taylor_quinney[b];
     if (chi == 0.0) continue;

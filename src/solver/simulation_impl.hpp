@@ -110,13 +110,18 @@ struct Simulation::Impl {
   std::vector<double> good_x, good_y, good_z;
   double good_t = 0.0;
 
-  // Heat (heat.hpp), sub-cycled: the temperature is at heat_time <= t, within one thermal step.
+  // Heat (heat.hpp, advance_heat): the temperatures are at t; the rates planned at the start of
+  // the current thermal step hold up to heat_planned_to.
   std::optional<HeatSolver> heat;
-  double heat_time = 0.0;
+  double heat_planned_to = 0.0;
   std::int64_t heat_steps = 0;
-  // Heat from the mechanics gathered since heat_time [energy per node], its rate over the next
-  // thermal step [power per node], and the largest contact conductance per heat capacity [1/time].
-  std::vector<double> heat_energy, heat_source;
+  // The thermal nodes off the surfaces of thermal contacts (their planned rates flow at once;
+  // those of the surfaces' nodes along with the contact's conduction).
+  std::vector<std::int32_t> inside_nodes;
+  // Heat the mechanics made over the mechanical step [energy per node] (friction, plastic work),
+  // the contact's conduction at the current temperatures [power per node], and the largest
+  // contact conductance per heat capacity of the step [1/time] (advance_heat).
+  std::vector<double> heat_energy, heat_exchange;
   double contact_heat_rate = 0.0;
   // Coupling of the mechanics to the heat (simulation_coupling.cpp): the Taylor-Quinney share of
   // each block's plastic work that becomes heat (0: none).
@@ -136,6 +141,8 @@ struct Simulation::Impl {
                             double* w, const double* w_old, double dt_avg);
   void build_force_slots();
   void advance_heat();
+  double thermal_step_limit() const;
+  void exchange_contact_heat(double dt);
   // What is wrong with the energies at t^n, or empty: a non-finite energy, work or balance, a
   // negative kinetic energy (simulation_energy_checks.cpp).
   std::string energy_fault() const;

@@ -24,8 +24,8 @@ void Simulation::archive(StateArchive& a) {
   a.values(s.blocks, s.shell_blocks, s.bodies);
   a.values(s.eroded_elements, s.element_eroded);  // element_eroded: filled at the first erosion
   s.contacts->archive(a);
-  // Heat: the temperatures and what the mechanics gathered for the next thermal step.
-  a.values(s.heat, s.heat_time, s.heat_steps, s.heat_energy, s.heat_source, s.contact_heat_rate);
+  // Heat: the temperatures, the planned rates and how long they hold.
+  a.values(s.heat, s.heat_planned_to, s.heat_steps);
   a.mark("simulation end");
 }
 

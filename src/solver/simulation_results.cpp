@@ -138,7 +138,7 @@ std::span<const double> Simulation::temperature() const {
 std::span<const double> Simulation::heat_capacity() const {
   return impl_->heat ? impl_->heat->capacity() : std::span<const double>();
 }
-double Simulation::temperature_time() const { return impl_->heat_time; }
+double Simulation::temperature_time() const { return impl_->t; }
 std::int64_t Simulation::thermal_steps() const { return impl_->heat_steps; }
 double Simulation::thermal_stable_step() const {
   return impl_->heat ? impl_->heat->stable_step() : 0.0;

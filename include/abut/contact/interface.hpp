@@ -123,6 +123,15 @@ class ContactInterface {
   // Adds the contact forces of the state `in` to `out` and updates energies and statistics.
   void apply(const ContactInput& in, ContactForces& out);
 
+  // Thermal contact for a caller that advances its temperatures in steps of its own (several per
+  // apply, or one over several): adds to `heat` the heat conducted into each node [power] at the
+  // nodal temperatures `temperature`, through the partners and conductances the last apply found
+  // (its geometry held), and books that flow over `duration` in stats() (heat_flow,
+  // conducted_heat). Returns the flow from surface 1 to surface 2 [power]. apply itself conducts
+  // at its input's temperatures over its step when they are given; a caller that conducts here
+  // gives apply no temperatures.
+  double conduct_heat(std::span<const double> temperature, double duration, std::span<double> heat);
+
   // Element erosion: `eroded` holds 1 for every eroded element, indexed like the surfaces'
   // `element` and `exposed_by`. Facets of eroded elements leave the contact (unless
   // ErosionSettings::remove_facets is off), internal faces they expose join it, and nodes left
@@ -419,9 +428,10 @@ class ContactInterface {
     damping_fz_[node] += force.z;
   }
   // Thermal contact (heat_exchange.cpp): the conductance of point p with its partner, and the
-  // heat of every pass to the nodes, serially in point order.
-  void conduct(Pass& pass, std::size_t p, std::int32_t facet, double xi, double eta,
-               double pressure, double gap, double area);
+  // heat of every pass to the nodes (conductance, conduction at the input's temperatures,
+  // friction heat), serially in point order.
+  void record_conductance(Pass& pass, std::size_t p, std::int32_t facet, double xi, double eta,
+                          double pressure, double gap, double area);
   void scatter_heat(const ContactInput& in, ContactForces& out);
   void update_moving_region(const ContactInput& in);
   void initial_state(const ContactInput& in);

@@ -18,6 +18,7 @@
 //   are rejected with "not supported yet".
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,9 @@ class FunctionTable {
   // The handle for an id; InputError at `where` if there is none.
   FunctionRef find(std::int64_t id, const SourceLocation& where) const;
   bool is_curve(FunctionRef ref) const;
+  // The abscissas of a curve, where its slope may change (a caller steps over them, not across
+  // them); empty for a function.
+  std::span<const double> breakpoints(FunctionRef ref) const;
   // Does the expression read this variable name (e.g. "pres")? False for curves.
   // Includes the names read by the functions it calls through fcn() (conservative).
   bool uses(FunctionRef ref, const std::string& variable) const;

@@ -7,10 +7,13 @@
 // their initial temperature.
 //
 // One step from T^n at time t to T^{n+1} at t + dt:
-//   C_a (T_a^{n+1} - T_a^n) / dt = -(K T^n)_a + Q_a(t) + S_a,
-// K the conductance at the given (current) coordinates, Q the face loads at T^n, S the caller's
-// sources [power]; then the prescribed nodes take T(t + dt). Stable while dt is below
-// stable_step() (thermal_block.hpp), which the caller keeps by sub-cycling.
+//   C_a (T_a^{n+1} - T_a^n) / dt = -(K T^n)_a + Q_a(t + dt/2, T^n) + S_a,
+// K the conductance at the given (current) coordinates, Q the face loads (their curves at the
+// middle of the step: exact over a step within one segment of a tabulated curve, whose breaks the
+// caller steps onto, next_load_break), S the caller's sources [power]; then the prescribed nodes
+// take T(t + dt). Stable while dt is below stable_step() (thermal_block.hpp), which the caller
+// keeps by sub-cycling; a step whose change of temperature no stable step could make stops the
+// run (InstabilityError).
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -39,7 +42,13 @@ struct HeatBalance {
   double boundary = 0.0;    // face fluxes and convection
   double prescribed = 0.0;  // heat the prescribed temperatures put in (out: negative)
   double sources = 0.0;     // the caller's sources
+  // The largest heat of the run so far: of the terms above and of the heat moved within the
+  // model, sum C |T - T0| over the nodes (a closed exchange stores nothing on the whole).
+  double largest = 0.0;
   double error() const { return stored - boundary - prescribed - sources; }
+  // The error relative to the largest heat of the run (0 when no heat moved), never to a
+  // difference near zero.
+  double relative_error() const { return largest > 0.0 ? error() / largest : 0.0; }
 };
 
 class HeatSolver {
@@ -58,9 +67,23 @@ class HeatSolver {
   double stable_step() const;
 
   // One step of length dt from time t, at coordinates x, y, z (3 spans over the nodes), with the
-  // caller's nodal heat sources [power] (may be empty).
+  // caller's nodal heat sources [power] (may be empty): plan, flow over dt, hold at t + dt.
   void advance(double t, double dt, std::span<const double> x, std::span<const double> y,
                std::span<const double> z, std::span<const double> source);
+  // The same step in parts, for a caller that spreads it over its own steps: plan the rates of
+  // [t, t + span] at the current temperatures and coordinates (InstabilityError when they would
+  // change a node by more than a stable step can), then let them flow over parts dt of the span
+  // into `nodes` (empty: every node) in any order, holding the prescribed temperatures at times of
+  // its choice.
+  void plan(double t, double span, std::span<const double> x, std::span<const double> y,
+            std::span<const double> z);
+  void flow(double dt, std::span<const std::int32_t> nodes);
+  // Heat the caller puts into the nodes `nodes` (empty: every node) at once, between steps:
+  // power[i] * dt each
+  // [energy] (the mechanics' heat of a mechanical step, or an exchange by conduction the caller
+  // evaluates, e.g. through contact). Each node's temperature rises by its heat over its
+  // capacity; a held node stays held (holding it takes the heat out). Booked as sources.
+  void put_heat(std::span<const std::int32_t> nodes, std::span<const double> power, double dt);
 
   // Steady state at time t (issue 11, for static steps): K T = Q + S with the prescribed
   // temperatures held, face fluxes and convection at t, the caller's sources S [power] (may be
@@ -71,6 +94,12 @@ class HeatSolver {
   void solve_steady(double t, std::span<const double> x, std::span<const double> y,
                     std::span<const double> z, std::span<const double> source,
                     std::span<const ThermalContactElement> contact = {});
+
+  // Sets the prescribed temperatures to their values at time t (for a caller whose mechanics
+  // reads them more often than it plans steps), booking the heat they take in.
+  void hold(double t);
+  // The first break of a thermal load's tabulated curve after time t (infinity if none).
+  double next_load_break(double t) const;
 
   const HeatBalance& balance() const;
   // Heat flowing into each node by conduction at the last advance [power] (for output).

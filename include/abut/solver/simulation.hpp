@@ -116,16 +116,17 @@ class Simulation {
                       std::vector<double>& wear) const;
 
   // Heat (heat.hpp): the nodal temperatures (empty without thermal properties), the time they
-  // are at (within one thermal step of time(): the heat is sub-cycled), the thermal steps taken,
-  // the current thermal stable step and the heat balance.
+  // are at (time(): they advance with every mechanical step, at rates of the elements' conduction
+  // planned once per thermal step), the thermal steps taken, the current thermal stable step and
+  // the heat balance.
   std::span<const double> temperature() const;
   std::span<const double> heat_capacity() const;  // lumped, per node [energy / temperature]
   double temperature_time() const;
   std::int64_t thermal_steps() const;
   double thermal_stable_step() const;
   HeatBalance heat_balance() const;
-  // Heat flowing into each node by conduction at the last thermal step [power] (empty without
-  // thermal properties).
+  // Heat flowing into each node by conduction in the elements, as planned at the last thermal
+  // step [power] (empty without thermal properties).
   std::span<const double> heat_flow() const;
 
   // Restart (issue 13): saves the complete state at t^n to `a`, or loads it into a simulation
