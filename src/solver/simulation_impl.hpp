@@ -114,13 +114,11 @@ struct Simulation::Impl {
   // the current thermal step hold up to heat_planned_to.
   std::optional<HeatSolver> heat;
   double heat_planned_to = 0.0;
+  double planned_contact_rate = 0.0;  // contact_heat_rate the planned step was made with
   std::int64_t heat_steps = 0;
-  // The thermal nodes off the surfaces of thermal contacts (their planned rates flow at once;
-  // those of the surfaces' nodes along with the contact's conduction).
-  std::vector<std::int32_t> inside_nodes;
   // Heat the mechanics made over the mechanical step [energy per node] (friction, plastic work),
-  // the contact's conduction at the current temperatures [power per node], and the largest
-  // contact conductance per heat capacity of the step [1/time] (advance_heat).
+  // the contact's conduction at a plan's temperatures [power per node], and the largest contact
+  // conductance per heat capacity of the step [1/time] (advance_heat).
   std::vector<double> heat_energy, heat_exchange;
   double contact_heat_rate = 0.0;
   // Coupling of the mechanics to the heat (simulation_coupling.cpp): the Taylor-Quinney share of
@@ -142,7 +140,6 @@ struct Simulation::Impl {
   void build_force_slots();
   void advance_heat();
   double thermal_step_limit() const;
-  void exchange_contact_heat(double dt);
   // What is wrong with the energies at t^n, or empty: a non-finite energy, work or balance, a
   // negative kinetic energy (simulation_energy_checks.cpp).
   std::string energy_fault() const;

@@ -25,7 +25,7 @@ void Simulation::archive(StateArchive& a) {
   a.values(s.eroded_elements, s.element_eroded);  // element_eroded: filled at the first erosion
   s.contacts->archive(a);
   // Heat: the temperatures, the planned rates and how long they hold.
-  a.values(s.heat, s.heat_planned_to, s.heat_steps);
+  a.values(s.heat, s.heat_planned_to, s.planned_contact_rate, s.heat_steps);
   a.mark("simulation end");
 }
 

@@ -223,13 +223,6 @@ void Simulation::Impl::setup() {
     heat_planned_to = t;
   }
   check_thermal_contacts(model);  // heat.hpp
-  if (heat && contacts->thermal()) {
-    std::vector<std::uint8_t> on_surface(n_nodes, 0);
-    for (const std::int32_t i : contacts->surface_nodes())
-      on_surface[static_cast<std::size_t>(i)] = 1;
-    for (std::size_t i = 0; i < n_nodes; ++i)
-      if (!on_surface[i]) inside_nodes.push_back(static_cast<std::int32_t>(i));
-  }
   couple_heat();
   compute_forces(0.0);
   dt_initial = std::min(model.time.step_scale * stable, model.time.max_step);

@@ -71,12 +71,13 @@ class HeatSolver {
   void advance(double t, double dt, std::span<const double> x, std::span<const double> y,
                std::span<const double> z, std::span<const double> source);
   // The same step in parts, for a caller that spreads it over its own steps: plan the rates of
-  // [t, t + span] at the current temperatures and coordinates (InstabilityError when they would
-  // change a node by more than a stable step can), then let them flow over parts dt of the span
-  // into `nodes` (empty: every node) in any order, holding the prescribed temperatures at times of
-  // its choice.
+  // [t, t + span] at the current temperatures and coordinates, with the heat the caller exchanges
+  // between nodes by conduction at these temperatures, e.g. through contact [power] (may be
+  // empty; it sums to zero); InstabilityError when they would change a node by more than a
+  // stable step can. Then let them flow over parts dt of the span into `nodes` (empty: every
+  // node), holding the prescribed temperatures at times of its choice.
   void plan(double t, double span, std::span<const double> x, std::span<const double> y,
-            std::span<const double> z);
+            std::span<const double> z, std::span<const double> exchange);
   void flow(double dt, std::span<const std::int32_t> nodes);
   // Heat the caller puts into the nodes `nodes` (empty: every node) at once, between steps:
   // power[i] * dt each

@@ -192,10 +192,12 @@ struct HeatSolver::Impl {
   // over a span within one segment of a tabulated curve), convection. InstabilityError when they
   // would change a node by more than a stable step can over the span.
   void plan(double time, double span, std::span<const double> x, std::span<const double> y,
-            std::span<const double> z) {
+            std::span<const double> z, std::span<const double> exchange) {
     if (!block) return;
     std::fill(conduction.begin(), conduction.end(), 0.0);
     stable = block->add_conduction(x, y, z, t, conduction);
+    if (!exchange.empty())
+      for (std::size_t i = 0; i < t.size(); ++i) conduction[i] += exchange[i];
     std::fill(boundary_rate.begin(), boundary_rate.end(), 0.0);
     // The range of the temperatures the step starts from and of the loads' ambient and held
     // temperatures: conduction changes a node by at most its row sum of |K| times that range over
@@ -239,7 +241,7 @@ struct HeatSolver::Impl {
       const double change = span * rate[i] / capacity[i];
       const double bound = 4.0 * range + span * std::abs(boundary_rate[i]) / capacity[i] +
                            kChangeSlack * (range + std::abs(t[i]));
-      if (!(std::abs(change) <= bound))
+      if (!std::isfinite(change) || !(std::abs(change) <= bound))
         throw InstabilityError(unstable_message(i, time + span, change, range));
     }
     book_stored();
@@ -262,7 +264,7 @@ struct HeatSolver::Impl {
   void advance(double time, double dt, std::span<const double> x, std::span<const double> y,
                std::span<const double> z, std::span<const double> source) {
     if (!block) return;
-    plan(time, dt, x, y, z);
+    plan(time, dt, x, y, z, {});
     if (!source.empty()) put_heat({}, source, dt);
     flow(dt, {});
     hold(time + dt);
@@ -273,6 +275,10 @@ struct HeatSolver::Impl {
   static constexpr double kChangeSlack = 1e-9;
 
   std::string unstable_message(std::size_t node, double time, double change, double range) const {
+    if (!std::isfinite(change))
+      return "the temperature of node " + std::to_string(model.mesh.nodes.id[node]) +
+             " is no longer finite at t = " + std::to_string(time) +
+             " (its loads or its conduction overflowed)";
     return "the temperature of node " + std::to_string(model.mesh.nodes.id[node]) + " changed by " +
            std::to_string(change) + " in one thermal step to t = " + std::to_string(time) +
            ", beyond what a stable step can do (four times the range " + std::to_string(range) +

@@ -26,8 +26,8 @@ void HeatSolver::put_heat(std::span<const std::int32_t> nodes, std::span<const d
 }
 void HeatSolver::hold(double t) { impl_->hold(t); }
 void HeatSolver::plan(double t, double span, std::span<const double> x, std::span<const double> y,
-                      std::span<const double> z) {
-  impl_->plan(t, span, x, y, z);
+                      std::span<const double> z, std::span<const double> exchange) {
+  impl_->plan(t, span, x, y, z, exchange);
 }
 void HeatSolver::flow(double dt, std::span<const std::int32_t> nodes) { impl_->flow(dt, nodes); }
 double HeatSolver::next_load_break(double t) const {
