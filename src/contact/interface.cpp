@@ -323,8 +323,7 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   stats_.force = {};
   stats_.normal_force = stats_.tangential_force = stats_.elastic_energy = stats_.max_penetration =
       0.0;
-  stats_.active_points = 0;
-  stats_.heat_flow = 0.0;
+  stats_.active_points = 0;  // heat_flow: set by conduct_heat, which may follow on its own clock
   stats_.stable_step = kInfinity;
   // Far from every facet a point cannot touch before the next broad-phase build sees it, as long
   // as no node crosses a quarter of the search margin in one step; at rest (no speed to judge

@@ -295,6 +295,7 @@ void SolidBlock::set_thermal(const ThermalCoupling& coupling) {
   m.coupled = coupling.expansion != 0.0 || plastic || softens;
   m.temperature_started = false;
   m.element_temperature.assign(m.coupled ? m.hexes.size() : 0, 0.0);
+  m.element_thermal_work.assign(m.coupled ? m.hexes.size() : 0, 0.0);
   m.element_plastic_work.assign(plastic ? m.hexes.size() : 0, 0.0);
 }
 
@@ -313,9 +314,10 @@ void SolidBlock::archive(StateArchive& a) {
            "the SIMD width of the build (the elements' state is kept in batches of that many)");
   a.fixed(m.stress, m.viscous, m.hourglass, m.forces, m.internal_work, m.history, m.eroded,
           m.element_internal, m.element_hourglass, m.geometric_strain, m.volume_ratio,
-          m.hourglass_work, m.stable, m.failure, m.element_temperature, m.element_plastic_work);
+          m.hourglass_work, m.stable, m.failure, m.element_temperature, m.element_plastic_work,
+          m.element_thermal_work);
   a.values(m.eroded_energy, m.eroded_count, m.internal_energy, m.hourglass_energy,
-           m.temperature_started);
+           m.temperature_started, m.thermal_work);
 }
 
 void SolidBlock::set_element_ids(std::vector<std::int64_t> ids) {

@@ -95,6 +95,11 @@ struct SolidBlock::Impl {
   bool coupled = false;
   bool temperature_started = false;          // element_temperature holds the last temperatures
   std::vector<double> element_temperature;   // at the last update, 1 per element (coupled)
+  // The stresses' work on the thermal strain of the last step, per element (coupled), and the
+  // work of the expansion on the mechanics so far, minus its sum over the living elements
+  // (BlockStep::thermal_work).
+  std::vector<double> element_thermal_work;
+  double thermal_work = 0.0;
   std::vector<double> element_plastic_work;  // of the last step (coupling.plastic_work)
 
   // kThermal: the block is coupled (decided once per block and step, so that the uncoupled

@@ -103,6 +103,7 @@ void SolidBlock::Impl::clear_eroded(std::size_t e) {
   std::fill_n(&forces[24 * e], 24, 0.0);
   internal_work[e] = hourglass_work[e] = 0.0;
   if (!element_plastic_work.empty()) element_plastic_work[e] = 0.0;
+  if (!element_thermal_work.empty()) element_thermal_work[e] = 0.0;
   stable[e] = std::numeric_limits<double>::infinity();
   failure[e] = kOk;
 }
@@ -244,6 +245,8 @@ void SolidBlock::Impl::batch(std::size_t first, const NodalState& s, double dt, 
       for (int comp = 0; comp < 6; ++comp) now[comp] = now[comp] + h[comp];
     }
   }
+  // The work of the stresses on the thermal strain increment alpha dT I, per lane (thermal laws).
+  Lanes thermal = zero;
   // Other laws (with history), element by element.
   if constexpr (!kLaneLaw && !kRubber) {
     for (int l = 0; l < kLanes; ++l) {
@@ -276,6 +279,10 @@ void SolidBlock::Impl::batch(std::size_t first, const NodalState& s, double dt, 
           if (!element_plastic_work.empty())
             element_plastic_work[e] =
                 von_mises(now_l) * (h.plastic_strain - before) * mid_volume[l];
+          // Trapezoidal, as the internal work below: 0.5 tr(sigma_rot + sigma_new) alpha dT V.
+          thermal[l] =
+              0.5 * (rotated_l[0] + rotated_l[1] + rotated_l[2] + now_l[0] + now_l[1] + now_l[2]) *
+              coupling.expansion * change * mid_volume[l];
         }
       } else {  // hypoelastic laws (point_law.hpp)
         now_l = Sym3{lane_of(old, l)};
@@ -293,6 +300,12 @@ void SolidBlock::Impl::batch(std::size_t first, const NodalState& s, double dt, 
     Lanes sum[6];
     for (int comp = 0; comp < 6; ++comp) sum[comp] = rotated[comp] + now[comp];
     internal = 0.5 * double_dot_of(sum, strain_increment) * mid_volume;
+    // The stresses' work on the total strain, less that on the thermal strain: the internal
+    // energy is the work on the mechanical strain (stored and dissipated). Minus the work on the
+    // thermal strain is the energy the expansion brings into the mechanics (a bar held at both
+    // ends and heated: compressive stress, growing thermal strain, energy in;
+    // Energies::thermal_work): kinetic + internal = external + thermal work.
+    if constexpr (kThermal) internal -= thermal;
   }
 
   // 3. Artificial bulk viscosity in compression (von Neumann-Richtmyer quadratic plus a linear
@@ -405,6 +418,7 @@ void SolidBlock::Impl::batch(std::size_t first, const NodalState& s, double dt, 
     failure[e] = fails[l];
     if (fails[l]) continue;
     internal_work[e] = internal[l];
+    if constexpr (kThermal) element_thermal_work[e] = thermal[l];
     hourglass_work[e] = work[l];
     double* fe = &forces[24 * e];
     for (int a = 0; a < 8; ++a)
@@ -433,9 +447,15 @@ BlockStep SolidBlock::Impl::step(const NodalState& s, double dt, const Law& law)
   if constexpr (kThermal) temperature_started = true;
 
   static_assert(kInverted == 1 && kNonFinite == 2, "the messages below, by failure code");
-  return end_block_step(
+  BlockStep out = end_block_step(
       *this, hexes.size(),
       {nullptr, ": inverted element (volume <= 0)", ": non-finite volume, stress or force"});
+  if constexpr (kThermal) {
+    for (std::size_t e = 0; e < hexes.size(); ++e)
+      if (eroded.empty() || !eroded[e]) thermal_work -= element_thermal_work[e];
+    out.thermal_work = thermal_work;
+  }
+  return out;
 }
 
 void SolidBlock::Impl::erode(BlockStep& out) {

@@ -59,6 +59,7 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
       .member("eroded", e.eroded)
       .member("contact_released", e.contact_released)
       .member("external_work", e.external_work);
+  if (thermal_output::active(sim)) json.member("thermal_work", e.thermal_work);
   json.member("total", e.total()).member("balance_error", sim.energy_balance_error());
   json.end_object();
   json.key("parts").begin_array();

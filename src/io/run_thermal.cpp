@@ -19,11 +19,13 @@ double steps_per_thermal_step(const Simulation& sim, std::int64_t cycles) {
 }  // namespace
 
 std::vector<std::string> energy_columns() {
-  return {"heat_stored", "heat_boundary", "heat_prescribed", "heat_sources", "heat_balance_error"};
+  return {"thermal_work",    "heat_stored",  "heat_boundary",
+          "heat_prescribed", "heat_sources", "heat_balance_error"};
 }
 
 void append_energy_values(const Simulation& sim, std::vector<CsvHistory::Value>& values) {
   const HeatBalance b = sim.heat_balance();
+  values.emplace_back(sim.energies().thermal_work);
   for (const double v : {b.stored, b.boundary, b.prescribed, b.sources, b.error()})
     values.emplace_back(v);
 }

@@ -15,6 +15,7 @@ namespace abut::thermal_output {
 // The run has a temperature field (some hexahedra have thermal properties).
 inline bool active(const Simulation& sim) { return !sim.temperature().empty(); }
 
+// thermal_work (the thermal expansion's work on the mechanics, Energies::thermal_work), then
 // heat_stored, heat_boundary, heat_prescribed, heat_sources, heat_balance_error [energy].
 std::vector<std::string> energy_columns();
 void append_energy_values(const Simulation& sim, std::vector<CsvHistory::Value>& values);

@@ -548,6 +548,13 @@ void ContactSet::conduct_heat(std::span<const double> temperature, double durati
   }
 }
 
+void ContactSet::book_conducted_heat(double duration) {
+  for (std::size_t c = 0; c < interfaces_.size(); ++c) {
+    interfaces_[c].book_conducted_heat(duration);
+    reports_[c].stats.conducted_heat = interfaces_[c].stats().conducted_heat;
+  }
+}
+
 void ContactSet::erode(std::span<const std::uint8_t> eroded) {
   for (ContactInterface& c : interfaces_) c.erode(eroded);
 }

@@ -43,6 +43,8 @@ class ContactSet {
   // added to `heat` [power] and booked over `duration` in the reports (for a caller that steps its
   // heat on its own clock: ContactInterface::conduct_heat); apply() then gets no temperatures.
   void conduct_heat(std::span<const double> temperature, double duration, std::span<double> heat);
+  // Books every contact's last conducted flow over `duration` more (ContactInterface).
+  void book_conducted_heat(double duration);
   // Every node of the contacts' surfaces, sorted: the only nodes apply() and conduct_heat() load.
   std::span<const std::int32_t> surface_nodes() const { return surface_nodes_; }
 

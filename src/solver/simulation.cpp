@@ -119,6 +119,8 @@ void Simulation::Impl::compute_forces(double dt) {
   energy.internal = 0.0;
   energy.hourglass = 0.0;
   energy.eroded = 0.0;
+  energy.thermal_work = 0.0;
+  for (const BlockStep& s : block_steps) energy.thermal_work += s.thermal_work;
   for (const auto* steps : {&block_steps, &shell_steps}) {
     for (const BlockStep& s : *steps) {
       energy.internal += s.internal_energy;
@@ -307,8 +309,8 @@ void Simulation::Impl::kick() {
   }
   conserved_kinetic = conserved;
   energy.kinetic = kinetic;
-  energy_scale =
-      std::max({energy_scale, std::abs(conserved_total()), std::abs(energy.external_work)});
+  energy_scale = std::max({energy_scale, std::abs(conserved_total()),
+                           std::abs(energy.external_work), std::abs(energy.thermal_work)});
 }
 
 void Simulation::Impl::apply_nodal_boundaries(double dt_avg) {
@@ -502,9 +504,9 @@ void Simulation::Impl::advance_heat() {
       const double span = std::min({thermal_step_limit(), heat->next_load_break(time) - time,
                                     std::max(model.time.end_time - time, t - time)});
       std::span<const double> exchange;
-      if (contact_heat_rate > 0.0) {
+      if (contacts->thermal()) {  // also with no partner: the flow to report is then 0
         heat_exchange.assign(n_nodes, 0.0);
-        contacts->conduct_heat(heat->temperature(), span, heat_exchange);
+        contacts->conduct_heat(heat->temperature(), 0.0, heat_exchange);
         exchange = heat_exchange;
       }
       heat->plan(time, span, x, y, z, exchange);
@@ -512,7 +514,9 @@ void Simulation::Impl::advance_heat() {
       planned_contact_rate = contact_heat_rate;
       ++heat_steps;
     }
-    heat->flow(std::min(t, heat_planned_to) - time, {});
+    const double part = std::min(t, heat_planned_to) - time;
+    heat->flow(part, {});
+    if (contacts->thermal()) contacts->book_conducted_heat(part);
     time = heat_planned_to < t ? heat_planned_to : t;
   }
   for (const PrescribedTemperature& p : model.thermal.prescribed)

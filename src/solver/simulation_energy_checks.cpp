@@ -22,9 +22,10 @@ std::string Simulation::Impl::energy_fault() const {
       {"eroded energy", e.eroded},
       {"released contact energy", e.contact_released},
       {"external work", e.external_work},
+      {"thermal expansion work", e.thermal_work},
       {"total energy", e.total()},
-      {"energy balance (total - total at t = 0 - external work)",
-       conserved_total() - total0 - e.external_work}};
+      {"energy balance (total - total at t = 0 - external work - thermal expansion work)",
+       conserved_total() - total0 - e.external_work - e.thermal_work}};
   for (const auto& [name, value] : quantities)
     if (!std::isfinite(value)) return fmt::format("the {} is {}", name, value);
   if (e.kinetic < 0.0) return fmt::format("the kinetic energy is negative ({:.6g})", e.kinetic);

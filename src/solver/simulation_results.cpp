@@ -95,9 +95,9 @@ double Simulation::contact_seconds() const { return impl_->contact_seconds; }
 double Simulation::energy_balance_error() const {
   const Energies& e = impl_->energy;
   const double total = impl_->conserved_total();
-  const double scale = std::max(
-      {impl_->energy_scale, std::abs(total), std::abs(impl_->total0), std::abs(e.external_work)});
-  return scale > 0.0 ? (total - impl_->total0 - e.external_work) / scale : 0.0;
+  const double scale = std::max({impl_->energy_scale, std::abs(total), std::abs(impl_->total0),
+                                 std::abs(e.external_work), std::abs(e.thermal_work)});
+  return scale > 0.0 ? (total - impl_->total0 - e.external_work - e.thermal_work) / scale : 0.0;
 }
 
 std::vector<PartState> Simulation::part_states() const {

@@ -95,9 +95,11 @@ TEST(DeckThermalRun, OutputCarriesTheHeat) {
   EXPECT_THAT(state, HasSubstr("Name=\"temperature\""));
   EXPECT_THAT(state, HasSubstr("Name=\"heat_flow\""));
   const std::string energy = file_text(dir / "energy.csv");
-  EXPECT_THAT(energy.substr(0, energy.find('\n')),
-              HasSubstr(",balance_error,heat_stored,heat_boundary,heat_prescribed,heat_sources,"
-                        "heat_balance_error"));
+  EXPECT_THAT(
+      energy.substr(0, energy.find('\n')),
+      HasSubstr(
+          ",balance_error,thermal_work,heat_stored,heat_boundary,heat_prescribed,heat_sources,"
+          "heat_balance_error"));
   const std::string summary = file_text(dir / "summary.json");
   EXPECT_THAT(summary, HasSubstr("\"thermal\""));
   EXPECT_THAT(summary, HasSubstr("\"mechanical_steps_per_thermal_step\""));

@@ -174,6 +174,18 @@ P, 1, P, 3, 0.0, %.9g
             << error << "\n";
   EXPECT_LT(std::abs(error), 0.01);
   EXPECT_NEAR(mises, -axial, 0.01 * std::abs(exact));
+  // Energy (issue 29): the internal energy is the strain energy sigma^2 V / (2 E) of the bar (the
+  // walls' springs hold sigma^2 A / pfac more), brought in by the expansion's work, and the
+  // balance kinetic + internal + contact = thermal work closes (1%; before, the internal column
+  // was the stresses' work on the total strain, about 0, and the balance read 100%).
+  const double volume = length * 0.01 * 0.01;
+  const double strain_energy = exact * exact * volume / (2.0 * kE);
+  const Energies e = sim.energies();
+  std::cout << "internal energy " << e.internal << " J (sigma^2 V / 2E = " << strain_energy
+            << " J), thermal work " << e.thermal_work << " J, contact " << e.contact
+            << " J, kinetic " << e.kinetic << " J, balance " << sim.energy_balance_error() << "\n";
+  EXPECT_NEAR(e.internal, strain_energy, 0.02 * strain_energy);
+  EXPECT_LT(std::abs(sim.energy_balance_error()), 0.01);
 }
 
 }  // namespace

@@ -131,6 +131,11 @@ class ContactInterface {
   // at its input's temperatures over its step when they are given; a caller that conducts here
   // gives apply no temperatures.
   double conduct_heat(std::span<const double> temperature, double duration, std::span<double> heat);
+  // Books the flow of the last conduct_heat over `duration` more (a caller whose conduction keeps
+  // that flow over a span it may end early conducts with duration 0 and books each part).
+  void book_conducted_heat(double duration) {
+    stats_.conducted_heat += stats_.heat_flow * duration;
+  }
 
   // Element erosion: `eroded` holds 1 for every eroded element, indexed like the surfaces'
   // `element` and `exposed_by`. Facets of eroded elements leave the contact (unless

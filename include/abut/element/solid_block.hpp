@@ -63,6 +63,10 @@ struct BlockStep {
       0.0;  // cumulative strain energy of the living elements (work of stresses)
   double hourglass_energy = 0.0;  // cumulative work of the hourglass forces of the living elements
   double eroded_energy = 0.0;     // internal and hourglass energy the eroded elements held
+  // Energy the thermal expansion brought into the mechanics so far (elements coupled to the
+  // temperature): minus the work of the stresses on the thermal strain alpha dT I;
+  // internal_energy is their work on the rest of the strain.
+  double thermal_work = 0.0;
   std::size_t eroded = 0;         // elements eroded so far
   double stable_step = 0.0;       // smallest element stable time step at x^n (no scale factor)
 };

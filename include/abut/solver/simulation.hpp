@@ -34,6 +34,9 @@ struct Energies {
   // Contact spring energy that vanished without doing work (ContactStats::released_energy).
   double contact_released = 0.0;
   double external_work = 0.0;
+  // Work the thermal expansion did on the mechanics (BlockStep::thermal_work): an input, like the
+  // external work; the balance is total - total_0 - external_work - thermal_work.
+  double thermal_work = 0.0;
   // total = kinetic + internal + hourglass + contact + friction + eroded + contact_released
   double total() const {
     return kinetic + internal + hourglass + contact + friction + eroded + contact_released;
