@@ -1,10 +1,12 @@
 // Runs the static steps of a model and writes what a user opens afterwards:
 //   results.pvd + states/state_NNNN.vtu   one state per converged increment
 //   increments.csv                        step, increment, attempts, iterations, times, residual
-//   energy.csv, contact.csv               energies; per contact forces, energy, penetration (and
-//                                         the heat flow with thermal contact)
+//   energy.csv, contact.csv               energies (and the steady heat balance with heat); per
+//                                         contact forces, energy, penetration (and the heat flow
+//                                         with thermal contact)
 //   results.dat                           the *NODE/*EL/*CONTACT PRINT blocks (CalculiX layout)
-//   summary.json                          equations, increments, iterations, solve times
+//   summary.json                          equations, increments, iterations, solve times (and
+//                                         the last state's heat balance with heat)
 #include <fmt/format.h>
 #include <omp.h>
 
@@ -13,6 +15,8 @@
 #include <fstream>
 #include <optional>
 #include <ostream>
+#include <string>
+#include <vector>
 
 #include "abut/io/csv_history.hpp"
 #include "abut/io/json_writer.hpp"
@@ -23,6 +27,7 @@
 #include "abut/solver/static_solver.hpp"
 #include "io/contact_history.hpp"
 #include "io/static_print.hpp"
+#include "io/static_thermal_output.hpp"
 
 namespace abut {
 
@@ -36,7 +41,8 @@ struct StopRequested {};
 // One ParaView state: displacement and nodal force (loads and reactions) at the nodes; per hex
 // the mean over its Gauss points of the stress tensor and of the von Mises stress, the largest
 // equivalent plastic strain of its points, and its strain energy.
-// With thermal properties also the steady temperature field of the state (static_heat.hpp).
+// With thermal properties also the steady temperature field of the state and the heat flowing
+// into each node by conduction (static_heat.hpp).
 void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
                  const StaticSolver& solver, double time, const StaticHeat& heat) {
   const Mesh& mesh = model.mesh;
@@ -65,7 +71,10 @@ void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
   }
   std::vector<double> energy(solver.element_energy().begin(), solver.element_energy().end());
   std::vector<FieldView> points{{"displacement", 3, u}, {"force", 3, solver.nodal_force()}};
-  if (heat.active()) points.push_back({"temperature", 1, heat.temperature()});
+  if (heat.active()) {
+    points.push_back({"temperature", 1, heat.temperature()});
+    points.push_back({"heat_flow", 1, heat.heat_flow()});
+  }
   const std::vector<FieldView> cells{{"part_id", 1, part},
                                      {"stress", 6, stress},
                                      {"von_mises_stress", 1, mises},
@@ -111,15 +120,18 @@ void write_contact_rows(CsvHistory& csv, const Model& model, const StaticSolver&
 }
 
 // energy.csv of a static run: the elements' energy (elastic, hourglass and plastic work), the
-// contact springs' energy and the friction work.
-void write_energy_row(CsvHistory& csv, const StaticSolver& solver, double time) {
+// contact springs' energy and the friction work; with heat, the state's heat balance.
+void write_energy_row(CsvHistory& csv, const StaticSolver& solver, const StaticHeat& heat,
+                      double time) {
   double internal = 0.0, contact = 0.0, friction = 0.0;
   for (const double e : solver.element_energy()) internal += e;
   for (const StaticContact& c : solver.contacts()) {
     contact += c.energy();
     friction += c.friction_work();
   }
-  csv.write_row(time, {internal, contact, friction});
+  std::vector<CsvHistory::Value> row{internal, contact, friction};
+  if (heat.active()) static_thermal_output::append_energy_values(heat, row);
+  csv.write_row(time, row);
 }
 
 }  // namespace
@@ -150,7 +162,11 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
   write_state(dir, series, model, solver, 0.0, heat);
   CsvHistory increments(dir / "increments.csv",
                         {"step", "increment", "attempts", "iterations", "step_time", "residual"});
-  CsvHistory energy(dir / "energy.csv", {"internal", "contact", "friction"});
+  std::vector<std::string> energy_columns{"internal", "contact", "friction"};
+  if (heat.active())
+    for (std::string& c : static_thermal_output::energy_columns())
+      energy_columns.push_back(std::move(c));
+  CsvHistory energy(dir / "energy.csv", energy_columns);
   std::optional<CsvHistory> contact;
   if (!model.contacts.empty()) {
     std::vector<std::string> columns = contact_history_columns();
@@ -170,7 +186,7 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
            inc.step_time, inc.residual});
       heat.solve(solver, inc.total_time);
       write_state(dir, series, model, solver, inc.total_time, heat);
-      write_energy_row(energy, solver, inc.total_time);
+      write_energy_row(energy, solver, heat, inc.total_time);
       if (contact) write_contact_rows(*contact, model, solver, heat, contact_heat, inc.total_time);
       print_static_results(printed, model, model.static_steps[inc.step], solver, inc);
       printed.flush();
@@ -210,6 +226,7 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
   json.member("iterations", st.iterations).member("cutbacks", st.cutbacks);
   json.member("assembly_seconds", st.assembly_seconds).member("solve_seconds", st.solve_seconds);
   json.member("linear_solver", st.linear_solver);
+  if (heat.active()) static_thermal_output::write_summary(json, heat);
   json.end_object();
   json.write_file(dir / "summary.json");
   if (report.interrupted) {
@@ -230,6 +247,7 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
         << fmt::format("abut: the last converged state (t = {:.6g}) is in the ParaView series\n",
                        last_time);
   }
+  if (heat.active()) log << static_thermal_output::end_line(heat);
   log << "abut: ParaView series: " << report.pvd.string() << " (" << series.size()
       << " states); printed results: " << (dir / "results.dat").string() << "\n"
       << std::flush;

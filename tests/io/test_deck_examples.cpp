@@ -128,7 +128,8 @@ TEST(DeckExamples, StaticBlockPress) {
 // the press force and stays below the bound of the die's own resistance L/(kA) = 0.5 K/W in series
 // with the contact's at the mean pressure p: h(p) = h_c0 (p/H_v)^w is concave, so the points'
 // conductance sums to at most h(p) A, and the plate's resistance can only add (Incropera & DeWitt,
-// section 3.1: resistances in series).
+// section 3.1: resistances in series). Each state's heat balance: all the heat the die's held face
+// puts in crosses the contact and leaves through the plate's held face.
 TEST(DeckExamples, HotDiePress) {
   const Model m = read_deck(example("hot_die_press.k"));
   ASSERT_EQ(m.static_steps.size(), 2u);
@@ -144,6 +145,12 @@ TEST(DeckExamples, HotDiePress) {
       f += (k == 0 ? 1.0 : -1.0) * passes[k].total_force().z;
     force.push_back(f);
     flow.push_back(heat.contact_heat_flow()[0]);
+    const SteadyHeatBalance& b = heat.balance();
+    EXPECT_NEAR(b.prescribed_in, flow.back(), 1e-9 * flow.back());
+    EXPECT_NEAR(b.prescribed_out, -flow.back(), 1e-9 * flow.back());
+    EXPECT_EQ(b.boundary_in, 0.0);
+    EXPECT_EQ(b.boundary_out, 0.0);
+    EXPECT_LT(std::abs(b.relative_error()), 1e-12);
   });
   ASSERT_EQ(flow.size(), 4u);
   const double area = 0.02 * 0.02, die = 0.01 / (50.0 * area);

@@ -17,53 +17,13 @@
 
 #include "abut/io/vtu_writer.hpp"
 #include "test_files.hpp"
+#include "vtu_arrays.hpp"
 
 namespace abut {
 namespace {
 
+using testing::data_array;
 using testing::file_text;
-
-// Test-side decoder (RFC 4648, section 4), independent of the writer's encoder.
-std::vector<unsigned char> base64_decode(const std::string& text) {
-  const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::vector<unsigned char> bytes;
-  unsigned bits = 0;
-  int nbits = 0;
-  for (const char c : text) {
-    if (c == '=') break;
-    const auto value = alphabet.find(c);
-    if (value == std::string::npos) throw std::runtime_error("not base64");
-    bits = (bits << 6) | static_cast<unsigned>(value);
-    nbits += 6;
-    if (nbits >= 8) {
-      nbits -= 8;
-      bytes.push_back(static_cast<unsigned char>((bits >> nbits) & 0xFFu));
-    }
-  }
-  return bytes;
-}
-
-// The inline text of the DataArray called `name`: base64 of the UInt64 byte count (8 bytes, so
-// 12 characters), then base64 of the values.
-template <class T>
-std::vector<T> data_array(const std::string& vtu, const std::string& name) {
-  const auto tag = vtu.find("Name=\"" + name + "\"");
-  if (tag == std::string::npos) throw std::runtime_error("no DataArray " + name);
-  const auto begin = vtu.find('>', tag) + 1;
-  const auto end = vtu.find('<', begin);
-  std::string text;
-  for (const char c : vtu.substr(begin, end - begin)) {
-    if (!std::isspace(static_cast<unsigned char>(c))) text += c;
-  }
-  const auto header = base64_decode(text.substr(0, 12));
-  const auto data = base64_decode(text.substr(12));
-  std::uint64_t byte_count = 0;
-  std::memcpy(&byte_count, header.data(), sizeof byte_count);
-  EXPECT_EQ(byte_count, data.size()) << name;
-  std::vector<T> values(data.size() / sizeof(T));
-  std::memcpy(values.data(), data.data(), values.size() * sizeof(T));
-  return values;
-}
 
 // Two unit cubes side by side along x: nodes (i, j, k) for i = 0..2, j, k = 0..1.
 struct TwoHexes {

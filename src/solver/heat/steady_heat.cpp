@@ -27,11 +27,17 @@ void HeatSolver::solve_steady(double time, std::span<const double> x, std::span<
     const double value = s.amplitude(p.curve, p.scale, time);
     for (const std::int32_t node : p.nodes) s.t[static_cast<std::size_t>(node)] = value;
   }
+  // The heat each node draws by conduction in the field found (conduction_rate(), the flows
+  // the caller reports), also when every node is held and there is nothing to solve.
+  const auto conduct = [&] {
+    std::fill(s.conduction.begin(), s.conduction.end(), 0.0);
+    s.stable = s.block->add_conduction(x, y, z, s.t, s.conduction);
+  };
   std::vector<std::int32_t> equation(n, -1);
   std::int32_t equations = 0;
   for (std::size_t i = 0; i < n; ++i)
     if (s.thermal[i] && !s.prescribed[i]) equation[i] = equations++;  // no density needed
-  if (equations == 0) return;
+  if (equations == 0) return conduct();
 
   // Right side: -K_fp T_p (the conduction drawn by the held nodes alone), fluxes, convection to
   // the ambient, sources.
@@ -126,8 +132,7 @@ void HeatSolver::solve_steady(double time, std::span<const double> x, std::span<
   solver->solve(rhs, rhs);
   for (std::size_t i = 0; i < n; ++i)
     if (equation[i] >= 0) s.t[i] = rhs[static_cast<std::size_t>(equation[i])];
-  std::fill(s.conduction.begin(), s.conduction.end(), 0.0);
-  s.stable = s.block->add_conduction(x, y, z, s.t, s.conduction);
+  conduct();
 }
 
 }  // namespace abut

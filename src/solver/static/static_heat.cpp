@@ -2,6 +2,7 @@
 
 #include "abut/core/error.hpp"
 #include "solver/contact_set.hpp"
+#include "steady_heat_balance.hpp"
 
 namespace abut {
 
@@ -14,6 +15,7 @@ StaticHeat::StaticHeat(const Model& model) : model_(model) {
                        "alpha = 0");
   check_thermal_contacts(model);
   flow_.assign(model.contacts.size(), 0.0);
+  no_flow_.assign(model.mesh.nodes.size(), 0.0);
   for (const ContactSpec& spec : model.contacts)
     laws_.push_back(thermal_of(model, spec).conductance);
   if (model.thermal.properties.empty()) return;
@@ -21,8 +23,13 @@ StaticHeat::StaticHeat(const Model& model) : model_(model) {
   if (!heat_->active()) heat_.reset();
 }
 
+std::span<const double> StaticHeat::heat_flow() const {
+  return steady_ ? heat_->conduction_rate() : std::span<const double>(no_flow_);
+}
+
 void StaticHeat::solve(const StaticSolver& solver, double t) {
   if (!heat_) return;
+  steady_ = false;  // until solve_steady returns
   const Nodes& nodes = model_.mesh.nodes;
   const std::size_t n = nodes.size();
   const std::span<const double> u = solver.displacement();
@@ -45,9 +52,11 @@ void StaticHeat::solve(const StaticSolver& solver, double t) {
   }
   heat_->solve_steady(t, x, y, z, {}, elements);
   // Heat flow G (T_point - T_partner): a contact's first pass has surface 1's points, the second
-  // (symmetric) surface 2's, which flow the other way.
+  // (symmetric) surface 2's, which flow the other way. Per node, the heat each point's conduction
+  // brings (-G w_a (T_point - T_partner)) joins the elements' for the balance.
   const std::span<const double> temperature = heat_->temperature();
   std::fill(flow_.begin(), flow_.end(), 0.0);
+  std::vector<double> inflow(heat_->conduction_rate().begin(), heat_->conduction_rate().end());
   for (std::size_t k = 0; k < passes.size(); ++k) {
     const std::size_t contact = solver.contact_of(k);
     const double direction = k > 0 && solver.contact_of(k - 1) == contact ? -1.0 : 1.0;
@@ -57,8 +66,14 @@ void StaticHeat::solve(const StaticSolver& solver, double t) {
       for (int a = 0; a < w.count; ++a)
         difference += w.weights[a] * temperature[static_cast<std::size_t>(w.nodes[a])];
       flow_[contact] += direction * elements[e].conductance * difference;
+      for (int a = 0; a < w.count; ++a)
+        inflow[static_cast<std::size_t>(w.nodes[a])] -=
+            elements[e].conductance * w.weights[a] * difference;
     }
   }
+  balance_ = steady_heat_balance(model_, t, x, y, z, temperature, inflow);
+  balance_time_ = t;
+  steady_ = true;
 }
 
 }  // namespace abut
