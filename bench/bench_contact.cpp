@@ -109,4 +109,34 @@ BENCHMARK(BM_ContactIdlePointCycle)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
+// The contact's conduction at one thermal step (issue 29: ContactInterface::conduct_heat, which
+// the explicit run calls once per thermal step with the partners of the last apply): the S2S
+// plates above pressed together with a closed conductance, ns per point per thermal step.
+void BM_ContactConductionStep(benchmark::State& state) {
+  omp_set_num_threads(1);
+  Plates p(100);
+  abut::ContactSettings s;
+  s.thermal.conductance = abut::OpenClosedConductance{1e5, 0.0};
+  abut::ContactInterface contact(s, p.upper, p.lower, p.mass, p.input(0.0));
+  const std::size_t upper_first = (101 * 101);
+  for (std::size_t i = upper_first; i < p.x.size(); ++i) p.z[i] -= 2e-4;
+  std::vector<double> heat(p.x.size(), 0.0), conductance(p.x.size(), 0.0);
+  std::vector<double> temperature(p.x.size(), 0.0);
+  for (std::size_t i = upper_first; i < p.x.size(); ++i) temperature[i] = 100.0;
+  abut::ContactForces out{p.fx, p.fy, p.fz, heat, conductance};
+  contact.apply(p.input(0.0), out);
+  for (auto _ : state) {
+    contact.conduct_heat(temperature, 1e-6, heat);
+    benchmark::DoNotOptimize(heat.data());
+  }
+  if (!(contact.stats().heat_flow > 0.0)) state.SkipWithError("no conduction");
+  const auto points = static_cast<double>(contact.point_count());
+  state.counters["points"] = points;
+  state.counters["per_point_step"] =
+      benchmark::Counter(points * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  omp_set_num_threads(omp_get_num_procs());
+}
+BENCHMARK(BM_ContactConductionStep)->Unit(benchmark::kMicrosecond)->UseRealTime();
+
 }  // namespace

@@ -1,10 +1,11 @@
-// The thermal step (issue 11): one explicit conduction step of the heat solver (HeatSolver::advance:
-// conductance of every hexahedron at the current coordinates, gathered per node, forward Euler
-// with the lumped capacity) on a steel box with its left face held hot, 10k and 100k hexahedra,
-// 1 and 2 threads. Reported as time per element-cycle of a thermal step (counter
+// The thermal step (issue 11): one explicit conduction step of the heat solver
+// (HeatSolver::advance: conductance of every hexahedron at the current coordinates, gathered per
+// node, forward Euler with the lumped capacity) on a steel box with its left face held hot, 10k and
+// 100k hexahedra, 1 and 2 threads. Reported as time per element-cycle of a thermal step (counter
 // per_element_cycle). The explicit run takes one thermal step per many mechanical ones (the
 // thermal stable step is usually far longer), so this cost is shared among them.
-// Run: build/bench/abut_bench --benchmark_filter=ThermalStep
+// Run: build/bench/abut_bench --benchmark_filter=ThermalStep (the contact's conduction per thermal
+// step: BM_ContactConductionStep in bench_contact.cpp)
 #include <benchmark/benchmark.h>
 #include <omp.h>
 

@@ -11,6 +11,7 @@
 //    shared between block and plane as specified.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -223,7 +224,16 @@ TEST(ContactHeat, FrictionHeatEqualsTheFrictionWorkSharedAsSpecified) {
   model.contacts[0].friction_heat_to_surface1 = share;
   Simulation sim(model);
   const double mass = sim.part_states().at(0).mass;
-  verification::run_to(sim, sim.end_time());
+  // The heat is in the temperatures at every mechanical step, however long the thermal step
+  // (issue 29: a state at 0.4 s used to show none of 0.83 J).
+  double worst = 0.0;
+  verification::run_to(sim, sim.end_time(), [&](const Simulation& s) {
+    const double heat = s.contact_reports().at(0).stats.friction_heat;
+    worst = std::max(worst, std::abs(s.heat_balance().stored - heat) / (0.5 * mass));
+  });
+  std::cout << "stored heat off the friction heat so far by at most " << worst
+            << " of 1/2 m v0^2 over the steps\n";
+  EXPECT_LT(worst, 1e-9);
   const double work = sim.contact_reports().at(0).stats.friction_energy;
   const double block = stored_heat(sim, 1, t0), plane = stored_heat(sim, 2, t0);
   std::cout << "friction work " << work << " J (1/2 m v0^2 = " << 0.5 * mass << " J); heat in "

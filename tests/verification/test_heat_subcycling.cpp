@@ -218,5 +218,83 @@ TEST(HeatClock, ATemperatureThatDivergesStopsTheRun) {
   std::filesystem::remove_all(dir);
 }
 
+// A shell plate on a block (issue 29's second case): a 20 x 20 mm plate of 2 x 2 shells, 1 mm
+// thick, at 100 degrees, lying on a 20 x 20 x 10 mm block of 2 x 2 x 1 hexahedra at 0, both
+// held, rho c = 1e6 J/(m^3 K); h = 1e5 W/(m^2 K) across. The plate is a lump through its
+// thickness (shells conduct in their plane only) and uniform in its plane; the block is a lump
+// (k = 1e6 W/(m K), Biot 1e-3). Capacities per area 1e3 and 1e4 J/(m^2 K): tau = 1 / (h (1e-3 +
+// 1e-4)) = 9.09 ms, run to 3 tau. The density (c_p = 1e6 / rho keeps rho c) sets the mechanical
+// step: rho = 1000, far below the contact's time constants; rho = 1e12, longer than tau (the
+// issue's plate cooled 3% too fast).
+std::string plate_on_block(double density) {
+  const std::string rho = std::to_string(density), c = std::to_string(1e6 / density);
+  return "*TIME\n0.0273\n*COMPONENT_BOX\n1, 1, 2, 2, 1\n0.0, 0.0, -0.01, 0.02, 0.02, 0.0\n"
+         "*COMPONENT_SHELL_PLATE\n2, 2, 2, 2\n0.0, 0.0, 0.0005, 0.02, 0.0, 0.0005\n"
+         "0.0, 0.02, 0.0005\n*MAT_ELASTIC\n1, " +
+         rho + ", 1.0e11, 0.3, , 1\n*MAT_ELASTIC\n2, " + rho +
+         ", 1.0e11, 0.3, , 2\n*PROP_THERMAL\n1, " + c + ", 1.0e6\n*PROP_THERMAL\n2, " + c +
+         R"(, 50.0
+*PART
+"block"
+1, 1
+"plate"
+2, 2, , 0.001
+*BC_MOTION
+P, 1, XYZ
+*BC_MOTION
+P, 2, XYZ, XYZ
+*INITIAL_TEMPERATURE
+P, 1, 0.0
+P, 2, 100.0
+*CONTACT
+"plate on block"
+1
+P, 2, P, 1, 0.0, 1.0e6
+*CONTACT_THERMAL
+1, OPEN_CLOSED, 1.0e5
+*END
+)";
+}
+
+class PlateOnBlock : public ::testing::TestWithParam<double> {};
+
+TEST_P(PlateOnBlock, FollowsTheTwoLumpExponential) {
+  const Model model = read_deck_string(plate_on_block(GetParam()), "plate_on_block.k");
+  Simulation sim(model);
+  const auto part_mean = [&](std::int64_t part) {
+    const Mesh& mesh = sim.model().mesh;
+    std::vector<std::uint8_t> of(mesh.nodes.size(), 0);
+    for (std::size_t h = 0; h < mesh.hex_count(); ++h)
+      if (mesh.hex_part[h] == part)
+        for (const std::int32_t i : mesh.hexes[h]) of[static_cast<std::size_t>(i)] = 1;
+    for (std::size_t e = 0; e < mesh.shell_count(); ++e)
+      if (mesh.shell_part[e] == part)
+        for (const std::int32_t i : mesh.shells[e]) of[static_cast<std::size_t>(i)] = 1;
+    double heat = 0.0, capacity = 0.0;
+    for (std::size_t i = 0; i < of.size(); ++i)
+      if (of[i]) {
+        heat += sim.heat_capacity()[i] * sim.temperature()[i];
+        capacity += sim.heat_capacity()[i];
+      }
+    return std::pair{heat / capacity, capacity};
+  };
+  const double c_block = part_mean(1).second, c_plate = part_mean(2).second;
+  const double step = sim.time_step();
+  const double tau = 1.0 / (1e5 * 4e-4 * (1.0 / c_block + 1.0 / c_plate));
+  double worst = 0.0;
+  verification::run_to(sim, sim.end_time(), [&](const Simulation&) {
+    const double exact = 100.0 * std::exp(-sim.time() / tau);
+    worst = std::max(worst, std::abs(part_mean(2).first - part_mean(1).first - exact));
+  });
+  std::cout << "plate on block (rho = " << GetParam() << "): mechanical step " << step << " s, tau "
+            << tau << " s (capacities " << c_plate << " and " << c_block << " J/K); largest error "
+            << worst << " K of 100 K; " << sim.cycle() << " mechanical and " << sim.thermal_steps()
+            << " thermal steps\n";
+  EXPECT_NEAR(tau, 1.0 / (1e5 * (1e-3 + 1e-4)), 1e-9);  // the capacities are those of the page
+  EXPECT_LT(worst, 1.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(StepRatios, PlateOnBlock, ::testing::Values(1e3, 1e12));
+
 }  // namespace
 }  // namespace abut
