@@ -13,9 +13,11 @@
 // Each run also checks the heat balance of the solver (stored = boundary + prescribed + sources).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
+#include "abut/core/error.hpp"
 #include "abut/mesh/generators.hpp"
 #include "abut/mesh/skin.hpp"
 #include "abut/solver/heat.hpp"
@@ -89,6 +91,22 @@ TEST(HeatConduction, SemiInfiniteBodyFollowsTheErfSolution) {
   std::cout << "semi-infinite body: worst error " << 100 * worst << "% of the temperature step\n";
   EXPECT_LT(worst, 0.01);
   EXPECT_NEAR(heat.balance().error(), 0.0, 1e-9 * std::abs(heat.balance().stored));
+}
+
+// The safety net of issue 29: the first step on the bar whose end is brought to 120 from 20
+// changes the node next to the end by about step / stable_step times the range of 100 K; at 100
+// stable steps that is far beyond what any stable step can do (four times the range): the step
+// is refused (InstabilityError) before it is taken. At 0.9 of the stable step it is taken.
+TEST(HeatConduction, AStepBeyondTheStableOneIsRefused) {
+  Model m = bar(0.02, 20, 0.001);
+  m.thermal.initial_temperature = 20.0;
+  m.thermal.prescribed.push_back({nodes_at_x(m, 0.0), {}, 120.0, {}});
+  HeatSolver heat(m), stable_heat(m);
+  const Nodes& n = m.mesh.nodes;
+  EXPECT_NO_THROW(stable_heat.advance(0.0, 0.9 * heat.stable_step(), n.x, n.y, n.z, {}));
+  const std::vector<double> before(heat.temperature().begin(), heat.temperature().end());
+  EXPECT_THROW(heat.advance(0.0, 100.0 * heat.stable_step(), n.x, n.y, n.z, {}), InstabilityError);
+  EXPECT_TRUE(std::equal(before.begin(), before.end(), heat.temperature().begin()));
 }
 
 TEST(HeatConduction, SteadyStateBetweenHeldTemperatures) {

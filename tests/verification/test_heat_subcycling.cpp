@@ -181,6 +181,23 @@ ALL, 0, 7, 1.0
   EXPECT_LT(worst, 0.01 * lengthening);
 }
 
+// *TIME dt_max bounds the thermal step too: the two lumps of two_blocks (thermal step 3.4e-5 s
+// from the elements) with the mechanical step held at or below 1e-5 s still plan at least one
+// thermal step per 1e-5 s, and follow the exponential.
+TEST(HeatClock, DtMaxBoundsTheThermalStep) {
+  std::string text = two_blocks(1e3, 3e11, 0.005);
+  text.replace(text.find("0.005000\n"), 9, "0.005000, 0.9, 0.0, 1.0e-5\n");
+  const Model model = read_deck_string(text, "dt_max.k");
+  Simulation sim(model);
+  verification::run_to(sim, sim.end_time());
+  const double exact = 100.0 * std::exp(-0.005 / 0.05);
+  std::cout << sim.thermal_steps() << " thermal steps in 0.005 s with dt_max 1e-5 s; difference "
+            << mean_temperature(sim, 1) - mean_temperature(sim, 2) << " K (exact " << exact
+            << ")\n";
+  EXPECT_GE(sim.thermal_steps(), 500);
+  EXPECT_NEAR(mean_temperature(sim, 1) - mean_temperature(sim, 2), exact, 1.0);
+}
+
 // A heat flux that grows without bound (q = 1e300 exp(1e4 t) W/m^2 on one face) drives the
 // temperature past every finite value: the run stops as unstable (exit 3), naming the node.
 TEST(HeatClock, ATemperatureThatDivergesStopsTheRun) {
