@@ -78,8 +78,8 @@ void print_info(const abut::Model& model, std::ostream& out) {
                      sim.time_step_limit());
   if (!sim.temperature().empty())
     out << fmt::format(
-        "heat:       {} *PROP_THERMAL, thermal stable step {:.4g} ({:.3g} x the mechanical "
-        "step; the heat is sub-cycled)\n",
+        "heat:       {} *PROP_THERMAL, thermal stable step of the elements {:.4g} ({:.3g} x the "
+        "mechanical step; the heat is sub-cycled)\n",
         model.thermal.properties.size(), sim.thermal_stable_step(),
         sim.thermal_stable_step() / sim.initial_time_step());
   out << "parts:\n";

@@ -45,20 +45,22 @@ void write_summary(JsonWriter& json, const Simulation& sim, std::int64_t cycles)
   json.end_object();
 }
 
-// Simulation takes thermal steps of 0.9 of the thermal stable step (simulation.cpp).
+// Simulation plans thermal steps of at most 0.9 of the elements' thermal stable step, shorter where
+// a contact conducts fast (Simulation::Impl::thermal_step_limit); the temperatures advance with
+// every mechanical step.
 std::string start_line(const Simulation& sim) {
   const double thermal = sim.thermal_stable_step();
   const double mechanical = sim.initial_time_step();
-  if (thermal >= mechanical) {
-    return fmt::format(
-        "abut: heat: thermal stable step {:.4g} = {:.3g} x the mechanical step; the heat is "
-        "sub-cycled: one thermal step per {:.0f} mechanical steps or so\n",
-        thermal, thermal / mechanical, std::floor(0.9 * thermal / mechanical));
-  }
+  const std::string ratio = thermal >= mechanical
+                                ? fmt::format("one thermal step per {:.0f} mechanical steps or so",
+                                              std::floor(0.9 * thermal / mechanical))
+                                : fmt::format("{:.0f} thermal steps per mechanical step or so",
+                                              std::ceil(mechanical / (0.9 * thermal)));
   return fmt::format(
-      "abut: heat: thermal stable step {:.4g} = {:.3g} x the mechanical step; the heat is "
-      "sub-cycled: {:.0f} thermal steps per mechanical step or so\n",
-      thermal, thermal / mechanical, std::ceil(mechanical / (0.9 * thermal)));
+      "abut: heat: thermal stable step of the elements {:.4g} = {:.3g} x the mechanical step; the "
+      "heat is sub-cycled: {} (fewer where a contact conducts fast); the temperatures advance with "
+      "every mechanical step\n",
+      thermal, thermal / mechanical, ratio);
 }
 
 std::string end_line(const Simulation& sim, std::int64_t cycles) {

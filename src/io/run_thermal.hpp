@@ -24,7 +24,7 @@ void append_energy_values(const Simulation& sim, std::vector<CsvHistory::Value>&
 // heat_balance: {stored, boundary, prescribed, sources, error, largest, relative_error}}.
 void write_summary(JsonWriter& json, const Simulation& sim, std::int64_t cycles);
 
-// Before the run: the thermal stable step and how the heat is sub-cycled.
+// Before the run: the elements' thermal stable step and how the heat is sub-cycled.
 std::string start_line(const Simulation& sim);
 // After the run: the thermal steps taken and the heat balance.
 std::string end_line(const Simulation& sim, std::int64_t cycles);

@@ -1,5 +1,5 @@
 // Heat through contact in a whole explicit run (issue 11): the contact library's conduction and
-// friction heat (src/contact/heat_exchange.cpp) feeding the sub-cycled heat solver
+// friction heat (src/contact/heat_exchange.cpp) feeding the heat solver on its own clock
 // (Simulation::advance_heat).
 //  - Two blocks of different conductivity in contact, the outer faces held at T_1 and T_2, the
 //    sides insulated: at steady state the heat flow is the series resistance formula
