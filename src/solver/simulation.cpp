@@ -547,7 +547,7 @@ double Simulation::Impl::thermal_step_limit() const {
 }
 
 // The friction heat the contacts put into each node over the mechanical step dt, and the largest
-// ratio of a node's contact conductance to its heat capacity in the step (exchange_contact_heat).
+// ratio of a node's contact conductance to its heat capacity in the step (thermal_step_limit).
 void Simulation::Impl::gather_contact_heat(double dt) {
   const std::span<const double> q = contacts->heat(), g = contacts->conductance();
   const std::span<const double> capacity = heat->capacity();
