@@ -93,8 +93,10 @@ void EdgeContact::rebuild(std::span<const double> x, std::span<const double> y,
 EdgeContactResult EdgeContact::apply(std::span<const double> x, std::span<const double> y,
                                      std::span<const double> z, std::span<const double> vx,
                                      std::span<const double> vy, std::span<const double> vz,
-                                     std::span<const double> mass, double dt, std::span<double> fx,
-                                     std::span<double> fy, std::span<double> fz) {
+                                     std::span<const double> mass, std::span<double> fx,
+                                     std::span<double> fy, std::span<double> fz,
+                                     std::span<double> dx, std::span<double> dy,
+                                     std::span<double> dz) {
   if (candidates_.point_count() != first_.size()) rebuild(x, y, z);
   const ContactEdges& second = self_ ? first_ : second_;
   std::swap(hits_, previous_);
@@ -144,9 +146,9 @@ EdgeContactResult EdgeContact::apply(std::span<const double> x, std::span<const 
         const double elastic = spring * penetration;
         const double f = std::max(elastic - c_d * v_n, 0.0);
         h.force = f;
+        h.damping = f - elastic;
         h.direction = {push.x, push.y, push.z};
         r.elastic_energy += 0.5 * spring * penetration * penetration;
-        r.damping_work += (f - elastic) * (-v_n) * dt;
         r.normal_force += f;
         r.max_penetration = std::max(r.max_penetration, penetration);
         if (m > 0.0) r.omega2 = std::max(r.omega2, spring / m);
@@ -171,11 +173,13 @@ EdgeContactResult EdgeContact::apply(std::span<const double> x, std::span<const 
         fx[nodes[a]] += w[a] * f[0];
         fy[nodes[a]] += w[a] * f[1];
         fz[nodes[a]] += w[a] * f[2];
+        dx[nodes[a]] += w[a] * h.damping * h.direction[0];
+        dy[nodes[a]] += w[a] * h.damping * h.direction[1];
+        dz[nodes[a]] += w[a] * h.damping * h.direction[2];
       }
     }
     const EdgeContactResult& r = partial_[i];
     total.elastic_energy += r.elastic_energy;
-    total.damping_work += r.damping_work;
     total.normal_force += r.normal_force;
     total.max_penetration = std::max(total.max_penetration, r.max_penetration);
     total.omega2 = std::max(total.omega2, r.omega2);

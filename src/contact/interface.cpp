@@ -399,15 +399,16 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   if (settings_.thermal.any()) scatter_heat(in, out);
   if (edges_) {
     const EdgeContactResult e =
-        edges_->apply(in.x, in.y, in.z, in.vx, in.vy, in.vz, mass_, in.dt, out.fx, out.fy, out.fz);
+        edges_->apply(in.x, in.y, in.z, in.vx, in.vy, in.vz, mass_, out.fx, out.fy, out.fz,
+                      damping_fx_, damping_fy_, damping_fz_);
     stats_.force += Vec3{e.force_on_first[0], e.force_on_first[1], e.force_on_first[2]};
     stats_.normal_force += e.normal_force;
     stats_.elastic_energy += e.elastic_energy;
-    stats_.damping_energy += e.damping_work;
     stats_.max_penetration = std::max(stats_.max_penetration, e.max_penetration);
     stats_.active_points += e.active_pairs;
     if (e.omega2 > 0.0) stats_.stable_step = std::min(stats_.stable_step, spring_step(e.omega2));
   }
+  book_damping(in);  // this step's damping forces (points and edges), the first half of their work
 }
 
 }  // namespace abut

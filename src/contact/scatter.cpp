@@ -102,7 +102,6 @@ void ContactInterface::scatter(const ContactInput& in, ContactForces& out, bool 
       }
     }
   }
-  book_damping(in);  // this step's damping forces, the first half of their work
   if (omega2_max > 0.0) stats_.stable_step = spring_step(omega2_max);
   if (approach_omega2 > 0.0)
     stats_.approach_step = std::min(stats_.approach_step, spring_step(approach_omega2));

@@ -17,7 +17,7 @@
 namespace abut {
 namespace {
 
-std::string crossing_plates(const std::string& iedge) {
+std::string crossing_plates(const std::string& iedge, double xi = 0.0) {
   return R"(
 *UNIT_SYSTEM
 SI
@@ -45,7 +45,8 @@ P, 2, 0.0, 0.0, 5.0
 *CONTACT
 1
 P, 1, P, 2, 0.0, 1.0e11
-0, 0.0
+0, )" + std::to_string(xi) +
+         R"(
 *CONTACT_EDGE
 1, )" + iedge +
          "\n*END\n";
@@ -83,6 +84,24 @@ TEST(EdgeContact, CrossingShellEdgesBounceWithEdgeContact) {
   EXPECT_NEAR(o.v_lower, -5.0, 0.05);
   EXPECT_NEAR(o.momentum, 0.0, 1e-9);
   EXPECT_LT(std::abs(o.balance), 1e-2);
+}
+
+// Damped edge springs (xi = 0.3; issue 27: the balance within 1% at every output): their damping
+// work is booked as the points' is, 1/2 (F_d^n + F_d^(n+1)) . (x^(n+1) - x^n)
+// (test_contact_damping_energy.cpp). The plates part with equal and opposite momenta, slower.
+// Booked as F_d^n . v^(n-1/2) dt, the worst balance over the cycles was 1.24%; now 0.63%, of which
+// 0.27% is there without damping (the spring's onset and release within a step).
+TEST(EdgeContact, DampedEdgeSpringsKeepTheEnergyBooks) {
+  const Model model = read_deck_string(crossing_plates("BORDERS", 0.3), "crossing_plates.k");
+  Simulation sim(model);
+  const double worst = verification::worst_energy_balance(sim, 0.5 * 2.0 * 25.0 * 0.0078);
+  const auto parts = sim.part_states();
+  std::cout << "damped edge springs: upper plate " << parts[0].velocity.z << " m/s; worst energy "
+            << "balance " << worst << "\n";
+  EXPECT_GT(parts[0].velocity.z, 0.0);
+  EXPECT_LT(parts[0].velocity.z, 5.0);
+  EXPECT_NEAR(parts[0].mass * parts[0].velocity.z + parts[1].mass * parts[1].velocity.z, 0.0, 1e-9);
+  EXPECT_LT(worst, 1e-2);
 }
 
 }  // namespace

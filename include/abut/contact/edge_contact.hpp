@@ -36,7 +36,6 @@ struct ContactEdges {
 
 struct EdgeContactResult {
   double elastic_energy = 0.0;  // in the springs now
-  double damping_work = 0.0;    // this step
   double normal_force = 0.0;    // sum of the pair forces
   double max_penetration = 0.0;
   double omega2 = 0.0;                     // stiffest spring over its reduced mass (stable step)
@@ -52,12 +51,14 @@ class EdgeContact {
   EdgeContact(ContactEdges edges1, ContactEdges edges2, bool self, double damping, double margin);
 
   void rebuild(std::span<const double> x, std::span<const double> y, std::span<const double> z);
-  // Adds the pair forces to f and returns the step's statistics; `mass` per node.
+  // Adds the pair forces to f, and their damping parts also to d (whose work the caller books
+  // over the step, as it books its points'), and returns the step's statistics; `mass` per node.
   EdgeContactResult apply(std::span<const double> x, std::span<const double> y,
                           std::span<const double> z, std::span<const double> vx,
                           std::span<const double> vy, std::span<const double> vz,
-                          std::span<const double> mass, double dt, std::span<double> fx,
-                          std::span<double> fy, std::span<double> fz);
+                          std::span<const double> mass, std::span<double> fx, std::span<double> fy,
+                          std::span<double> fz, std::span<double> dx, std::span<double> dy,
+                          std::span<double> dz);
 
   std::size_t edge_count() const { return first_.size() + (self_ ? 0 : second_.size()); }
 
@@ -65,7 +66,7 @@ class EdgeContact {
   struct Hit {  // one pair of the current step
     std::int32_t other = -1;
     std::int8_t side = 0;  // sigma
-    double s = 0.0, t = 0.0, force = 0.0;
+    double s = 0.0, t = 0.0, force = 0.0, damping = 0.0;  // damping: part of force
     std::array<double, 3> direction{};
   };
   ContactEdges first_, second_;
