@@ -58,7 +58,8 @@ std::string start_line(const Simulation& sim) {
                                               std::ceil(mechanical / (0.9 * thermal)));
   return fmt::format(
       "abut: heat: thermal stable step of the elements {:.4g} = {:.3g} x the mechanical step; the "
-      "heat is sub-cycled: {} (fewer where a contact conducts fast); the temperatures advance with "
+      "heat is sub-cycled: {} (shorter thermal steps where a contact conducts fast); the "
+      "temperatures advance with "
       "every mechanical step\n",
       thermal, thermal / mechanical, ratio);
 }
