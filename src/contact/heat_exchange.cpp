@@ -31,6 +31,21 @@ void ContactInterface::record_conductance(Pass& pass, std::size_t p, std::int32_
   pass.heat_conductance[p] = h * area;
 }
 
+template <class Link>
+void ContactInterface::for_each_heat_link(const Link& link) const {
+  for (const Pass& pass : passes_) {
+    const Side& own = sides_[pass.own];
+    const Side& target = sides_[pass.target];
+    for (std::size_t p = 0; p < pass.heat_facet.size(); ++p) {
+      const std::int32_t facet = pass.heat_facet[p];
+      if (facet < 0) continue;
+      link(pass, own.point_nodes(p), quad_shape(own.point_xi[p], own.point_eta[p]),
+           target.surface.facets[facet], quad_shape(pass.heat_xi[p], pass.heat_eta[p]),
+           pass.weight * pass.heat_conductance[p]);
+    }
+  }
+}
+
 double ContactInterface::conduct_heat(std::span<const double> temperature, double duration,
                                       std::span<double> heat) {
   const std::size_t node_count = mass_.size();
@@ -39,32 +54,22 @@ double ContactInterface::conduct_heat(std::span<const double> temperature, doubl
         "ContactInterface::conduct_heat: temperature or heat arrays shorter than the node masses");
   double flow = 0.0;
   if (settings_.thermal.conductance)
-    for (const Pass& pass : passes_) {
-      const Side& own = sides_[pass.own];
-      const Side& target = sides_[pass.target];
-      // Surface 1 to surface 2 is positive: a pass whose points lie on surface 2 counts the other
-      // way (self contact has one side and no direction).
-      const double direction = pass.own == 0 ? 1.0 : -1.0;
-      for (std::size_t p = 0; p < pass.heat_facet.size(); ++p) {
-        const std::int32_t facet = pass.heat_facet[p];
-        if (facet < 0) continue;
-        const auto own_nodes = own.point_nodes(p);
-        const auto n_own = quad_shape(own.point_xi[p], own.point_eta[p]);
-        const auto& target_nodes = target.surface.facets[facet];
-        const auto n_target = quad_shape(pass.heat_xi[p], pass.heat_eta[p]);
-        double t_own = 0.0, t_target = 0.0;
-        for (int a = 0; a < 4; ++a) {
-          t_own += n_own[a] * temperature[own_nodes[a]];
-          t_target += n_target[a] * temperature[target_nodes[a]];
-        }
-        const double q = pass.weight * pass.heat_conductance[p] * (t_own - t_target);
-        for (int a = 0; a < 4; ++a) {
-          heat[own_nodes[a]] -= q * n_own[a];
-          heat[target_nodes[a]] += q * n_target[a];
-        }
-        flow += direction * q;
+    for_each_heat_link([&](const Pass& pass, const auto& own_nodes, const auto& n_own,
+                           const auto& target_nodes, const auto& n_target, double g) {
+      double t_own = 0.0, t_target = 0.0;
+      for (int a = 0; a < 4; ++a) {
+        t_own += n_own[a] * temperature[own_nodes[a]];
+        t_target += n_target[a] * temperature[target_nodes[a]];
       }
-    }
+      const double q = g * (t_own - t_target);  // from the point to its partner [power]
+      for (int a = 0; a < 4; ++a) {
+        heat[own_nodes[a]] -= q * n_own[a];
+        heat[target_nodes[a]] += q * n_target[a];
+      }
+      // Surface 1 to surface 2 is positive: a pass whose points lie on surface 2 counts the
+      // other way (self contact has one side and no direction).
+      flow += pass.own == 0 ? q : -q;
+    });
   stats_.heat_flow = flow;
   stats_.conducted_heat += flow * duration;
   return flow;
@@ -80,23 +85,13 @@ void ContactInterface::scatter_heat(const ContactInput& in, ContactForces& out) 
     throw std::invalid_argument(
         "ContactInterface::apply: heat or conductance arrays shorter than the node masses");
   if (conduction && !out.conductance.empty())
-    for (const Pass& pass : passes_) {
-      const Side& own = sides_[pass.own];
-      const Side& target = sides_[pass.target];
-      for (std::size_t p = 0; p < pass.heat_facet.size(); ++p) {
-        const std::int32_t facet = pass.heat_facet[p];
-        if (facet < 0) continue;
-        const auto own_nodes = own.point_nodes(p);
-        const auto n_own = quad_shape(own.point_xi[p], own.point_eta[p]);
-        const auto& target_nodes = target.surface.facets[facet];
-        const auto n_target = quad_shape(pass.heat_xi[p], pass.heat_eta[p]);
-        const double g = pass.weight * pass.heat_conductance[p];
-        for (int a = 0; a < 4; ++a) {
-          out.conductance[own_nodes[a]] += g * n_own[a];
-          out.conductance[target_nodes[a]] += g * n_target[a];
-        }
+    for_each_heat_link([&](const Pass&, const auto& own_nodes, const auto& n_own,
+                           const auto& target_nodes, const auto& n_target, double g) {
+      for (int a = 0; a < 4; ++a) {
+        out.conductance[own_nodes[a]] += g * n_own[a];
+        out.conductance[target_nodes[a]] += g * n_target[a];
       }
-    }
+    });
   if (conduction && !in.temperature.empty()) conduct_heat(in.temperature, in.dt, out.heat);
   if (!friction) return;
   for (const Pass& pass : passes_) {

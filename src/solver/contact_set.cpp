@@ -540,10 +540,9 @@ void ContactSet::apply(const ContactInput& in, std::span<double> fx, std::span<d
   }
 }
 
-void ContactSet::conduct_heat(std::span<const double> temperature, double duration,
-                              std::span<double> heat) {
+void ContactSet::conduct_heat(std::span<const double> temperature, std::span<double> heat) {
   for (std::size_t c = 0; c < interfaces_.size(); ++c) {
-    interfaces_[c].conduct_heat(temperature, duration, heat);
+    interfaces_[c].conduct_heat(temperature, 0.0, heat);
     reports_[c].stats = interfaces_[c].stats();
   }
 }

@@ -39,11 +39,11 @@ class ContactSet {
   bool thermal() const { return thermal_; }
   std::span<const double> heat() const { return heat_; }
   std::span<const double> conductance() const { return conductance_; }
-  // The heat conducted into each node at `temperature` through the partners of the last apply(),
-  // added to `heat` [power] and booked over `duration` in the reports (for a caller that steps its
-  // heat on its own clock: ContactInterface::conduct_heat); apply() then gets no temperatures.
-  void conduct_heat(std::span<const double> temperature, double duration, std::span<double> heat);
-  // Books every contact's last conducted flow over `duration` more (ContactInterface).
+  // For a caller that steps its heat on its own clock (ContactInterface::conduct_heat; apply()
+  // then gets no temperatures): the heat conducted into each node at `temperature` through the
+  // partners of the last apply(), added to `heat` [power]; the reports show that flow, booked
+  // over the time it flows by book_conducted_heat.
+  void conduct_heat(std::span<const double> temperature, std::span<double> heat);
   void book_conducted_heat(double duration);
   // Every node of the contacts' surfaces, sorted: the only nodes apply() and conduct_heat() load.
   std::span<const std::int32_t> surface_nodes() const { return surface_nodes_; }

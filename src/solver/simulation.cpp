@@ -506,7 +506,7 @@ void Simulation::Impl::advance_heat() {
       std::span<const double> exchange;
       if (contacts->thermal()) {  // also with no partner: the flow to report is then 0
         heat_exchange.assign(n_nodes, 0.0);
-        contacts->conduct_heat(heat->temperature(), 0.0, heat_exchange);
+        contacts->conduct_heat(heat->temperature(), heat_exchange);
         exchange = heat_exchange;
       }
       heat->plan(time, span, x, y, z, exchange);
@@ -539,10 +539,9 @@ void Simulation::Impl::advance_heat() {
 // h = 1e6 W/m2K at a 0.1 s step flipped sign and grew 30 times per step.
 double Simulation::Impl::thermal_step_limit() const {
   constexpr double kThermalStepScale = 0.9, kExchangeStep = 0.02;
-  const double rate = 2.0 * contact_heat_rate;  // max lambda
-  double limit =
-      std::min(model.time.max_step, kThermalStepScale / (1.0 / heat->stable_step() + 0.5 * rate));
-  if (rate > 0.0) limit = std::min(limit, kExchangeStep / rate);
+  double limit = std::min(model.time.max_step,
+                          kThermalStepScale / (1.0 / heat->stable_step() + contact_heat_rate));
+  if (contact_heat_rate > 0.0) limit = std::min(limit, kExchangeStep / (2.0 * contact_heat_rate));
   return limit;
 }
 

@@ -438,6 +438,10 @@ class ContactInterface {
   void record_conductance(Pass& pass, std::size_t p, std::int32_t facet, double xi, double eta,
                           double pressure, double gap, double area);
   void scatter_heat(const ContactInput& in, ContactForces& out);
+  // Calls link(pass, own nodes, own shape values, partner nodes, partner shape values, G) for
+  // every point that conducts heat, in pass and point order (heat_exchange.cpp).
+  template <class Link>
+  void for_each_heat_link(const Link& link) const;
   void update_moving_region(const ContactInput& in);
   void initial_state(const ContactInput& in);
 

@@ -173,16 +173,24 @@ struct HeatSolver::Impl {
     return heat;
   }
 
-  void put_heat(std::span<const std::int32_t> nodes, std::span<const double> power, double dt) {
-    double sources = 0.0, stored = 0.0;
+  // Calls f(i) for the nodes `nodes` (empty: every node) that carry heat capacity.
+  template <class F>
+  void each_node(std::span<const std::int32_t> nodes, const F& f) const {
     const std::size_t count = nodes.empty() ? t.size() : nodes.size();
     for (std::size_t k = 0; k < count; ++k) {
       const auto i = nodes.empty() ? k : static_cast<std::size_t>(nodes[k]);
+      if (capacity[i] > 0.0) f(i);
+    }
+  }
+
+  void put_heat(std::span<const std::int32_t> nodes, std::span<const double> power, double dt) {
+    double sources = 0.0, stored = 0.0;
+    each_node(nodes, [&](std::size_t i) {
       const double heat = dt * power[i];
-      if (heat == 0.0 || !(capacity[i] > 0.0)) continue;
+      if (heat == 0.0) return;
       sources += heat;
       stored += heat_node(i, heat);
-    }
+    });
     balance.sources += sources;
     balance.stored += stored;
   }
@@ -250,13 +258,10 @@ struct HeatSolver::Impl {
   // The planned rates over dt on `nodes` (empty: every node).
   void flow(double dt, std::span<const std::int32_t> nodes) {
     double boundary = 0.0, stored = 0.0;
-    const std::size_t count = nodes.empty() ? t.size() : nodes.size();
-    for (std::size_t k = 0; k < count; ++k) {
-      const auto i = nodes.empty() ? k : static_cast<std::size_t>(nodes[k]);
-      if (!(capacity[i] > 0.0)) continue;
+    each_node(nodes, [&](std::size_t i) {
       boundary += dt * boundary_rate[i];
       stored += heat_node(i, dt * rate[i]);
-    }
+    });
     balance.boundary += boundary;
     balance.stored += stored;
   }
