@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "../verification/two_blocks_model.hpp"
 #include "abut/io/run.hpp"
 #include "test_deck_helpers.hpp"
 #include "test_files.hpp"
@@ -257,33 +258,7 @@ TEST(RunStaticHeat, BarHeatedByARampedFlux) {
 
 // Two blocks, k = 100 and 50 W/(m K), 50 mm each, 0.02 x 0.02 m, non-matching meshes, clamped,
 // in contact with a conductance h = 2000 W/(m^2 K).
-const std::string kBlocks = R"(*UNIT_SYSTEM
-SI, C
-*COMPONENT_BOX
-1, 1, 5, 2, 2
-0.0, 0.0, 0.0, 0.05, 0.02, 0.02
-*COMPONENT_BOX
-2, 2, 4, 3, 3
-0.05, 0.0, 0.0, 0.1, 0.02, 0.02
-*MAT_ELASTIC
-1, 7800.0, 2.0e11, 0.0, 0, 1
-*MAT_ELASTIC
-2, 7800.0, 2.0e11, 0.0, 0, 2
-*PROP_THERMAL
-1, 460.0, 100.0
-2, 460.0, 50.0
-*PART
-"hot block"
-1, 1
-"cold block"
-2, 2
-*GEOMETRY_BOX
-1
--0.001, -1.0, -1.0, 0.001, 1.0, 1.0
-*GEOMETRY_BOX
-2
-0.099, -1.0, -1.0, 0.101, 1.0, 1.0
-*BC_MOTION
+const std::string kBlocks = std::string(verification::kTwoBlocksModel) + R"(*BC_MOTION
 G, 1, XYZ
 G, 2, XYZ
 *CONTACT

@@ -20,6 +20,7 @@
 #include "abut/io/deck.hpp"
 #include "abut/solver/static_heat.hpp"
 #include "abut/solver/static_solver.hpp"
+#include "two_blocks_model.hpp"
 
 namespace abut {
 namespace {
@@ -29,33 +30,7 @@ namespace {
 // (x = 0 and x = 0.1), touching at x = 0.05; Poisson's ratio 0, small displacements. Resistances
 // L_1/k_1 = 5e-4, 1/h = 5e-4, L_2/k_2 = 1e-3 m^2 K/W: with T_1 - T_2 = 100 K, q = 5e4 W/m^2, 20 W
 // through the 4e-4 m^2 interface, and a jump of 25 K.
-const std::string kBlocks = R"(*UNIT_SYSTEM
-SI, C
-*COMPONENT_BOX
-1, 1, 5, 2, 2
-0.0, 0.0, 0.0, 0.05, 0.02, 0.02
-*COMPONENT_BOX
-2, 2, 4, 3, 3
-0.05, 0.0, 0.0, 0.1, 0.02, 0.02
-*MAT_ELASTIC
-1, 7800.0, 2.0e11, 0.0, 0, 1
-*MAT_ELASTIC
-2, 7800.0, 2.0e11, 0.0, 0, 2
-*PROP_THERMAL
-1, 460.0, 100.0
-2, 460.0, 50.0
-*PART
-"hot block"
-1, 1
-"cold block"
-2, 2
-*GEOMETRY_BOX
-1
--0.001, -1.0, -1.0, 0.001, 1.0, 1.0
-*GEOMETRY_BOX
-2
-0.099, -1.0, -1.0, 0.101, 1.0, 1.0
-*BC_TEMPERATURE
+const std::string kBlocks = std::string(verification::kTwoBlocksModel) + R"(*BC_TEMPERATURE
 G, 1, 0, 100.0
 G, 2, 0, 0.0
 *CONTACT
