@@ -91,7 +91,7 @@ double ContactInterface::node_cover(const Pass& pass, std::size_t p, const Partn
   if (h.facet < 0 || target.surface.twin[h.facet] >= 0) return 1.0;
   const std::int32_t node = own.point_node[p];
   constexpr std::size_t kMaxRing = 64;
-  std::array<std::int32_t, kMaxRing> ring{};
+  std::array<std::int32_t, kMaxRing> ring;  // the first `count` are set
   std::size_t count = 0;
   ring[count++] = h.facet;
   const auto& h_nodes = target.surface.facets[h.facet];
@@ -131,6 +131,38 @@ double ContactInterface::node_cover(const Pass& pass, std::size_t p, const Partn
     total += 0.5 * norm(cross(x11 - x00, x01 - x10));
   }
   return total > 0.0 ? std::min(covered / total, 1.0) : 1.0;
+}
+
+// The node's counterpart of meet_by_cell's facing search. A node whose nearest facet is a wall
+// edge-on to its surface gets from it almost no force (its area projected on the wall's normal),
+// however deep it lies. Issue 27: a plate's nodes under a block's bottom edges lie nanometres
+// beside or inside the block's side walls as the elastic block breathes with Poisson's ratio;
+// they flickered between the wall (no push) and the bottom (half their area pressing), the
+// block rang and walked off a slope it should have held. The nearest facet facing the node
+// within alpha_edge, when the narrow phase accepts one and part of the node's area lies over it,
+// presses instead; a node truly beside a wall (none of its area over a facing facet) keeps it.
+Partner ContactInterface::facing_node_partner(const Pass& pass, std::size_t p, const PointFrame& f,
+                                              const ContactInput& in, const Partner& h,
+                                              std::optional<double>& cover) const {
+  if (h.facet < 0 || f.free || f.two_sided || settings_.sense == ContactSense::Negative) return h;
+  if (-dot(f.normal, h.normal) >= sharp_cos_) return h;
+  const Side& own = sides_[pass.own];
+  const Side& target = sides_[pass.target];
+  // Only a node at the wall, not one clearly beside it: a facing facet accepts a node only on its
+  // border band (kOnBorder of its size) or within delta_edge.
+  if (h.gap > std::max(settings_.edge_tolerance, kOnBorder * target.facet_min_edge[h.facet]))
+    return h;
+  const TargetFacets facets = target_facets(target, target.depth, in, bands_current_);
+  PartnerRules rules = partner_rules(own, p);
+  rules.facing = sharp_cos_;
+  const auto first = pass.candidates.offsets[p], last = pass.candidates.offsets[p + 1];
+  const Partner facing = find_partner(facets, {pass.candidates.facets.data() + first, last - first},
+                                      f.nodes, f.x, f.normal, rules);
+  if (facing.facet < 0) return h;
+  const double covered = node_cover(pass, p, facing, in);
+  if (!(covered > 0.0)) return h;
+  cover = covered;
+  return facing;
 }
 
 }  // namespace abut

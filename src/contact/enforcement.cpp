@@ -321,6 +321,8 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   }
 
   Partner h = partner_of(pass, p, f, in, last_partner);
+  std::optional<double> cover;  // node_cover against h, where already known
+  if (node_point) h = facing_node_partner(pass, p, f, in, h, cover);
   // An integration point acts with the part of its cell over the other surface, spread over the
   // nodes of both as the cell's overlaps give (mortar.hpp), at the mean gap over that part (the
   // mortar gap: its centroids on both surfaces, (x_own - x_other) . n less the pair's gap), so
@@ -410,7 +412,8 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     return;
   }
   // A node on the other surface's border presses with the part of its area over that surface.
-  if (node_point && !f.free && !f.two_sided && !from_behind) area *= node_cover(pass, p, h, in);
+  if (node_point && !f.free && !f.two_sided && !from_behind)
+    area *= cover ? *cover : node_cover(pass, p, h, in);
   // Along the facet's normal, or radially around a shell's rounded edge.
   const Spring r = partner_spring(h.facet, h.xi, h.eta, h.normal);
   // The push on the point: a cell's along its own normal (the direction of its cover).

@@ -492,6 +492,8 @@ void ContactInterface::initial_state(const ContactInput& in) {
       if (m_min > 0.0) omega2[p] = 2.0 * k_bound / m_min;
       if (!f.active) continue;
       Partner h = partner_of(pass, p, f, in, -1);
+      std::optional<double> cover;
+      if (own.point_node[p] >= 0) h = facing_node_partner(pass, p, f, in, h, cover);
       // An integration point's partner and gap as the steps find them: over its cell
       // (cell_cover.cpp).
       CellOverlap cell;

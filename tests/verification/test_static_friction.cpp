@@ -164,14 +164,6 @@ class StaticFriction : public ::testing::TestWithParam<Case> {};
 // take 20 deg, mu_s = 0.5, mu_d = 0.3 and v0 = 0.5 m/s (d = 20.42 mm).
 TEST_P(StaticFriction, HoldsWhereStaticFrictionShould) {
   const Case c = GetParam();
-  // An open defect, not a cell without meaning: symmetric N2S on the matched mesh, set down under
-  // the full weight, elastic block. The plane's nodes on the block's border pressed with their
-  // whole tributary area (half or three quarters beside the block), and the block walked off;
-  // since they press with the part over the block (ContactInterface::node_cover) the rigid block
-  // holds (2.2 um), but the elastic one still slides (2.1 mm in 0.1 s). Issue 27, item 3.
-  if (c.discretisation == Discretisation::N2SSymmetric && c.mesh == Mesh::Matched &&
-      c.path == Path::SetDown && c.body == Body::Elastic)
-    GTEST_SKIP() << "open defect: the elastic block set down in symmetric N2S slides";
   Slope slope{25.0, 0.5, 0.4};
   if (c.path == Path::Ramped) slope.ramp = 0.02;
   if (c.path == Path::Stopping) slope = {20.0, 0.5, 0.3, 0.5};

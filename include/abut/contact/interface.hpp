@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -369,6 +370,12 @@ class ContactInterface {
   // h; 1 where that does not apply (see there).
   double node_cover(const Pass& pass, std::size_t p, const Partner& h,
                     const ContactInput& in) const;
+  // N2S (cell_cover.cpp): node point p's partner h, or, where h does not face the node within
+  // alpha_edge, the nearest facet that does and that part of its area lies over (then `cover`
+  // is set to node_cover against it).
+  Partner facing_node_partner(const Pass& pass, std::size_t p, const PointFrame& f,
+                              const ContactInput& in, const Partner& h,
+                              std::optional<double>& cover) const;
   // ContactSetupError "memory" when the points made so far and `planned` more would need more
   // than settings_.memory_limit.
   void require_point_memory(std::size_t planned) const;
