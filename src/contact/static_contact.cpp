@@ -203,6 +203,8 @@ void StaticContact::evaluate(const ContactInput& in) {
   rules.smooth_reach = std::tan(settings_.edge_angle * kPi / 180.0);
   const double kn_default = settings_.penalty;
   const double kt = settings_.stick_slope > 0.0 ? settings_.stick_slope : kn_default;
+  const bool frictional =
+      settings_.stick || !std::holds_alternative<Frictionless>(settings_.tangential_law);
   std::vector<StaticContactElement> slot(np);  // small: weights and a 3 x 3 tangent
   std::vector<std::uint8_t> active(np, 0), slipping(np, 0);
   const auto count = static_cast<std::int64_t>(np);
@@ -337,27 +339,33 @@ void StaticContact::evaluate(const ContactInput& in) {
       pressure = r.pressure, kn = r.stiffness, energy = r.energy;
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) C[i][j] = kn * normal[i] * normal[j];
-      if (settings_.friction > 0.0 || settings_.stick) {
+      if (frictional) {
         const Vec3 slip = tangential(motion, normal);
         const Vec3 t0 = c.in_contact ? tangential(c.traction, normal) : Vec3{};
         const Vec3 trial = t0 - slip * kt;
-        const double limit = settings_.friction * pressure;
+        // Per unit area: the normal "force" is the pressure on an area of 1.
+        const SlipState state{std::max(pressure, 0.0), 1.0, 0.0, in.time, x};
+        const SlipLimits limits = slip_limits(settings_.tangential_law, state);
+        const double hold = c.in_contact && c.sliding ? limits.slide : limits.stick;
         const double size = norm(trial);
         out.slip = slip;
-        if (settings_.stick || size <= limit) {
+        if (settings_.stick || size <= hold) {
           traction = trial;
           for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 3; ++j) C[i][j] += kt * P[i][j];
         } else {
+          const double limit = limits.slide;
+          const double slope = slide_slope(settings_.tangential_law, state);
           const Vec3 th = trial / size;
           traction = th * limit;
           slipping[p] = 1;
+          h.sliding = true;
           const double s = limit * kt / size;
           for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 3; ++j) {
               double tt = 0.0;  // ((I - th th) P)_ij
               for (int k = 0; k < 3; ++k) tt += ((i == k) - th[i] * th[k]) * P[k][j];
-              C[i][j] += settings_.friction * kn * th[i] * normal[j] + s * tt;
+              C[i][j] += slope * kn * th[i] * normal[j] + s * tt;
             }
           h.slip_work = out.area * limit * (size - limit) / kt;  // |t| x plastic slip
         }

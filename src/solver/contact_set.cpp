@@ -69,7 +69,8 @@ bool one_way_of(const ContactSpec& spec) {
   return spec.one_way || spec.surface1.type == EntityType::NodeSet;
 }
 
-// The tangential law of a contact: *CONTACT_FRICTION, or seed 000's Coulomb mu (constant or fcn).
+}  // namespace
+
 TangentialLaw tangential_law_of(const ContactSpec& spec, const FunctionTable* table, double term) {
   using Law = ContactSpec::FrictionLaw;
   const auto& c = spec.friction_c;
@@ -113,6 +114,8 @@ TangentialLaw tangential_law_of(const ContactSpec& spec, const FunctionTable* ta
   }
   return Frictionless{};
 }
+
+namespace {
 
 ContactSettings settings_of(const Model& model, const ContactSpec& spec) {
   ContactSettings s;

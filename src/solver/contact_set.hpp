@@ -16,6 +16,11 @@ namespace abut {
 // and gap; a *CURVE: of pres) or of *CONTACT_THERMAL, and the friction heat split of fric_heat.
 ThermalContactSettings thermal_of(const Model& model, const ContactSpec& spec);
 
+// The tangential law of a *CONTACT (laws/tangential.hpp), for explicit and static steps:
+// *CONTACT_FRICTION, or seed 000's Coulomb mu (constant, or a *FUNCTION of the model's `table`
+// evaluated with term = `term`).
+TangentialLaw tangential_law_of(const ContactSpec& spec, const FunctionTable* table, double term);
+
 class ContactSet {
  public:
   // `node_mass`: lumped nodal masses; initial velocities give v_max of the automatic penalty.

@@ -316,5 +316,97 @@ TEST(StaticContact, SlidingBlockShearIsMuTimesNormalForce) {
   EXPECT_EQ(active, 16);
 }
 
+// Two blocks of two_blocks(2, 2) with the lower one held at every node (a rigid foundation) and
+// the upper one pressed by a pressure p on its top, held in x and y at every node (it translates
+// as a whole: no shear, no tipping, no Poisson slip sideways): the contact pressure is p and every
+// point slips alike, along x only. Step 1 presses it; step 2 moves it along x to `drag` in
+// `increments` fixed increments.
+struct DraggedBlock {
+  Model m;
+  std::vector<std::int32_t> upper;
+  DraggedBlock(double p, double drag, int increments,
+               const std::function<void(ContactSpec&)>& law) {
+    m = two_blocks(2, 2);
+    add_contact(m, Discretisation::SurfaceToSurface, 10.0 * kE, 0.0);
+    law(m.contacts.back());
+    std::vector<std::uint8_t> in_upper(m.mesh.nodes.size(), 0);
+    for (std::size_t h = 0; h < m.mesh.hex_count(); ++h)
+      if (m.mesh.hex_part[h] == 2)
+        for (const std::int32_t a : m.mesh.hexes[h]) in_upper[a] = 1;
+    StaticStep& step1 = m.static_steps[0];
+    step1.displacements.clear();
+    for (std::size_t i = 0; i < m.mesh.nodes.size(); ++i) {
+      const auto node = static_cast<std::int32_t>(i);
+      if (!in_upper[i]) {
+        for (int dof = 0; dof < 3; ++dof) step1.displacements.push_back({node, dof, 0.0, {}, {}});
+        continue;
+      }
+      upper.push_back(node);
+      step1.displacements.push_back({node, 0, 0.0, {}, {}});
+      step1.displacements.push_back({node, 1, 0.0, {}, {}});
+    }
+    press_top(m, step1, p);
+    StaticStep step2 = step1;
+    step2.initial_increment = 1.0 / increments;
+    step2.max_increment = 1.0 / increments;
+    for (StepDisplacement& d : step2.displacements)
+      if (in_upper[d.node] && d.dof == 0) d.value = drag;
+    m.static_steps.push_back(step2);
+  }
+  // The friction force on the upper block (the reaction of its held x dofs).
+  double shear(const StaticSolver& s) const {
+    double rx = 0.0;
+    for (const std::int32_t i : upper) rx += s.reaction()[3 * i];
+    return rx;
+  }
+};
+
+// Tresca (Metafor's TrescaContactMaterial, seed 002): sliding shear m_d k A whatever the pressure.
+// Face A = 1 mm^2, k = 100 MPa, m_d = 0.5: 50 N, pressed by 100 and 200 MPa (Coulomb would give
+// mu times those). The drag, 1e-4 mm, is far beyond the stick spring's m k / k_t = 2.4e-5 mm;
+// the overlap shrinks by it (1e-4 of A).
+TEST(StaticContact, TrescaSlidingShearIsMdKTimesAreaWhateverThePressure) {
+  for (const double p : {100.0, 200.0}) {
+    DraggedBlock b(p, 1e-4, 4, [](ContactSpec& c) {
+      c.friction_law = ContactSpec::FrictionLaw::Tresca;
+      c.friction_c[0] = 0.6;
+      c.friction_c[1] = 0.5;
+      c.friction_c[2] = 100.0;
+    });
+    StaticSolver s(b.m, tight());
+    s.run();
+    const double shear = b.shear(s);
+    std::cout << "Tresca, pressed by " << p << " MPa: shear " << shear << " N\n";
+    EXPECT_NEAR(shear, 0.5 * 100.0 * 1.0, 1e-3 * 50.0);
+  }
+}
+
+// Static and dynamic Coulomb (Metafor's CoulombContactMaterial, seed 002), mu_s = 0.5, mu_d = 0.3,
+// p = 100 MPa on A = 1 mm^2, the stick spring k_t = the penalty (2.1e6 N/mm^3): the shear is
+// k_t u A while it sticks, u the drag, up to mu_s p A = 50 N at u = 2.38e-5 mm, then mu_d p A.
+// Dragged in 60 increments of 1e-6 mm (0.021 of p A each): the largest shear at a converged
+// increment is within one increment below mu_s p A, the last is mu_d p A.
+TEST(StaticContact, StaticCoulombHoldsUpToMuSThenSlidesAtMuD) {
+  const double mu_s = 0.5, mu_d = 0.3, p = 100.0;
+  DraggedBlock b(p, 6e-5, 60, [&](ContactSpec& c) {
+    c.friction_law = ContactSpec::FrictionLaw::Coulomb;
+    c.mu_static = mu_s;
+    c.mu_dynamic = mu_d;
+  });
+  StaticSolver s(b.m, tight());
+  double largest = 0.0;
+  s.run([&](const StaticIncrement& inc) {
+    if (inc.step == 1) largest = std::max(largest, b.shear(s));
+  });
+  const double shear = b.shear(s), increment = 10.0 * kE * 1e-6 * 1.0;
+  std::cout << "static/dynamic Coulomb: largest shear " << largest << " N (mu_s p A = " << mu_s * p
+            << "), at the end " << shear << " N (mu_d p A = " << mu_d * p << ")\n";
+  EXPECT_LE(largest, mu_s * p * (1.0 + 1e-9));
+  EXPECT_GT(largest, mu_s * p - increment);
+  EXPECT_NEAR(shear, mu_d * p, 1e-6 * mu_d * p);
+  for (const StaticContactPoint& pt : s.contacts()[0].points())
+    if (pt.active) EXPECT_TRUE(pt.slipping);
+}
+
 }  // namespace
 }  // namespace abut

@@ -9,7 +9,10 @@
 // (Gauss weight x current Jacobian, or the node's tributary area):
 //   gap g = n . sum_a w_a x_a (negative = penetration d = -g), pressure p = law(d),
 //   tangential traction t: an elastic stick spring k_t on the relative motion since the last
-//   converged state, returned to |t| <= mu p (Coulomb),
+//   converged state, returned to the tangential law's limit (laws/tangential.hpp, the explicit
+//   interface's laws): a point that stuck at the last converged state holds up to the static
+//   limit, one that slid up to the sliding one; beyond it slides at the sliding limit L (mu_d p
+//   for Coulomb, m k for Tresca),
 //   force on node a: f_a = w_a A (p n + t).
 // A surface-to-surface point stands for its cell (mortar.hpp; issue 27): unless tied or small
 // sliding, it acts over the part of its cell that lies over the facets it faces, with A that
@@ -23,7 +26,7 @@
 // eq. 193; the geometric terms of node-to-face contact, eqs. 118-122, are left out):
 //   normal   A w_a w_b (dp/dd) n (x) n
 //   stick    A w_a w_b k_t (I - n (x) n)
-//   slip     A w_a w_b [mu (dp/dd) t^ (x) n + (mu p k_t / |t_trial|)(I - t^ (x) t^)(I - n (x) n)]
+//   slip     A w_a w_b [(dL/dp)(dp/dd) t^ (x) n + (L k_t / |t_trial|)(I - t^ (x) t^)(I - n (x) n)]
 // (the return-mapping tangent of Coulomb friction, e.g. Wriggers, Computational Contact Mechanics,
 // 2nd ed., 2006, section 10.3.2; unsymmetric when slipping). Tied contact: a bilinear spring in
 // every direction on the relative motion since the pair was found, p = k_n d in tension too.
@@ -37,6 +40,7 @@
 #include "abut/contact/broad_phase.hpp"
 #include "abut/contact/interface.hpp"
 #include "abut/contact/laws/normal.hpp"
+#include "abut/contact/laws/tangential.hpp"
 #include "abut/contact/laws/thermal.hpp"
 #include "abut/contact/mortar.hpp"
 #include "abut/contact/settings.hpp"
@@ -50,7 +54,9 @@ struct StaticContactSettings {
   int accuracy_level = 2;  // Gauss points per direction of a secondary facet: 1, 2 or 3 levels
   NormalLaw normal = LinearPenalty{};
   double penalty = 0.0;        // pfac [stress / length], passed to the normal law
-  double friction = 0.0;       // mu; 0: frictionless
+  // Its limits per unit area (normal force p, area 1); laws whose limits depend on the sliding
+  // speed are refused by the solver (their tangent would need d/dV).
+  TangentialLaw tangential_law = Frictionless{};
   double stick_slope = 0.0;    // k_t [stress / length]; 0: the normal penalty
   bool tied = false;           // bonded in every direction from the first evaluation on
   bool small_sliding = false;  // partners found at the first evaluation only
@@ -122,9 +128,10 @@ class StaticContact {
   void evaluate(const ContactInput& in);
   // The evaluated state becomes the history (friction, tied pairs, small-sliding partners).
   void commit();
-  // *CHANGE FRICTION: new Coulomb coefficient and stick slope from the next evaluation on.
-  void change_friction(double mu, double stick_slope) {
-    settings_.friction = mu;
+  // *CHANGE FRICTION: a new Coulomb coefficient (when given) and stick slope from the next
+  // evaluation on.
+  void change_friction(std::optional<double> mu, double stick_slope) {
+    if (mu) settings_.tangential_law = Coulomb{*mu, *mu, {}, {}};
     settings_.stick_slope = stick_slope;
   }
   // *CHANGE SURFACE BEHAVIOR: a new normal law and penalty from the next evaluation on; a tied
@@ -155,6 +162,7 @@ class StaticContact {
     std::int32_t facet = -1;  // partner facet (tied and small sliding: fixed)
     double xi = 0.0, eta = 0.0;
     Vec3 traction;  // committed tangential traction
+    bool sliding = false;  // beyond the static limit: held only up to the sliding one
     Vec3 offset;    // tied: relative position x_point - x_partner when the pair formed
     Vec3 total_slip;
     double slip_work = 0.0;

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 #include <variant>
 
 #include "abut/core/error.hpp"
 #include "abut/solver/contact_surfaces.hpp"
+#include "solver/contact_set.hpp"
 
 namespace abut::detail {
 
@@ -49,17 +51,18 @@ void check_static(const ContactSpec& spec) {
     case Law::Impetus:
     case Law::None:
     case Law::Coulomb:
+    case Law::Tresca:
     case Law::Stick:
     case Law::Freeze:
       break;
-    default:
+    case Law::Viscous:
+    case Law::Darmstad:
+    case Law::Renard:
       throw InputError(spec.friction_where,
-                       "this friction law is not supported in static steps yet (NONE, COULOMB, "
-                       "STICK and FREEZE/TIED are)");
+                       "friction laws of the sliding speed (Ifric 1-3) are not supported in "
+                       "static steps yet (NONE, COULOMB with mu_s and mu_d, TRESCA, STICK and "
+                       "FREEZE/TIED are)");
   }
-  if (spec.friction_law == Law::Coulomb && spec.mu_dynamic != spec.mu_static)
-    throw InputError(spec.friction_where,
-                     "static steps take one Coulomb coefficient: give mu_d equal to mu_s");
 }
 
 // Young's modulus of a part from its initial moduli: E = 9 K G / (3 K + G).
@@ -110,9 +113,7 @@ StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side&
   s.accuracy_level = spec.accuracy_level;
   s.small_sliding = spec.small_sliding;
   s.weight = weight;
-  s.friction = spec.friction_law == Law::Coulomb   ? spec.mu_static
-               : spec.friction_law == Law::Impetus ? spec.friction
-                                                   : 0.0;
+  s.tangential_law = tangential_law_of(spec, &model.functions, model.time.end_time);
   s.stick = spec.friction_law == Law::Stick;
   s.tied = spec.friction_law == Law::Freeze;
   double young = 0.0;
@@ -135,7 +136,7 @@ StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side&
   const auto no_penalty = [](const SkinFace&) { return 0.0; };
   const Nodes& nodes = mesh.nodes;
   const ContactInput initial{nodes.x, nodes.y, nodes.z, {}, {}, {}, 0.0, 0.0, {}};
-  return StaticContact(s, contact_surface(mesh, own.faces, no_penalty),
+  return StaticContact(std::move(s), contact_surface(mesh, own.faces, no_penalty),
                        contact_surface(mesh, target.faces, no_penalty), own.nodes, initial);
 }
 

@@ -341,8 +341,7 @@ struct StaticSolver::Impl {
           if (c.settings().tied || c.settings().stick)
             throw InputError(change.where,
                              "*CHANGE FRICTION on a tied or sticking contact is not supported");
-          c.change_friction(change.friction.value_or(c.settings().friction),
-                            change.stick_slope.value_or(c.settings().stick_slope));
+          c.change_friction(change.friction, change.stick_slope.value_or(c.settings().stick_slope));
         }
       }
       const detail::StepLoads loads(model, step, u, history, total);

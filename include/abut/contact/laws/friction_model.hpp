@@ -15,6 +15,7 @@ struct ViscousFriction {
   double mu(double p, double v) const {
     return fric + c[0] * p + c[1] * v + c[2] * p * v + c[3] * p * p + c[4] * v * v;
   }
+  double dmu_dp(double p, double v) const { return c[0] + c[2] * v + 2.0 * c[3] * p; }
 };
 
 // Ifric = 2, modified Darmstad: mu = Fric + C1 exp(C2 V) p^2 + C3 exp(C4 V) p + C5 exp(C6 V).
@@ -24,6 +25,9 @@ struct DarmstadFriction {
   double mu(double p, double v) const {
     return fric + c[0] * std::exp(c[1] * v) * p * p + c[2] * std::exp(c[3] * v) * p +
            c[4] * std::exp(c[5] * v);
+  }
+  double dmu_dp(double p, double v) const {
+    return 2.0 * c[0] * std::exp(c[1] * v) * p + c[2] * std::exp(c[3] * v);
   }
 };
 
@@ -44,6 +48,7 @@ struct RenardFriction {
     }
     return mu_d - 1.0 / (1.0 / (mu_d - mu_min) + (v - v2) * (v - v2));
   }
+  double dmu_dp(double, double) const { return 0.0; }
 };
 
 }  // namespace abut

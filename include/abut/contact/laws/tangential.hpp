@@ -8,11 +8,16 @@
 //   Coulomb           mu_s F_n / mu_d F_n (Metafor CoulombContactMaterial, seed 002); mu from a
 //                     callback (seed 000's mu = fcn) or a Radioss Ifric law (friction_model.hpp)
 //   Tresca            m_s k A / m_d k A, independent of the pressure (Metafor
-//   TrescaContactMaterial) Sticking          no limit: the tangential spring holds while the
-//   contact is closed
+//                     TrescaContactMaterial)
+//   Sticking          no limit: the tangential spring holds while the contact is closed
 //                     (Metafor StickingContactMaterial, OptiStruct STICK)
+// A law gives its limits (explicit and static steps) and the slope of the sliding limit in the
+// normal force (the consistent tangent of static steps, static_contact.hpp): a new law provides
+// both, or std::visit below does not compile.
+#include <cmath>
 #include <functional>
 #include <limits>
+#include <type_traits>
 #include <variant>
 
 #include "abut/contact/laws/friction_model.hpp"
@@ -58,6 +63,7 @@ inline TangentialResult return_to_limit(Vec3 previous, const Vec3& normal,
 
 struct Frictionless {
   SlipLimits limits(const SlipState&) const { return {}; }
+  double slide_slope(const SlipState&) const { return 0.0; }
 };
 
 // mu(pres, vtang, t, x, y, z), seed 000's fcn(fid); must be thread-safe and cheap.
@@ -75,16 +81,46 @@ struct Coulomb {
     const double p = s.area > 0.0 ? s.normal_force / s.area : 0.0;
     if (function)
       return function(p, s.slip_speed, s.time, s.position.x, s.position.y, s.position.z);
-    if (const auto* m = std::get_if<ViscousFriction>(&model)) return m->mu(p, s.slip_speed);
-    if (const auto* m = std::get_if<DarmstadFriction>(&model)) return m->mu(p, s.slip_speed);
-    if (const auto* m = std::get_if<RenardFriction>(&model)) return m->mu(p, s.slip_speed);
-    return dynamic ? mu_dynamic : mu_static;
+    // Every alternative answers here: a model added to FrictionModel without a case does not
+    // compile (issue 31), rather than falling back to mu_s.
+    return std::visit(
+        [&](const auto& m) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(m)>, std::monostate>)
+            return dynamic ? mu_dynamic : mu_static;
+          else
+            return m.mu(p, s.slip_speed);
+        },
+        model);
   }
   SlipLimits limits(const SlipState& s) const {
     const double mu_s = std::max(mu(s, false), 0.0);
     const bool varies = function || !std::holds_alternative<std::monostate>(model);
     const double mu_d = varies ? mu_s : std::max(mu_dynamic, 0.0);
     return {mu_s * s.normal_force, mu_d * s.normal_force};
+  }
+  // d(mu p A)/d(p A) = mu + p dmu/dp at the sliding speed. A friction function's dmu/dp is a
+  // central difference (1e-6 of p, or of 1 at p = 0, in the deck's units).
+  double slide_slope(const SlipState& s) const {
+    const double p = s.area > 0.0 ? s.normal_force / s.area : 0.0;
+    double dmu_dp = 0.0;
+    if (function) {
+      const double h = 1e-6 * std::max(std::abs(p), 1.0);
+      auto at = [&](double q) {
+        return function(q, s.slip_speed, s.time, s.position.x, s.position.y, s.position.z);
+      };
+      dmu_dp = (at(p + h) - at(p - h)) / (2.0 * h);
+    } else {
+      dmu_dp = std::visit(
+          [&](const auto& m) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(m)>, std::monostate>)
+              return 0.0;
+            else
+              return m.dmu_dp(p, s.slip_speed);
+          },
+          model);
+    }
+    const double mu_slide = mu(s, true);
+    return mu_slide > 0.0 ? mu_slide + p * dmu_dp : 0.0;
   }
 };
 
@@ -95,6 +131,7 @@ struct Tresca {
   SlipLimits limits(const SlipState& s) const {
     return {factor_static * shear_yield * s.area, factor_dynamic * shear_yield * s.area};
   }
+  double slide_slope(const SlipState&) const { return 0.0; }
 };
 
 struct Sticking {
@@ -102,12 +139,16 @@ struct Sticking {
     constexpr double kInf = std::numeric_limits<double>::infinity();
     return {kInf, kInf};
   }
+  double slide_slope(const SlipState&) const { return 0.0; }
 };
 
 using TangentialLaw = std::variant<Frictionless, Coulomb, Tresca, Sticking>;
 
 inline SlipLimits slip_limits(const TangentialLaw& law, const SlipState& s) {
   return std::visit([&](const auto& l) { return l.limits(s); }, law);
+}
+inline double slide_slope(const TangentialLaw& law, const SlipState& s) {
+  return std::visit([&](const auto& l) { return l.slide_slope(s); }, law);
 }
 
 // Radioss Ifiltr (seed 004, comment 8): F_t = a F_t + (1 - a) F_t,prev with a = Xfreq (1),
