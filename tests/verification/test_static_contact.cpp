@@ -405,7 +405,9 @@ TEST(StaticContact, StaticCoulombHoldsUpToMuSThenSlidesAtMuD) {
   EXPECT_GT(largest, mu_s * p - increment);
   EXPECT_NEAR(shear, mu_d * p, 1e-6 * mu_d * p);
   for (const StaticContactPoint& pt : s.contacts()[0].points())
-    if (pt.active) EXPECT_TRUE(pt.slipping);
+    if (pt.active) {
+      EXPECT_TRUE(pt.slipping);
+    }
 }
 
 }  // namespace
