@@ -344,7 +344,9 @@ void StaticContact::evaluate(const ContactInput& in) {
         const Vec3 t0 = c.in_contact ? tangential(c.traction, normal) : Vec3{};
         const Vec3 trial = t0 - slip * kt;
         // Per unit area: the normal "force" is the pressure on an area of 1.
-        const SlipState state{std::max(pressure, 0.0), 1.0, 0.0, in.time, x};
+        // The sliding speed: the slip over the increment (in.dt, 0: no rate).
+        const double speed = in.dt > 0.0 ? norm(slip) / in.dt : 0.0;
+        const SlipState state{std::max(pressure, 0.0), 1.0, speed, in.time, x};
         const SlipLimits limits = slip_limits(settings_.tangential_law, state);
         const double hold = c.in_contact && c.sliding ? limits.slide : limits.stick;
         const double size = norm(trial);
@@ -356,6 +358,12 @@ void StaticContact::evaluate(const ContactInput& in) {
         } else {
           const double limit = limits.slide;
           const double slope = slide_slope(settings_.tangential_law, state);
+          // d limit / d u through the sliding speed: (dL/dV) (1/dt) s^, s^ the slip's direction.
+          const double slip_size = norm(slip);
+          const Vec3 rate =
+              slip_size > 0.0 && in.dt > 0.0
+                  ? slip * (slide_rate_slope(settings_.tangential_law, state) / (in.dt * slip_size))
+                  : Vec3{};
           const Vec3 th = trial / size;
           traction = th * limit;
           slipping[p] = 1;
@@ -365,7 +373,7 @@ void StaticContact::evaluate(const ContactInput& in) {
             for (int j = 0; j < 3; ++j) {
               double tt = 0.0;  // ((I - th th) P)_ij
               for (int k = 0; k < 3; ++k) tt += ((i == k) - th[i] * th[k]) * P[k][j];
-              C[i][j] += slope * kn * th[i] * normal[j] + s * tt;
+              C[i][j] += slope * kn * th[i] * normal[j] - th[i] * rate[j] + s * tt;
             }
           h.slip_work = out.area * limit * (size - limit) / kt;  // |t| x plastic slip
         }

@@ -13,6 +13,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "abut/contact/static_contact.hpp"
@@ -47,10 +49,11 @@ struct PressedNode {
     evaluate({0, 0, -kDepth});
     contact.commit();  // pressed, sticking, no tangential traction yet
   }
+  double dt = 0.0;  // the increment: the sliding speed is the slip over it
   // The node at u (its facet follows in z only); the point's whole traction p n + t.
   Vec3 evaluate(const Vec3& u) {
     x[4] = u.x, y[4] = u.y, z[4] = u.z;
-    contact.evaluate({x, y, z, {}, {}, {}, 0, 0, {}});
+    contact.evaluate({x, y, z, {}, {}, {}, 0, dt, {}});
     return contact.elements().empty() ? Vec3{} : contact.elements()[0].traction;
   }
   const StaticContactPoint& point() const { return contact.points()[0]; }
@@ -121,6 +124,38 @@ TEST(StaticFrictionLaws, PressureDependentMuSlidesAtMuOfPTimesP) {
   EXPECT_NEAR(c.point().traction.x, -(fric + c1 * p) * p, 1e-12 * p);
   // The slope d(mu p)/dp = mu + p dmu/dp = 0.3 + 0.2 enters the tangent.
   EXPECT_LT(tangent_error(c, {0.1, 0.03, -kDepth}), 1e-6);
+}
+
+// Laws of the sliding speed V (Radioss Ifric 1 with its V and p V terms, Ifric 3), V the slip
+// over the increment dt = 0.5: mu(p, V) p at V = |slip| / dt, and the tangent with dL/dV.
+TEST(StaticFrictionLaws, SpeedDependentMuSlidesAtMuOfVAndTakesItsSlopeInTheTangent) {
+  const double p = kPenalty * kDepth;
+  ViscousFriction viscous;
+  viscous.fric = 0.2;
+  viscous.c[1] = 0.5;   // C2 V
+  viscous.c[2] = 0.01;  // C3 p V
+  RenardFriction renard;
+  renard.c = {0.2, 0.3, 0.5, 0.25, 0.1, 0.3};  // mu_s, mu_d, mu_max, mu_min, Vcr1, Vcr2
+  for (const FrictionModel& model : {FrictionModel{viscous}, FrictionModel{renard}}) {
+    for (const double slip : {0.02, 0.1, 0.4}) {  // V = 0.04, 0.2, 0.8 (Renard: each branch)
+      PressedNode c(Coulomb{0.0, 0.0, {}, model});
+      c.dt = 0.5;
+      const Vec3 u{slip, 0.3 * slip, -kDepth};
+      c.evaluate(u);
+      const double v = norm(Vec3{slip, 0.3 * slip, 0.0}) / c.dt;
+      const double mu = std::visit(
+          [&](const auto& m) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(m)>, std::monostate>)
+              return 0.0;
+            else
+              return m.mu(p, v);
+          },
+          model);
+      EXPECT_TRUE(c.point().slipping);
+      EXPECT_NEAR(norm(c.point().traction), mu * p, 1e-12 * p) << "slip " << slip;
+      EXPECT_LT(tangent_error(c, u), 1e-6) << "slip " << slip;
+    }
+  }
 }
 
 }  // namespace

@@ -67,10 +67,10 @@ TEST(StaticContactSetup, ExplicitOnlyFeaturesAreErrorsAtTheirCard) {
   expect_error([](ContactSpec& c) { c.stick_stress = 10.0; }, "sigma_stick");
   expect_error(
       [](ContactSpec& c) {
-        c.friction_law = ContactSpec::FrictionLaw::Renard;
+        c.friction_filter.kind = FrictionFilter::Kind::Simple;
         c.friction_where = {"t.k", 9, "", ""};
       },
-      "friction laws of the sliding speed (Ifric 1-3) are not supported in static steps");
+      "friction filtering is not supported in static steps");
   expect_error(
       [](ContactSpec& c) {
         c.sense = ContactSense::Bilateral;

@@ -410,5 +410,21 @@ TEST(StaticContact, StaticCoulombHoldsUpToMuSThenSlidesAtMuD) {
     }
 }
 
+// A law of the sliding speed in a static step (Radioss Ifric 1, seed 004): mu = Fric + C2 V with
+// V the slip over an increment over its length in step time: 1e-6 mm per 1/60 of the step,
+// V = 6e-5 mm per unit time, mu = 0.2 + 1000 V = 0.26, shear mu p A = 26 N once it slides.
+TEST(StaticContact, SpeedDependentFrictionSlidesAtMuOfTheIncrementsSlipSpeed) {
+  const double p = 100.0;
+  DraggedBlock b(p, 6e-5, 60, [](ContactSpec& c) {
+    c.friction_law = ContactSpec::FrictionLaw::Viscous;
+    c.mu_static = 0.2;  // Fric
+    c.friction_c = {0.0, 1000.0, 0.0, 0.0, 0.0, 0.0};
+  });
+  StaticSolver s(b.m, tight());
+  s.run();
+  std::cout << "viscous friction: shear " << b.shear(s) << " N\n";
+  EXPECT_NEAR(b.shear(s), 0.26 * p, 1e-6 * 0.26 * p);
+}
+
 }  // namespace
 }  // namespace abut

@@ -26,7 +26,9 @@
 // eq. 193; the geometric terms of node-to-face contact, eqs. 118-122, are left out):
 //   normal   A w_a w_b (dp/dd) n (x) n
 //   stick    A w_a w_b k_t (I - n (x) n)
-//   slip     A w_a w_b [(dL/dp)(dp/dd) t^ (x) n + (L k_t / |t_trial|)(I - t^ (x) t^)(I - n (x) n)]
+//   slip     A w_a w_b [(dL/dp)(dp/dd) t^ (x) n - (dL/dV) / dt t^ (x) s^
+//                       + (L k_t / |t_trial|)(I - t^ (x) t^)(I - n (x) n)]
+// (V = |s| / dt the sliding speed over the increment dt, s the slip, s^ its direction)
 // (the return-mapping tangent of Coulomb friction, e.g. Wriggers, Computational Contact Mechanics,
 // 2nd ed., 2006, section 10.3.2; unsymmetric when slipping). Tied contact: a bilinear spring in
 // every direction on the relative motion since the pair was found, p = k_n d in tension too.
@@ -54,8 +56,8 @@ struct StaticContactSettings {
   int accuracy_level = 2;  // Gauss points per direction of a secondary facet: 1, 2 or 3 levels
   NormalLaw normal = LinearPenalty{};
   double penalty = 0.0;        // pfac [stress / length], passed to the normal law
-  // Its limits per unit area (normal force p, area 1); laws whose limits depend on the sliding
-  // speed are refused by the solver (their tangent would need d/dV).
+  // Its limits per unit area (normal force p, area 1), at the sliding speed |slip| / dt over the
+  // increment (ContactInput::dt).
   TangentialLaw tangential_law = Frictionless{};
   double stick_slope = 0.0;    // k_t [stress / length]; 0: the normal penalty
   bool tied = false;           // bonded in every direction from the first evaluation on

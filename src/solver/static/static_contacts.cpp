@@ -22,8 +22,6 @@ constexpr double kDefaultInitialMaxFraction = 0.04;
 
 // Everything of the spec the static contact does not do: an error at the card that asks for it.
 void check_static(const ContactSpec& spec) {
-  using Law = ContactSpec::FrictionLaw;
-  if (spec.friction_function.valid()) not_static(spec.where, "a friction function (fid)");
   if (spec.begin_time != 0.0 || spec.end_time < 1e20)
     not_static(spec.where, "an activation window (t_start, t_end)");
   if (spec.initial_geometry || spec.moving_geometry)
@@ -47,22 +45,6 @@ void check_static(const ContactSpec& spec) {
   if (!spec.edge_where.file.empty()) not_static(spec.edge_where, "*CONTACT_EDGE");
   if (spec.friction_filter.kind != FrictionFilter::Kind::None)
     not_static(spec.friction_where, "friction filtering");
-  switch (spec.friction_law) {
-    case Law::Impetus:
-    case Law::None:
-    case Law::Coulomb:
-    case Law::Tresca:
-    case Law::Stick:
-    case Law::Freeze:
-      break;
-    case Law::Viscous:
-    case Law::Darmstad:
-    case Law::Renard:
-      throw InputError(spec.friction_where,
-                       "friction laws of the sliding speed (Ifric 1-3) are not supported in "
-                       "static steps yet (NONE, COULOMB with mu_s and mu_d, TRESCA, STICK and "
-                       "FREEZE/TIED are)");
-  }
 }
 
 // Young's modulus of a part from its initial moduli: E = 9 K G / (3 K + G).

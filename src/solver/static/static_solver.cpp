@@ -148,7 +148,7 @@ struct StaticSolver::Impl {
   // One attempt at an increment ending at step time tau. Returns the iterations used, or -1.
   // `base`: the hexes' equations of this step (contact elements are added per iteration).
   int newton(const StaticStep& step, const detail::StepLoads& loads, const detail::DofMap& dofs,
-             const ElementEquations& base, double tau, bool nonlinear_geometry,
+             const ElementEquations& base, double tau, double dtau, bool nonlinear_geometry,
              std::vector<double>& state, double& residual_out) {
     // The step's own Newton controls (*STATIC of a .k deck) where it gives them.
     const double force_tolerance = step.force_tolerance.value_or(controls.force_tolerance);
@@ -184,7 +184,9 @@ struct StaticSolver::Impl {
       }
       bool symmetric = true;
       for (StaticContact& c : contacts) {
-        c.evaluate({x, y, z, {}, {}, {}, tau, 0.0, {}});
+        // The increment's length: the sliding speed of rate-dependent friction is the slip over
+        // it (laws/tangential.hpp).
+        c.evaluate({x, y, z, {}, {}, {}, tau, dtau, {}});
         symmetric = symmetric && c.symmetric();
         for (const StaticContactElement& e : c.elements())
           for (int a = 0; a < e.count; ++a)
@@ -365,8 +367,8 @@ struct StaticSolver::Impl {
         for (int attempt = 1;; ++attempt) {
           std::vector<double> trial = u;
           double residual = 0.0;
-          const int iterations =
-              newton(step, loads, dofs, base, tau + dtau, nonlinear_geometry, trial, residual);
+          const int iterations = newton(step, loads, dofs, base, tau + dtau, dtau,
+                                        nonlinear_geometry, trial, residual);
           if (iterations >= 0) {
             u = std::move(trial);
             elements.commit();

@@ -16,6 +16,7 @@ struct ViscousFriction {
     return fric + c[0] * p + c[1] * v + c[2] * p * v + c[3] * p * p + c[4] * v * v;
   }
   double dmu_dp(double p, double v) const { return c[0] + c[2] * v + 2.0 * c[3] * p; }
+  double dmu_dv(double p, double v) const { return c[1] + c[2] * p + 2.0 * c[4] * v; }
 };
 
 // Ifric = 2, modified Darmstad: mu = Fric + C1 exp(C2 V) p^2 + C3 exp(C4 V) p + C5 exp(C6 V).
@@ -28,6 +29,10 @@ struct DarmstadFriction {
   }
   double dmu_dp(double p, double v) const {
     return 2.0 * c[0] * std::exp(c[1] * v) * p + c[2] * std::exp(c[3] * v);
+  }
+  double dmu_dv(double p, double v) const {
+    return c[0] * c[1] * std::exp(c[1] * v) * p * p + c[2] * c[3] * std::exp(c[3] * v) * p +
+           c[4] * c[5] * std::exp(c[5] * v);
   }
 };
 
@@ -49,6 +54,16 @@ struct RenardFriction {
     return mu_d - 1.0 / (1.0 / (mu_d - mu_min) + (v - v2) * (v - v2));
   }
   double dmu_dp(double, double) const { return 0.0; }
+  double dmu_dv(double, double v) const {
+    const double mu_d = c[1], mu_max = c[2], mu_min = c[3], v1 = c[4], v2 = c[5];
+    if (v <= v1) return (mu_max - c[0]) * (2.0 - 2.0 * v / v1) / v1;
+    if (v <= v2) {
+      const double s = (v - v1) / (v2 - v1);
+      return -(mu_max - mu_min) * 6.0 * s * (1.0 - s) / (v2 - v1);
+    }
+    const double q = 1.0 / (mu_d - mu_min) + (v - v2) * (v - v2);
+    return 2.0 * (v - v2) / (q * q);
+  }
 };
 
 }  // namespace abut

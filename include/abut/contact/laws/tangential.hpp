@@ -11,9 +11,9 @@
 //                     TrescaContactMaterial)
 //   Sticking          no limit: the tangential spring holds while the contact is closed
 //                     (Metafor StickingContactMaterial, OptiStruct STICK)
-// A law gives its limits (explicit and static steps) and the slope of the sliding limit in the
-// normal force (the consistent tangent of static steps, static_contact.hpp): a new law provides
-// both, or std::visit below does not compile.
+// A law gives its limits (explicit and static steps) and the slopes of the sliding limit in the
+// normal force and in the sliding speed (the consistent tangent of static steps,
+// static_contact.hpp): a new law provides all three, or std::visit below does not compile.
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -64,6 +64,7 @@ inline TangentialResult return_to_limit(Vec3 previous, const Vec3& normal,
 struct Frictionless {
   SlipLimits limits(const SlipState&) const { return {}; }
   double slide_slope(const SlipState&) const { return 0.0; }
+  double slide_rate_slope(const SlipState&) const { return 0.0; }
 };
 
 // mu(pres, vtang, t, x, y, z), seed 000's fcn(fid); must be thread-safe and cheap.
@@ -122,6 +123,29 @@ struct Coulomb {
     const double mu_slide = mu(s, true);
     return mu_slide > 0.0 ? mu_slide + p * dmu_dp : 0.0;
   }
+  // d(mu p A)/dV = p A dmu/dV (a friction function's by a central difference, 1e-6 of V or of 1).
+  double slide_rate_slope(const SlipState& s) const {
+    if (!(mu(s, true) > 0.0)) return 0.0;
+    const double p = s.area > 0.0 ? s.normal_force / s.area : 0.0;
+    double dmu_dv = 0.0;
+    if (function) {
+      const double h = 1e-6 * std::max(std::abs(s.slip_speed), 1.0);
+      auto at = [&](double v) {
+        return function(p, v, s.time, s.position.x, s.position.y, s.position.z);
+      };
+      dmu_dv = (at(s.slip_speed + h) - at(s.slip_speed - h)) / (2.0 * h);
+    } else {
+      dmu_dv = std::visit(
+          [&](const auto& m) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(m)>, std::monostate>)
+              return 0.0;
+            else
+              return m.dmu_dv(p, s.slip_speed);
+          },
+          model);
+    }
+    return s.normal_force * dmu_dv;
+  }
 };
 
 // Shear limit m k (seed 002: usually m sigma_0 / sqrt(3), k the shear yield stress), times area.
@@ -132,6 +156,7 @@ struct Tresca {
     return {factor_static * shear_yield * s.area, factor_dynamic * shear_yield * s.area};
   }
   double slide_slope(const SlipState&) const { return 0.0; }
+  double slide_rate_slope(const SlipState&) const { return 0.0; }
 };
 
 struct Sticking {
@@ -140,6 +165,7 @@ struct Sticking {
     return {kInf, kInf};
   }
   double slide_slope(const SlipState&) const { return 0.0; }
+  double slide_rate_slope(const SlipState&) const { return 0.0; }
 };
 
 using TangentialLaw = std::variant<Frictionless, Coulomb, Tresca, Sticking>;
@@ -149,6 +175,9 @@ inline SlipLimits slip_limits(const TangentialLaw& law, const SlipState& s) {
 }
 inline double slide_slope(const TangentialLaw& law, const SlipState& s) {
   return std::visit([&](const auto& l) { return l.slide_slope(s); }, law);
+}
+inline double slide_rate_slope(const TangentialLaw& law, const SlipState& s) {
+  return std::visit([&](const auto& l) { return l.slide_rate_slope(s); }, law);
 }
 
 // Radioss Ifiltr (seed 004, comment 8): F_t = a F_t + (1 - a) F_t,prev with a = Xfreq (1),
