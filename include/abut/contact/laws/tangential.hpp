@@ -82,14 +82,20 @@ struct Coulomb {
     const double p = s.area > 0.0 ? s.normal_force / s.area : 0.0;
     if (function)
       return function(p, s.slip_speed, s.time, s.position.x, s.position.y, s.position.z);
-    // Every alternative answers here: a model added to FrictionModel without a case does not
-    // compile (issue 31), rather than falling back to mu_s.
+    return of_model(dynamic ? mu_dynamic : mu_static,
+                    [&](const auto& m) { return m.mu(p, s.slip_speed); });
+  }
+  // `value(m)` of the model m that is set, `none` without one. Every alternative answers here: a
+  // model added to FrictionModel without mu, dmu_dp and dmu_dv does not compile (issue 31),
+  // rather than falling back to mu_s.
+  template <class Value>
+  double of_model(double none, Value&& value) const {
     return std::visit(
         [&](const auto& m) {
           if constexpr (std::is_same_v<std::decay_t<decltype(m)>, std::monostate>)
-            return dynamic ? mu_dynamic : mu_static;
+            return none;
           else
-            return m.mu(p, s.slip_speed);
+            return value(m);
         },
         model);
   }
@@ -111,14 +117,7 @@ struct Coulomb {
       };
       dmu_dp = (at(p + h) - at(p - h)) / (2.0 * h);
     } else {
-      dmu_dp = std::visit(
-          [&](const auto& m) {
-            if constexpr (std::is_same_v<std::decay_t<decltype(m)>, std::monostate>)
-              return 0.0;
-            else
-              return m.dmu_dp(p, s.slip_speed);
-          },
-          model);
+      dmu_dp = of_model(0.0, [&](const auto& m) { return m.dmu_dp(p, s.slip_speed); });
     }
     const double mu_slide = mu(s, true);
     return mu_slide > 0.0 ? mu_slide + p * dmu_dp : 0.0;
@@ -135,14 +134,7 @@ struct Coulomb {
       };
       dmu_dv = (at(s.slip_speed + h) - at(s.slip_speed - h)) / (2.0 * h);
     } else {
-      dmu_dv = std::visit(
-          [&](const auto& m) {
-            if constexpr (std::is_same_v<std::decay_t<decltype(m)>, std::monostate>)
-              return 0.0;
-            else
-              return m.dmu_dv(p, s.slip_speed);
-          },
-          model);
+      dmu_dv = of_model(0.0, [&](const auto& m) { return m.dmu_dv(p, s.slip_speed); });
     }
     return s.normal_force * dmu_dv;
   }
