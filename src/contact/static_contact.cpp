@@ -332,14 +332,34 @@ void StaticContact::evaluate(const ContactInput& in) {
         for (int j = 0; j < 3; ++j) C[i][j] = kn * normal[i] * normal[j] + kt * P[i][j];
     } else {
       const double reach_open = reach_at_clearance(settings_.normal);
+      const Adhesion* bond = settings_.adhesion ? &*settings_.adhesion : nullptr;
+      const bool adhesive = bond && c.in_contact && c.adhered && d < 0.0 && -d <= bond->zone();
       // Open beyond the law's reach. A point exactly touching (d = 0) is closed: it has no
       // pressure yet but its spring, so that bodies that only touch are not left floating.
-      if (reach_open > 0.0 ? d < -reach_open : d < 0.0) continue;
-      const NormalResponse r = abut::evaluate(settings_.normal, d, settings_.penalty);
+      if (!adhesive && (reach_open > 0.0 ? d < -reach_open : d < 0.0)) continue;
+      h.adhered = bond && (d > 0.0 || adhesive || (c.adhered && d >= 0.0));
+      NormalResponse r;
+      if (adhesive) {
+        const double slope = bond->max_stress / bond->zone();
+        r = {bond->pressure(-d), slope, 0.5 * slope * d * d};
+      } else {
+        r = abut::evaluate(settings_.normal, d, settings_.penalty);
+      }
       pressure = r.pressure, kn = r.stiffness, energy = r.energy;
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) C[i][j] = kn * normal[i] * normal[j];
-      if (frictional) {
+      if (adhesive) {
+        // The zone's viscosity replaces friction: t = -c slip / dt.
+        const Vec3 slip = tangential(motion, normal);
+        out.slip = slip;
+        if (in.dt > 0.0) {
+          const double viscous =
+              bond->viscous_factor * bond->fluid_viscosity / bond->zone() / in.dt;
+          traction = slip * -viscous;
+          for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) C[i][j] += viscous * P[i][j];
+        }
+      } else if (frictional) {
         const Vec3 slip = tangential(motion, normal);
         const Vec3 t0 = c.in_contact ? tangential(c.traction, normal) : Vec3{};
         const Vec3 trial = t0 - slip * kt;

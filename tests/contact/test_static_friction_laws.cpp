@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <type_traits>
 #include <variant>
 #include <vector>
@@ -31,7 +32,8 @@ struct PressedNode {
       z{0, 0, 0, 0, 0, 0, 0, 0};
   StaticContact contact;
 
-  static StaticContact make(const TangentialLaw& law, PressedNode& self) {
+  static StaticContact make(const TangentialLaw& law, PressedNode& self,
+                            std::optional<Adhesion> adhesion) {
     ContactSurface main, secondary;
     main.add({0, 1, 2, 3}, 1, 0.0, 1.0);
     secondary.add({4, 5, 6, 7}, 2, 0.0, 1.0);
@@ -41,10 +43,12 @@ struct PressedNode {
     s.depth = 0.5;
     s.search_distance = 0.5;
     s.tangential_law = law;
+    s.adhesion = adhesion;
     const std::vector<std::int32_t> nodes{4};
     return StaticContact(s, secondary, main, nodes, {self.x, self.y, self.z, {}, {}, {}, 0, 0, {}});
   }
-  explicit PressedNode(const TangentialLaw& law) : contact(make(law, *this)) {
+  explicit PressedNode(const TangentialLaw& law, std::optional<Adhesion> adhesion = {})
+      : contact(make(law, *this, adhesion)) {
     for (int n = 4; n < 8; ++n) z[n] = -kDepth;
     evaluate({0, 0, -kDepth});
     contact.commit();  // pressed, sticking, no tangential traction yet
@@ -156,6 +160,25 @@ TEST(StaticFrictionLaws, SpeedDependentMuSlidesAtMuOfVAndTakesItsSlopeInTheTange
       EXPECT_LT(tangent_error(c, u), 1e-6) << "slip " << slip;
     }
   }
+}
+
+// Adhesion (Radioss IVIS2 = -1, seed 004): a node that touched, now open by s = 0.005 within the
+// zone Gap/2 = 0.01 and moved sideways over an increment dt = 0.5, is pulled back by
+// SigMaxAdh s / (Gap/2) and resisted sideways by ViscAdhFact ViscFluid / (Gap/2) slip / dt.
+TEST(StaticFrictionLaws, AdhesionPullsBackAndItsViscosityResistsTheSlip) {
+  const Adhesion bond{0.02, 50.0, 3.0, 2.0};  // Gap, SigMaxAdh, ViscFluid, ViscAdhFact
+  PressedNode c(Coulomb{0.3, 0.3, {}, {}}, bond);
+  c.dt = 0.5;
+  const Vec3 u{0.004, -0.002, 0.005};
+  c.evaluate(u);
+  EXPECT_TRUE(c.point().active);
+  EXPECT_NEAR(c.point().pressure, -50.0 * 0.005 / 0.01, 1e-9);
+  const Vec3 expected = Vec3{0.004, -0.002, 0.0} * (-2.0 * 3.0 / 0.01 / 0.5);
+  EXPECT_NEAR(norm(c.point().traction - expected), 0.0, 1e-9);
+  EXPECT_LT(tangent_error(c, u), 1e-6);
+  // Beyond the zone the bond breaks.
+  c.evaluate({0.0, 0.0, 0.011});
+  EXPECT_FALSE(c.point().active);
 }
 
 }  // namespace

@@ -426,5 +426,53 @@ TEST(StaticContact, SpeedDependentFrictionSlidesAtMuOfTheIncrementsSlipSpeed) {
   EXPECT_NEAR(b.shear(s), 0.26 * p, 1e-6 * 0.26 * p);
 }
 
+// Adhesion in a static step (Radioss IVIS2 = -1, seed 004 comment 12): Gap = 0.2 mm, SigMaxAdh
+// = 10 MPa on A = 1 mm^2. The upper block of two_blocks(2, 2), moved as a whole (every node
+// prescribed) onto the held lower one, pressed 1e-4 mm (step 1), then lifted to 0.15 mm in 25
+// increments (step 2). Opened by s <= Gap/2 it is pulled back by SigMaxAdh A s / (Gap/2); beyond
+// Gap/2 the bond breaks: no force.
+TEST(StaticContact, AdhesionPullsBackInItsZoneThenLetsGo) {
+  Model m = two_blocks(2, 2);
+  add_contact(m, Discretisation::SurfaceToSurface, 10.0 * kE, 0.0);
+  m.contacts.back().adhesion = Adhesion{0.2, 10.0, 0.0, 1.0};
+  std::vector<std::uint8_t> in_upper(m.mesh.nodes.size(), 0);
+  for (std::size_t h = 0; h < m.mesh.hex_count(); ++h)
+    if (m.mesh.hex_part[h] == 2)
+      for (const std::int32_t a : m.mesh.hexes[h]) in_upper[a] = 1;
+  StaticStep& step1 = m.static_steps[0];
+  step1.displacements.clear();
+  std::vector<std::int32_t> upper;
+  for (std::size_t i = 0; i < m.mesh.nodes.size(); ++i) {
+    const auto node = static_cast<std::int32_t>(i);
+    if (in_upper[i]) upper.push_back(node);
+    for (int dof = 0; dof < 3; ++dof)
+      step1.displacements.push_back({node, dof, in_upper[i] && dof == 2 ? -1e-4 : 0.0, {}, {}});
+  }
+  StaticStep step2 = step1;
+  const int increments = 25;
+  step2.initial_increment = 1.0 / increments;
+  step2.max_increment = 1.0 / increments;
+  for (StepDisplacement& d : step2.displacements)
+    if (in_upper[d.node] && d.dof == 2) d.value = 0.15;
+  m.static_steps.push_back(step2);
+  StaticSolver s(m, tight());
+  double worst = 0.0;
+  int pulled = 0, free = 0;
+  s.run([&](const StaticIncrement& inc) {
+    if (inc.step != 1) return;
+    const double lift = -1e-4 + (0.15 + 1e-4) * inc.step_time;  // the step time runs to 1
+    double pull = 0.0;  // the supports hold the block against the pull: their reaction
+    for (const std::int32_t i : upper) pull += s.reaction()[3 * i + 2];
+    const double expected = lift <= 0.1 ? 10.0 * 1.0 * std::max(lift, 0.0) / 0.1 : 0.0;
+    worst = std::max(worst, std::abs(pull - expected));
+    (lift <= 0.1 ? pulled : free) += 1;
+  });
+  std::cout << "adhesion: worst |pull - SigMaxAdh A s / (Gap/2)| " << worst << " N over " << pulled
+            << " increments in the zone and " << free << " beyond\n";
+  EXPECT_LT(worst, 1e-6 * 10.0);
+  EXPECT_GT(pulled, 10);
+  EXPECT_GT(free, 5);
+}
+
 }  // namespace
 }  // namespace abut

@@ -41,6 +41,7 @@
 
 #include "abut/contact/broad_phase.hpp"
 #include "abut/contact/interface.hpp"
+#include "abut/contact/laws/adhesion.hpp"
 #include "abut/contact/laws/normal.hpp"
 #include "abut/contact/laws/tangential.hpp"
 #include "abut/contact/laws/thermal.hpp"
@@ -70,6 +71,12 @@ struct StaticContactSettings {
   // Share of this pass in its contact: 1, or 1/2 for each of the two passes of a symmetric
   // contact (as the explicit interface weighs them); scales the points' areas.
   double weight = 1.0;
+  // Radioss IVIS2 = -1 (laws/adhesion.hpp): a point that touched at a converged state and is
+  // now open within the zone is pulled back, p = -SigMaxAdh s / (Gap/2) at the opening s
+  // (tangent dp/dd = SigMaxAdh / (Gap/2)), and resisted sideways by the zone's viscosity over the
+  // increment, t = -(ViscAdhFact ViscFluid / (Gap/2)) slip / dt (tangent the same factor over
+  // dt, along the surface); beyond the zone the bond breaks until the point touches again.
+  std::optional<Adhesion> adhesion;
   // STICK (OptiStruct TYPE = STICK, Metafor's sticking contact): no sliding while closed, the
   // stick spring k_t however large the traction; the surfaces may still separate.
   bool stick = false;
@@ -165,6 +172,7 @@ class StaticContact {
     double xi = 0.0, eta = 0.0;
     Vec3 traction;  // committed tangential traction
     bool sliding = false;  // beyond the static limit: held only up to the sliding one
+    bool adhered = false;  // touched, and not yet opened beyond the adhesive zone
     Vec3 offset;    // tied: relative position x_point - x_partner when the pair formed
     Vec3 total_slip;
     double slip_work = 0.0;

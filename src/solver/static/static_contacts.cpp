@@ -34,7 +34,6 @@ void check_static(const ContactSpec& spec) {
   if (spec.accuracy_edge) not_static(spec.where, "edge contact (accuracy level with E)");
   if (spec.sense != ContactSense::Positive)
     not_static(spec.normal_where, "a contact sense other than POSITIVE");
-  if (spec.adhesion) not_static(spec.where, "adhesion (*CONTACT_ADHESION)");
   if (!spec.pair_scales.empty())
     not_static(spec.pair_scales.front().where, "*CONTACT_SCALE_PENALTY");
   if (!spec.stiffness_where.file.empty())
@@ -97,6 +96,7 @@ StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side&
   s.weight = weight;
   s.tangential_law = tangential_law_of(spec, &model.functions, model.time.end_time);
   s.stick = spec.friction_law == Law::Stick;
+  s.adhesion = spec.adhesion;
   s.tied = spec.friction_law == Law::Freeze;
   double young = 0.0;
   for (const SkinFace& f : target.faces) young = std::max(young, young_of(model, f.part));
