@@ -316,6 +316,15 @@ TEST(StaticContact, SlidingBlockShearIsMuTimesNormalForce) {
   EXPECT_EQ(active, 16);
 }
 
+// 1 for the nodes of `part`'s hexahedra.
+std::vector<std::uint8_t> nodes_of_part(const Model& m, std::int64_t part) {
+  std::vector<std::uint8_t> in(m.mesh.nodes.size(), 0);
+  for (std::size_t h = 0; h < m.mesh.hex_count(); ++h)
+    if (m.mesh.hex_part[h] == part)
+      for (const std::int32_t a : m.mesh.hexes[h]) in[a] = 1;
+  return in;
+}
+
 // Two blocks of two_blocks(2, 2) with the lower one held at every node (a rigid foundation) and
 // the upper one pressed by a pressure p on its top, held in x and y at every node (it translates
 // as a whole: no shear, no tipping, no Poisson slip sideways): the contact pressure is p and every
@@ -329,10 +338,7 @@ struct DraggedBlock {
     m = two_blocks(2, 2);
     add_contact(m, Discretisation::SurfaceToSurface, 10.0 * kE, 0.0);
     law(m.contacts.back());
-    std::vector<std::uint8_t> in_upper(m.mesh.nodes.size(), 0);
-    for (std::size_t h = 0; h < m.mesh.hex_count(); ++h)
-      if (m.mesh.hex_part[h] == 2)
-        for (const std::int32_t a : m.mesh.hexes[h]) in_upper[a] = 1;
+    const std::vector<std::uint8_t> in_upper = nodes_of_part(m, 2);
     StaticStep& step1 = m.static_steps[0];
     step1.displacements.clear();
     for (std::size_t i = 0; i < m.mesh.nodes.size(); ++i) {
@@ -435,10 +441,7 @@ TEST(StaticContact, AdhesionPullsBackInItsZoneThenLetsGo) {
   Model m = two_blocks(2, 2);
   add_contact(m, Discretisation::SurfaceToSurface, 10.0 * kE, 0.0);
   m.contacts.back().adhesion = Adhesion{0.2, 10.0, 0.0, 1.0};
-  std::vector<std::uint8_t> in_upper(m.mesh.nodes.size(), 0);
-  for (std::size_t h = 0; h < m.mesh.hex_count(); ++h)
-    if (m.mesh.hex_part[h] == 2)
-      for (const std::int32_t a : m.mesh.hexes[h]) in_upper[a] = 1;
+  const std::vector<std::uint8_t> in_upper = nodes_of_part(m, 2);
   StaticStep& step1 = m.static_steps[0];
   step1.displacements.clear();
   std::vector<std::int32_t> upper;
