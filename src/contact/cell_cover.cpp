@@ -53,12 +53,7 @@ bool ContactInterface::meet_by_cell(const Pass& pass, std::size_t p, const Point
   // punch pressed into the point's plate, nearer than the punch's face): the nearest facet that
   // faces the cell within its reach, if the cell lies over it in part. Else the wall acts at the
   // point with the whole area.
-  const TargetFacets facets = target_facets(target, target.depth, in, bands_current_);
-  PartnerRules rules = border_rules(own, p);
-  rules.facing = sharp_cos_;
-  const auto first = pass.candidates.offsets[p], last = pass.candidates.offsets[p + 1];
-  Partner facing = find_partner(facets, {pass.candidates.facets.data() + first, last - first},
-                                f.nodes, f.x, f.normal, rules);
+  Partner facing = nearest_facing(pass, p, f, in, border_rules(own, p));
   if (facing.facet < 0 || !faces(facing)) return false;
   const CellOverlap covered = cover(pass, p, f, facing, in);
   if (!(covered.area > 0.0)) return false;
@@ -66,6 +61,18 @@ bool ContactInterface::meet_by_cell(const Pass& pass, std::size_t p, const Point
   h = facing;
   h.gap = cell_gap(own, p, target, h, o, in);
   return true;
+}
+
+// The nearest broad-phase candidate of point p that faces it within alpha_edge and that `rules`
+// accept (S2S cells: border_rules; N2S nodes: partner_rules).
+Partner ContactInterface::nearest_facing(const Pass& pass, std::size_t p, const PointFrame& f,
+                                         const ContactInput& in, PartnerRules rules) const {
+  const Side& target = sides_[pass.target];
+  const TargetFacets facets = target_facets(target, target.depth, in, bands_current_);
+  rules.facing = sharp_cos_;
+  const auto first = pass.candidates.offsets[p], last = pass.candidates.offsets[p + 1];
+  return find_partner(facets, {pass.candidates.facets.data() + first, last - first}, f.nodes, f.x,
+                      f.normal, rules);
 }
 
 PartnerRules ContactInterface::border_rules(const Side& own, std::size_t p) const {
@@ -152,12 +159,7 @@ Partner ContactInterface::facing_node_partner(const Pass& pass, std::size_t p, c
   // border band (kOnBorder of its size) or within delta_edge.
   if (h.gap > std::max(settings_.edge_tolerance, kOnBorder * target.facet_min_edge[h.facet]))
     return h;
-  const TargetFacets facets = target_facets(target, target.depth, in, bands_current_);
-  PartnerRules rules = partner_rules(own, p);
-  rules.facing = sharp_cos_;
-  const auto first = pass.candidates.offsets[p], last = pass.candidates.offsets[p + 1];
-  const Partner facing = find_partner(facets, {pass.candidates.facets.data() + first, last - first},
-                                      f.nodes, f.x, f.normal, rules);
+  const Partner facing = nearest_facing(pass, p, f, in, partner_rules(own, p));
   if (facing.facet < 0) return h;
   const double covered = node_cover(pass, p, facing, in);
   if (!(covered > 0.0)) return h;

@@ -348,19 +348,20 @@ void StaticContact::evaluate(const ContactInput& in) {
       pressure = r.pressure, kn = r.stiffness, energy = r.energy;
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) C[i][j] = kn * normal[i] * normal[j];
+      const Vec3 slip = tangential(motion, normal);
+      if (adhesive || frictional) out.slip = slip;
       if (adhesive) {
-        // The zone's viscosity replaces friction: t = -c slip / dt.
-        const Vec3 slip = tangential(motion, normal);
-        out.slip = slip;
+        // The zone's viscosity replaces friction: t = -c slip / dt; its work over the increment,
+        // t . slip, counts as friction work (as in explicit steps, enforcement.cpp).
         if (in.dt > 0.0) {
           const double viscous =
               bond->viscous_factor * bond->fluid_viscosity / bond->zone() / in.dt;
           traction = slip * -viscous;
           for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 3; ++j) C[i][j] += viscous * P[i][j];
+          h.slip_work = out.area * viscous * dot(slip, slip);
         }
       } else if (frictional) {
-        const Vec3 slip = tangential(motion, normal);
         const Vec3 t0 = c.in_contact ? tangential(c.traction, normal) : Vec3{};
         const Vec3 trial = t0 - slip * kt;
         // Per unit area: the normal "force" is the pressure on an area of 1.
@@ -370,7 +371,6 @@ void StaticContact::evaluate(const ContactInput& in) {
         const SlipLimits limits = slip_limits(settings_.tangential_law, state);
         const double hold = c.in_contact && c.sliding ? limits.slide : limits.stick;
         const double size = norm(trial);
-        out.slip = slip;
         if (settings_.stick || size <= hold) {
           traction = trial;
           for (int i = 0; i < 3; ++i)

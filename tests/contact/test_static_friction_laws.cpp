@@ -176,6 +176,12 @@ TEST(StaticFrictionLaws, AdhesionPullsBackAndItsViscosityResistsTheSlip) {
   const Vec3 expected = Vec3{0.004, -0.002, 0.0} * (-2.0 * 3.0 / 0.01 / 0.5);
   EXPECT_NEAR(norm(c.point().traction - expected), 0.0, 1e-9);
   EXPECT_LT(tangent_error(c, u), 1e-6);
+  // Its work over the increment, t . slip on the point's area, is dissipated as friction work
+  // (as in explicit steps): area 1200 |slip|^2.
+  const double area = c.point().area;
+  c.contact.commit();
+  EXPECT_GT(area, 0.0);
+  EXPECT_NEAR(c.contact.friction_work(), area * 1200.0 * (0.004 * 0.004 + 0.002 * 0.002), 1e-12);
   // Beyond the zone the bond breaks.
   c.evaluate({0.0, 0.0, 0.011});
   EXPECT_FALSE(c.point().active);

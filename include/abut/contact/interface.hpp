@@ -365,6 +365,8 @@ class ContactInterface {
   bool meet_by_cell(const Pass& pass, std::size_t p, const PointFrame& f, const ContactInput& in,
                     Partner& h, CellOverlap& o) const;
   PartnerRules border_rules(const Side& own, std::size_t p) const;
+  Partner nearest_facing(const Pass& pass, std::size_t p, const PointFrame& f,
+                         const ContactInput& in, PartnerRules rules) const;
   // N2S (cell_cover.cpp): the fraction of node point p's area that lies over the other surface:
   // the quarters of its facets at the node, each against its partner h and the facets around
   // h; 1 where that does not apply (see there).

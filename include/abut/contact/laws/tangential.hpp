@@ -14,6 +14,8 @@
 // A law gives its limits (explicit and static steps) and the slopes of the sliding limit in the
 // normal force and in the sliding speed (the consistent tangent of static steps,
 // static_contact.hpp): a new law provides all three, or std::visit below does not compile.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -105,38 +107,40 @@ struct Coulomb {
     const double mu_d = varies ? mu_s : std::max(mu_dynamic, 0.0);
     return {mu_s * s.normal_force, mu_d * s.normal_force};
   }
-  // d(mu p A)/d(p A) = mu + p dmu/dp at the sliding speed. A friction function's dmu/dp is a
-  // central difference (1e-6 of p, or of 1 at p = 0, in the deck's units).
+  // d(mu p A)/d(p A) = mu + p dmu/dp at the sliding speed.
   double slide_slope(const SlipState& s) const {
     const double p = s.area > 0.0 ? s.normal_force / s.area : 0.0;
-    double dmu_dp = 0.0;
-    if (function) {
-      const double h = 1e-6 * std::max(std::abs(p), 1.0);
-      auto at = [&](double q) {
-        return function(q, s.slip_speed, s.time, s.position.x, s.position.y, s.position.z);
-      };
-      dmu_dp = (at(p + h) - at(p - h)) / (2.0 * h);
-    } else {
-      dmu_dp = of_model(0.0, [&](const auto& m) { return m.dmu_dp(p, s.slip_speed); });
-    }
+    const double dmu_dp =
+        function ? function_slope(p, s,
+                                  [&](double q) {
+                                    return std::array{q, s.slip_speed};
+                                  })
+                 : of_model(0.0, [&](const auto& m) { return m.dmu_dp(p, s.slip_speed); });
     const double mu_slide = mu(s, true);
     return mu_slide > 0.0 ? mu_slide + p * dmu_dp : 0.0;
   }
-  // d(mu p A)/dV = p A dmu/dV (a friction function's by a central difference, 1e-6 of V or of 1).
+  // d(mu p A)/dV = p A dmu/dV.
   double slide_rate_slope(const SlipState& s) const {
     if (!(mu(s, true) > 0.0)) return 0.0;
     const double p = s.area > 0.0 ? s.normal_force / s.area : 0.0;
-    double dmu_dv = 0.0;
-    if (function) {
-      const double h = 1e-6 * std::max(std::abs(s.slip_speed), 1.0);
-      auto at = [&](double v) {
-        return function(p, v, s.time, s.position.x, s.position.y, s.position.z);
-      };
-      dmu_dv = (at(s.slip_speed + h) - at(s.slip_speed - h)) / (2.0 * h);
-    } else {
-      dmu_dv = of_model(0.0, [&](const auto& m) { return m.dmu_dv(p, s.slip_speed); });
-    }
+    const double dmu_dv =
+        function ? function_slope(s.slip_speed, s,
+                                  [&](double v) {
+                                    return std::array{p, v};
+                                  })
+                 : of_model(0.0, [&](const auto& m) { return m.dmu_dv(p, s.slip_speed); });
     return s.normal_force * dmu_dv;
+  }
+  // The friction function's slope in one argument at `at`, by a central difference of 1e-6 of
+  // it (or of 1 near 0, in the deck's units); `args(v)` gives (p, V) with that argument set to v.
+  template <class Args>
+  double function_slope(double at, const SlipState& s, Args&& args) const {
+    const double h = 1e-6 * std::max(std::abs(at), 1.0);
+    auto mu_at = [&](double v) {
+      const auto [p, speed] = args(v);
+      return function(p, speed, s.time, s.position.x, s.position.y, s.position.z);
+    };
+    return (mu_at(at + h) - mu_at(at - h)) / (2.0 * h);
   }
 };
 
