@@ -242,7 +242,7 @@ void read_contact_scale_penalty(DeckReader& d, Block& b) {
 }
 
 void read_contact_initial(DeckReader& d, Block& b) {
-  const Row r = b.row({"coid", "penetration", "adjust"});
+  const Row r = b.row({"coid", "penetration", "adjust", "adjust_nsid"});
   const InitialPenetration penetration =
       word_choice(r, 1, InitialPenetration::Offset,
                   {{"OFFSET", InitialPenetration::Offset},
@@ -260,7 +260,20 @@ void read_contact_initial(DeckReader& d, Block& b) {
     r.require(depth && *depth > 0.0, 2, "expected NO, AUTO or an adjustment depth > 0");
     adjust = depth;
   }
-  refine_contact(d, r, [r, penetration, adjust](ContactSpec& c) {
+  // OptiStruct ADJUST = SET of GRID (seed 003): only these nodes; without a depth, the contact's
+  // search depth bounds the move.
+  std::optional<EntityRef> adjust_nodes;
+  if (r.given(3)) {
+    if (word == "NO" && r.given(2))
+      r.fail(3,
+             "adjust_nsid selects the nodes to adjust, but adjust is NO: give AUTO, a depth, "
+             "or leave adjust empty (the contact's search depth)");
+    const std::int64_t id = r.integer(3);
+    r.require(id > 0, 3, "expected the id of a *SET_NODE (> 0)");
+    adjust_nodes = EntityRef{EntityType::NodeSet, id, r.where(3)};
+    if (!adjust) adjust = 0.0;  // the search depth
+  }
+  refine_contact(d, r, [r, penetration, adjust, adjust_nodes](ContactSpec& c) {
     if (penetration != InitialPenetration::Offset && (c.initial_offset != 0.0 || c.initial_max)) {
       r.fail(1, "penetration " + r.word(1) +
                     " replaces delta0_offset and delta0_max, given on "
@@ -269,6 +282,7 @@ void read_contact_initial(DeckReader& d, Block& b) {
     }
     c.initial_penetration = penetration;
     c.adjust_depth = adjust;
+    c.adjust_nodes = adjust_nodes;
     c.initial_where = r.where();
   });
 }

@@ -1,6 +1,7 @@
 #include "abut/solver/contact_surfaces.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <string>
@@ -142,13 +143,34 @@ std::vector<std::string> adjust_contact_nodes(Model& model) {
       std::sort(secondary.begin(), secondary.end());
       secondary.erase(std::unique(secondary.begin(), secondary.end()), secondary.end());
     }
+    if (spec.adjust_nodes) {  // ADJUST = SET of GRID: those of the secondary nodes in the set
+      std::sort(secondary.begin(), secondary.end());
+      std::vector<std::int32_t> chosen = model.nodes_of(*spec.adjust_nodes);
+      std::sort(chosen.begin(), chosen.end());
+      std::vector<std::int32_t> both;
+      std::set_intersection(secondary.begin(), secondary.end(), chosen.begin(), chosen.end(),
+                            std::back_inserter(both));
+      if (both.empty()) {
+        throw InputError(spec.adjust_nodes->where,
+                         "node set " + std::to_string(spec.adjust_nodes->id) +
+                             " has no node on surface 1 of contact " + std::to_string(spec.id) +
+                             ": ADJUST would move nothing");
+      }
+      secondary = std::move(both);
+    }
     const std::vector<SkinFace> main_faces = contact_faces(model, spec.surface2, spec.merge);
     const ContactSurface main =
         contact_surface(model.mesh, main_faces, [](const SkinFace&) { return 1.0; });
     // AUTO (stored as a negative depth): 5% of the mean edge of the main surface (seed 003).
-    const double depth = *spec.adjust_depth > 0.0
-                             ? *spec.adjust_depth
-                             : 0.05 * mean_edge_length(main, nodes.x, nodes.y, nodes.z);
+    // 0: the search depth, the given detection depth or half the thinnest element of surface 2
+    // (the contact's default depth is half the element's thickness).
+    double depth = *spec.adjust_depth;
+    if (depth < 0.0) {
+      depth = 0.05 * mean_edge_length(main, nodes.x, nodes.y, nodes.z);
+    } else if (depth == 0.0 && !main.thickness.empty()) {
+      depth = spec.detection_depth.value_or(
+          0.5 * *std::min_element(main.thickness.begin(), main.thickness.end()));
+    }
     const std::size_t moved =
         adjust_onto_surface(main, secondary, nodes.x, nodes.y, nodes.z, depth);
     notes.push_back("contact " + std::to_string(spec.id) + ": ADJUST moved " +

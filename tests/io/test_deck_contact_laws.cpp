@@ -453,6 +453,7 @@ TEST(DeckContactInitial, PenetrationAndAdjust) {
   c = contact_of("*CONTACT_INITIAL\n3\n");
   EXPECT_EQ(c.initial_penetration, InitialPenetration::Offset);
   EXPECT_FALSE(c.adjust_depth.has_value());
+  EXPECT_FALSE(c.adjust_nodes.has_value());
   const std::string offset = kTwoBlocks + "*CONTACT\n3\nP, 1, P, 2\n0, 0.1, , , 1e-4\n";
   EXPECT_EQ(model_of(offset + "*CONTACT_INITIAL\n3, OFFSET\n").contacts.at(0).initial_offset, 1e-4);
 }
@@ -464,6 +465,10 @@ TEST(DeckContactInitial, Errors) {
   EXPECT_THAT(error_at("*CONTACT_INITIAL\n3, , 0\n", l, "adjust"),
               HasSubstr("expected NO, AUTO or an adjustment depth > 0, got 0"));
   EXPECT_THAT(error_at("*CONTACT_INITIAL\n3, , YES\n", l, "adjust"), HasSubstr("got YES"));
+  EXPECT_THAT(error_at("*CONTACT_INITIAL\n3, , NO, 4\n", l, "adjust_nsid"),
+              HasSubstr("but adjust is NO"));
+  EXPECT_THAT(error_at("*CONTACT_INITIAL\n3, , , 0\n", l, "adjust_nsid"),
+              HasSubstr("expected the id of a *SET_NODE (> 0)"));
   for (const char* contact_line3 : {"0, 0.1, , , 1e-4\n", "0, 0.1, , , , 1e-3\n"}) {
     const std::string deck = kTwoBlocks + "*CONTACT\n3\nP, 1, P, 2\n" + contact_line3;
     const InputError e = error_of(deck + "*CONTACT_INITIAL\n3, FORCE\n");

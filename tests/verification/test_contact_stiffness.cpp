@@ -213,5 +213,52 @@ TEST(ContactAdjust, MovesSecondaryNodesOntoTheMainSurfaceWithoutStress) {
   EXPECT_EQ(kept, 9);
 }
 
+// ADJUST = SET of GRID (seed 003): "only the nodes on the slave entity which also belong to this
+// SET will be selected for adjustment". The set holds the 3 top nodes of block 1 on x = 0 and a
+// node of block 2 (not on surface 1, so not adjusted). Without a depth, the contact's search
+// depth bounds the move (here half of block 2's 20 mm: the 0.1 mm gap is within it): exactly those
+// 3 nodes move onto block 2, the other 6 top nodes stay.
+TEST(ContactAdjust, MovesOnlyTheNodesOfTheGivenSet) {
+  const Model plain = read_deck_string(two_blocks(""), "plain.k");
+  const Nodes& n = plain.mesh.nodes;
+  std::string members;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    const bool top_edge = std::abs(n.z[i] - 0.01) < 1e-12 && std::abs(n.x[i]) < 1e-12;
+    const bool upper =
+        std::abs(n.z[i] - 0.0301) < 1e-12 && std::abs(n.x[i]) < 1e-12 && std::abs(n.y[i]) < 1e-12;
+    if (top_edge || upper) members += (members.empty() ? "" : ", ") + std::to_string(n.id[i]);
+  }
+  for (const std::string adjust : {"", "0.0005"}) {
+    const Model model =
+        read_deck_string(two_blocks("*SET_NODE\n7\n" + members + "\n*CONTACT_INITIAL\n1, OFFSET, " +
+                                    adjust + ", 7\n"),
+                         "adjust_set.k");
+    int moved = 0, kept = 0;
+    for (std::size_t i = 0; i < model.mesh.nodes.size(); ++i) {
+      const double z = model.mesh.nodes.z[i], x = model.mesh.nodes.x[i];
+      if (std::abs(z - 0.0101) < 1e-12 && std::abs(x) < 1e-12) ++moved;
+      if (std::abs(z - 0.01) < 1e-12) ++kept;
+    }
+    EXPECT_EQ(moved, 3 + 5) << adjust;  // and block 2's 5 bottom nodes on x = 0, already there
+    EXPECT_EQ(kept, 6) << adjust;
+    Simulation sim(model);
+    sim.advance();
+    EXPECT_LT(sim.energies().internal, 1e-12) << adjust;
+  }
+  // A set with no node on surface 1 is an error at its field.
+  std::string upper_only;
+  for (std::size_t i = 0; i < n.size(); ++i)
+    if (std::abs(n.z[i] - 0.0301) < 1e-12) upper_only = std::to_string(n.id[i]);
+  try {
+    read_deck_string(
+        two_blocks("*SET_NODE\n7\n" + upper_only + "\n*CONTACT_INITIAL\n1, OFFSET, , 7\n"),
+        "adjust_none.k");
+    ADD_FAILURE() << "expected an error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().field, "adjust_nsid");
+    EXPECT_NE(std::string(e.what()).find("has no node on surface 1"), std::string::npos);
+  }
+}
+
 }  // namespace
 }  // namespace abut

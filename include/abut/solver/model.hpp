@@ -213,8 +213,11 @@ struct ContactSpec {
   // *CONTACT_INITIAL
   InitialPenetration initial_penetration = InitialPenetration::Offset;
   // ADJUST (seed 003): secondary nodes within this depth moved onto surface 2. -1.0 is AUTO, which
-  // the solver turns into 5% of the mean edge length of surface 2.
+  // the solver turns into 5% of the mean edge length of surface 2; 0.0 is the contact's search
+  // depth (detection_depth, else half the thinnest element of surface 2).
   std::optional<double> adjust_depth;
+  // ADJUST = SET of GRID (seed 003): only the secondary nodes in this node set are adjusted.
+  std::optional<EntityRef> adjust_nodes;
   // Where each contact keyword was given (for errors), empty when absent.
   SourceLocation normal_where, friction_where, stiffness_where, initial_where, discretisation_where;
   GapSettings gaps;         // *CONTACT_GAP
