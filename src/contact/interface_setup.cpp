@@ -166,6 +166,7 @@ void ContactInterface::build_sides(const ContactInput& in,
       margin_ = std::min(margin_, side.depth[f]);
       if (shell)
         side.facet_gap[f] = std::min(shell_gap(s.gaps, surface.thickness[f]), s.gaps.max_main);
+      side.facet_gap[f] += s.gaps.padding;
       side.max_facet_gap = std::max(side.max_facet_gap, side.facet_gap[f]);
       side.facet_min_edge[f] = shortest_edge(c);
       if (is_radioss_rule(s.stiffness.rule))

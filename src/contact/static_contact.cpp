@@ -110,7 +110,8 @@ void StaticContact::initial_gaps(const ContactInput& initial) {
 
 void StaticContact::evaluate(const ContactInput& in) {
   const std::size_t np = point_facet_.size();
-  const double search = std::max(settings_.search_distance, reach_at_clearance(settings_.normal));
+  const double search =
+      std::max(settings_.search_distance, reach_at_clearance(settings_.normal)) + settings_.padding;
   const double reach = std::max(search, settings_.depth);
   const double edge_tolerance = 0.01 * mean_edge_length(main_, in.x, in.y, in.z);
   // S2S points meet the other surface cell by cell (mortar.hpp), but for tied and small-sliding
@@ -283,7 +284,8 @@ void StaticContact::evaluate(const ContactInput& in) {
       normal = cell->normal;
       out.area = cell->area * settings_.weight;
     }
-    const double distance = cell ? cell_mean_gap(own, *cell, cover) : dot(x - q, normal);
+    const double distance =
+        (cell ? cell_mean_gap(own, *cell, cover) : dot(x - q, normal)) - settings_.padding;
     if (distance >= 0.0) h.initial_offset = 0.0;  // separated: the initial offset has done its job
     const double gap = distance + h.initial_offset + (shift_.empty() ? 0.0 : shift_[p]);
     const double d = -gap;

@@ -9,7 +9,8 @@
 namespace abut::deck {
 
 void read_contact_gap(DeckReader& d, Block& b) {
-  const Row r = b.row({"coid", "igap", "gap_scale", "pct_mesh", "gap_max_s", "gap_max_m", "igap0"});
+  const Row r =
+      b.row({"coid", "igap", "gap_scale", "pct_mesh", "gap_max_s", "gap_max_m", "igap0", "gpad"});
   const int igap = word_choice(r, 1, 1, {{"1", 1}, {"2", 2}, {"3", 3}},
                                "1 (variable gap), 2 (variable, close pairs of self contact "
                                "skipped) or 3 (variable, capped by the mesh size)");
@@ -31,6 +32,10 @@ void read_contact_gap(DeckReader& d, Block& b) {
   g.zero_at_free_edges =
       word_choice(r, 6, false, {{"0", false}, {"1000", false}, {"1", true}},
                   "0 or 1000 (gap kept at free shell edges) or 1 (zero gap for nodes on them)");
+  g.padding = r.number_or(7, 0.0);
+  r.require(g.padding >= 0.0, 7, "expected a padding >= 0 [length]");
+  if (g.padding > 0.0 && igap == 3)
+    r.fail(7, "gpad cannot be combined with igap 3, whose mesh-size cap would cap the padding");
   refine_contact(d, r, [r, g](ContactSpec& c) {
     c.gaps = g;
     c.gap_where = r.where();

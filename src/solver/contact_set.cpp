@@ -372,6 +372,7 @@ void describe(const ContactSpec& spec, ContactReport& r) {
   if (std::isfinite(g.max_secondary)) r.gap_rule += fmt::format(", max_s {:.4g}", g.max_secondary);
   if (std::isfinite(g.max_main)) r.gap_rule += fmt::format(", max_m {:.4g}", g.max_main);
   if (g.zero_at_free_edges) r.gap_rule += ", Igap0";
+  if (g.padding > 0.0) r.gap_rule += fmt::format(", padding {:.4g}", g.padding);
   static const char* const edge_words[] = {"NONE", "BORDERS (Iedge 1)", "SHARP (Iedge 11)",
                                            "SHARP_ALL_SHELLS (Iedge 13)", "ALL (Iedge 22)"};
   r.edge_rule = edge_words[static_cast<int>(spec.edges.selection)];

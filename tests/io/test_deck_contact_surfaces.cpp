@@ -94,6 +94,10 @@ TEST(DeckContactGap, Errors) {
   EXPECT_THAT(error_at("*CONTACT_GAP\n3, 1, , , 0\n", l, "gap_max_s"), HasSubstr("> 0"));
   EXPECT_THAT(error_at("*CONTACT_GAP\n3, 1, , , , -1\n", l, "gap_max_m"), HasSubstr("> 0"));
   EXPECT_THAT(error_at("*CONTACT_GAP\n3, 1, , , , , 2\n", l, "igap0"), HasSubstr("1000"));
+  EXPECT_THAT(error_at("*CONTACT_GAP\n3, 1, , , , , , -1e-3\n", l, "gpad"),
+              HasSubstr("expected a padding >= 0"));
+  EXPECT_THAT(error_at("*CONTACT_GAP\n3, 3, , , , , , 1e-3\n", l, "gpad"),
+              HasSubstr("cannot be combined with igap 3"));
 }
 
 TEST(DeckContactEdge, RadiossEdgeOptions) {

@@ -11,6 +11,8 @@
 //    assignments overlap, the last one wins.
 // 3. OptiStruct ADJUST (seed 003): secondary nodes within the depth are moved onto the main
 //    surface before the run, without stress.
+// 4. OptiStruct GPAD (seed 003, CONTPRM): a padding subtracted from the gap opening, so the
+//    surfaces touch at that distance.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -258,6 +260,30 @@ TEST(ContactAdjust, MovesOnlyTheNodesOfTheGivenSet) {
     EXPECT_EQ(e.where().field, "adjust_nsid");
     EXPECT_NE(std::string(e.what()).find("has no node on surface 1"), std::string::npos);
   }
+}
+
+// GPAD: the blocks start 0.1 mm apart. Padded by 0.2 mm, they overlap the padding by 0.1 mm: with
+// every initial penetration pushing (FORCE), the contact force at t = 0 is pfac 0.1 mm times
+// block 1's top, 20 x 20 mm (no damping force at rest), for node-to-surface and surface-to-surface
+// points alike. Padded by 0.05 mm they stay open.
+TEST(ContactPadding, SurfacesTouchAtThePaddingDistance) {
+  const double pfac = 1e12, expected = pfac * 1e-4 * 0.02 * 0.02;
+  for (const std::string method : {"N2S", "S2S"})
+    for (const std::string gpad : {"0.0002", "0.00005"}) {
+      const Model model = read_deck_string(
+          two_blocks("*CONTACT_DISCRETIZATION\n1, " + method + "\n*CONTACT_INITIAL\n1, FORCE\n" +
+                         "*CONTACT_GAP\n1, , , , , , , " + gpad + "\n",
+                     0.0001, "1e12"),
+          "gpad.k");
+      Simulation sim(model);  // its reports hold the forces of t = 0
+      const double force = sim.contact_reports().at(0).stats.normal_force;
+      std::cout << method << " gpad " << gpad << ": normal force " << force << " N\n";
+      if (gpad == "0.0002") {
+        EXPECT_NEAR(force, expected, 1e-9 * expected) << method;
+      } else {
+        EXPECT_EQ(force, 0.0) << method;
+      }
+    }
 }
 
 }  // namespace

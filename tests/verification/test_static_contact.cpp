@@ -477,5 +477,45 @@ TEST(StaticContact, AdhesionPullsBackInItsZoneThenLetsGo) {
   EXPECT_GT(free, 5);
 }
 
+// OptiStruct GPAD (seed 003, CONTPRM: "subtracted from contact gap opening"): the blocks of
+// two_blocks(2, 2) touch at z = 1; with a padding of 0.01 mm they overlap it by 0.01 mm. Both moved
+// as a whole (every node prescribed), the upper one lifted by s in 20 increments to 0.02 mm: the
+// pressure is pfac (0.01 - s) while s < 0.01 and 0 beyond, on A = 1 mm^2, so the supports of the
+// upper block pull it down by pfac (0.01 - s) A (every initial penetration pushes: FORCE).
+TEST(StaticContact, PaddingMakesTheSurfacesTouchAtItsDistance) {
+  const double pfac = 1000.0, pad = 0.01;
+  Model m = two_blocks(2, 2);
+  add_contact(m, Discretisation::SurfaceToSurface, pfac, 0.0);
+  m.contacts.back().gaps.padding = pad;
+  m.contacts.back().initial_penetration = InitialPenetration::Force;
+  const std::vector<std::uint8_t> in_upper = nodes_of_part(m, 2);
+  StaticStep& step = m.static_steps[0];
+  step.displacements.clear();
+  std::vector<std::int32_t> upper;
+  for (std::size_t i = 0; i < m.mesh.nodes.size(); ++i) {
+    const auto node = static_cast<std::int32_t>(i);
+    if (in_upper[i]) upper.push_back(node);
+    for (int dof = 0; dof < 3; ++dof)
+      step.displacements.push_back({node, dof, in_upper[i] && dof == 2 ? 2.0 * pad : 0.0, {}, {}});
+  }
+  step.initial_increment = step.max_increment = 1.0 / 20;
+  StaticSolver s(m, tight());
+  double worst = 0.0;
+  int pressed = 0, open = 0;
+  s.run([&](const StaticIncrement& inc) {
+    const double lift = 2.0 * pad * inc.step_time;
+    double push = 0.0;  // the supports' reaction on the upper block, against the contact
+    for (const std::int32_t i : upper) push -= s.reaction()[3 * i + 2];
+    const double expected = pfac * std::max(pad - lift, 0.0) * 1.0;
+    worst = std::max(worst, std::abs(push - expected));
+    (lift < pad ? pressed : open) += 1;
+  });
+  std::cout << "padding: worst |force - pfac (pad - s) A| " << worst << " N over " << pressed
+            << " pressed increments and " << open << " open\n";
+  EXPECT_LT(worst, 1e-9 * pfac * pad);
+  EXPECT_GT(pressed, 5);
+  EXPECT_GT(open, 5);
+}
+
 }  // namespace
 }  // namespace abut

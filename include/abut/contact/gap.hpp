@@ -26,6 +26,9 @@ struct GapSettings {
   // in the initial configuration (seed 004: curvilinear distance below 2 Gap).
   bool skip_close = false;
   bool zero_at_free_edges = false;  // Igap0 = 1 (node-to-surface points only)
+  // OptiStruct GPAD (seed 003, CONTPRM/PCONT): a layer of this thickness on the main surface,
+  // solid or shell, added to every pair's gap after the caps: the surfaces touch at this distance.
+  double padding = 0.0;
 };
 
 // The gap a shell of thickness t contributes on one side, before the caps.

@@ -67,6 +67,9 @@ struct StaticContactSettings {
   // `depth` inside it (beyond: the far side of the body).
   double search_distance = 0.0;
   double depth = 0.0;
+  // OptiStruct GPAD (seed 003): the surfaces touch at this distance [length] (a layer on the main
+  // surface); the search reaches this much further out.
+  double padding = 0.0;
   double edge_angle = 20.0;  // degrees: edges sharper than this end the surface (narrow_phase.hpp)
   // Share of this pass in its contact: 1, or 1/2 for each of the two passes of a symmetric
   // contact (as the explicit interface weighs them); scales the points' areas.

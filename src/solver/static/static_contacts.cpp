@@ -39,7 +39,16 @@ void check_static(const ContactSpec& spec) {
   if (!spec.stiffness_where.file.empty())
     not_static(spec.stiffness_where,
                "*CONTACT_STIFFNESS (the static penalty is pfac of *CONTACT, or 10 E / L)");
-  if (!spec.gap_where.file.empty()) not_static(spec.gap_where, "*CONTACT_GAP");
+  // A padding alone (OptiStruct GPAD) acts in static steps; the shell gaps do not.
+  GapSettings padding_only;
+  padding_only.padding = spec.gaps.padding;
+  const GapSettings& g = spec.gaps;
+  const bool only_padding = g.scale == padding_only.scale &&
+                            g.max_secondary == padding_only.max_secondary &&
+                            g.max_main == padding_only.max_main && !g.mesh_fraction &&
+                            !g.skip_close && !g.zero_at_free_edges;
+  if (!spec.gap_where.file.empty() && !only_padding)
+    not_static(spec.gap_where, "*CONTACT_GAP other than gpad");
   if (!spec.erosion_where.file.empty()) not_static(spec.erosion_where, "*CONTACT_EROSION");
   if (!spec.edge_where.file.empty()) not_static(spec.edge_where, "*CONTACT_EDGE");
   if (spec.friction_filter.kind != FrictionFilter::Kind::None)
@@ -111,6 +120,7 @@ StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side&
     s.normal = ExponentialOverclosure{spec.exponential->c0, spec.exponential->p0};
   s.depth = spec.detection_depth.value_or(0.5 * thickness);
   s.search_distance = 0.5 * thickness;
+  s.padding = spec.gaps.padding;
   s.clearance = spec.clearance;
   s.initial_penetration = spec.initial_penetration;
   s.initial_offset = spec.initial_offset;
