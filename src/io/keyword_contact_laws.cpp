@@ -47,6 +47,18 @@ void check_contact_options(const ContactSpec& c) {
                      "a BILATERAL contact holds every point on the surface from the start, so " +
                          initial_options + ": remove one of them");
   }
+  if (c.main_shell_sides != ContactSpec::ShellSides::Both) {
+    if (c.surface1.type == c.surface2.type && c.surface1.id == c.surface2.id) {
+      throw InputError(at(c.gap_where, "shell_side"),
+                       "one-sided shells act on surface 2 only, which in self contact is surface "
+                       "1 as well: not supported yet (use two surfaces, or BOTH)");
+    }
+    if (c.stiffness.rule != StiffnessRule::FacetPenalty) {
+      throw InputError(at(c.gap_where, "shell_side"),
+                       "one-sided shells take the PFAC rule only, not a Radioss stiffness rule of "
+                       "*CONTACT_STIFFNESS: not supported yet");
+    }
+  }
 }
 
 void read_contact_discretization(DeckReader& d, Block& b) {

@@ -9,8 +9,8 @@
 namespace abut::deck {
 
 void read_contact_gap(DeckReader& d, Block& b) {
-  const Row r =
-      b.row({"coid", "igap", "gap_scale", "pct_mesh", "gap_max_s", "gap_max_m", "igap0", "gpad"});
+  const Row r = b.row({"coid", "igap", "gap_scale", "pct_mesh", "gap_max_s", "gap_max_m", "igap0",
+                       "gpad", "shell_side"});
   const int igap = word_choice(r, 1, 1, {{"1", 1}, {"2", 2}, {"3", 3}},
                                "1 (variable gap), 2 (variable, close pairs of self contact "
                                "skipped) or 3 (variable, capped by the mesh size)");
@@ -36,8 +36,17 @@ void read_contact_gap(DeckReader& d, Block& b) {
   r.require(g.padding >= 0.0, 7, "expected a padding >= 0 [length]");
   if (g.padding > 0.0 && igap == 3)
     r.fail(7, "gpad cannot be combined with igap 3, whose mesh-size cap would cap the padding");
-  refine_contact(d, r, [r, g](ContactSpec& c) {
+  using Sides = ContactSpec::ShellSides;
+  const Sides sides = word_choice(r, 8, Sides::Both,
+                                  {{"BOTH", Sides::Both},
+                                   {"OPENGAP", Sides::Both},
+                                   {"NORM", Sides::Normal},
+                                   {"REVNORM", Sides::Reverse}},
+                                  "BOTH (or OPENGAP), NORM or REVNORM (OptiStruct MORIENT; OVERLAP "
+                                  "is not supported yet)");
+  refine_contact(d, r, [r, g, sides](ContactSpec& c) {
     c.gaps = g;
+    c.main_shell_sides = sides;
     c.gap_where = r.where();
   });
 }

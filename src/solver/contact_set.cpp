@@ -483,10 +483,10 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
     // is refused at its *CONTACT line before its points are made).
     settings.memory_limit = available_memory().value_or(settings.memory_limit);
     try {
-      interfaces_.emplace_back(std::move(settings),
-                               contact_surface(model.mesh, faces1, penalty_of, moduli_of),
-                               contact_surface(model.mesh, faces2, penalty_of, moduli_of),
-                               node_mass, initial, secondary_nodes);
+      interfaces_.emplace_back(
+          std::move(settings), contact_surface(model.mesh, faces1, penalty_of, moduli_of),
+          contact_surface(model.mesh, faces2, penalty_of, moduli_of, spec.main_shell_sides),
+          node_mass, initial, secondary_nodes);
     } catch (const ContactSetupError& e) {
       throw InputError(location_of(spec, e.setting()), e.what());
     }

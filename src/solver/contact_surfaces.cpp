@@ -15,11 +15,18 @@ namespace abut {
 ContactSurface contact_surface(
     const Mesh& mesh, std::span<const SkinFace> faces,
     const std::function<double(const SkinFace&)>& penalty_of_face,
-    const std::function<ElasticModuli(std::int64_t part)>& moduli_of_part) {
+    const std::function<ElasticModuli(std::int64_t part)>& moduli_of_part,
+    ContactSpec::ShellSides shell_sides) {
   ContactSurface s;
   s.facets.reserve(faces.size());
   for (const SkinFace& f : faces) {
     const ElasticModuli m = moduli_of_part ? moduli_of_part(f.part) : ElasticModuli{};
+    if (f.shell >= 0 && shell_sides != ContactSpec::ShellSides::Both) {
+      s.add_shell_side(f.nodes, f.part, penalty_of_face(f), f.thickness,
+                       shell_sides == ContactSpec::ShellSides::Reverse);
+      s.element.back() = element_index(mesh, f);
+      continue;
+    }
     if (f.shell >= 0) {
       const double young = m.bulk > 0.0 ? 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear) : 0.0;
       s.add_shell(f.nodes, f.part, penalty_of_face(f), f.thickness, young);

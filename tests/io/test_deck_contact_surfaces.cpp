@@ -98,6 +98,8 @@ TEST(DeckContactGap, Errors) {
               HasSubstr("expected a padding >= 0"));
   EXPECT_THAT(error_at("*CONTACT_GAP\n3, 3, , , , , , 1e-3\n", l, "gpad"),
               HasSubstr("cannot be combined with igap 3"));
+  EXPECT_THAT(error_at("*CONTACT_GAP\n3, , , , , , , , OVERLAP\n", l, "shell_side"),
+              HasSubstr("OVERLAP is not supported yet"));
 }
 
 TEST(DeckContactEdge, RadiossEdgeOptions) {

@@ -34,13 +34,15 @@ struct Case {
   std::string method = "S2S";           // *CONTACT_DISCRETIZATION method
   std::string surfaces = "P, 1, P, 2";  // block, plate
   std::string symmetric = "";
+  double start = 0.5 * kThickness;  // the block's face from the mid-surface at t = 0
+  std::string keywords = "";        // more keywords
 };
 
 // The block's face next to the plate starts on the plate's contact surface (z = +-h/2).
 std::string deck(const Case& c) {
   const double s = c.from_below ? -1.0 : 1.0;  // the block above (+1) or below (-1) the plate
   const double g = c.plate_moves ? 9.81 * s : -9.81 * s;  // presses the moving part on the other
-  const double near = s * 0.5 * kThickness, far = s * (0.5 * kThickness + 0.02);
+  const double near = s * c.start, far = s * (c.start + 0.02);
   const double block = c.plate_moves ? 0.1 : 0.05, plate = c.plate_moves ? 0.05 : 0.1;
   const std::string b = std::to_string(block), p = std::to_string(plate);
   const int nb = c.plate_moves ? 8 : 4, np = c.plate_moves ? 4 : 8;
@@ -79,7 +81,7 @@ Z, 1
 0, 1.0
 *CONTACT_DISCRETIZATION
 1, )" + c.method +
-         ", " + c.symmetric + "\n*END\n";
+         ", " + c.symmetric + "\n" + c.keywords + "*END\n";
 }
 
 // Distance of the block's face from the plate's mid-surface at rest.
@@ -134,6 +136,37 @@ TEST(ShellContact, ShellAgainstBlockBothWaysSurfaceToSurface) {
     EXPECT_NEAR(face_height(c), 0.5 * kThickness - sink(kPlateMass), 1e-6 * sink(kPlateMass))
         << "below " << below;
   }
+}
+
+// OptiStruct MORIENT NORM / REVNORM (seed 003: "contact force is oriented along the vector
+// normal to the master surface" / "opposite to" it), *CONTACT_GAP shell_side: the plate acts with
+// one side only, on its mid-surface (no shell gap), and pushes every point out to that side. The
+// plate's normal is +z. A block resting on the side the normal points to settles with its face
+// kSink past the mid-surface (pfac A d = m g, as above but without the h/2 offset); a block pressed
+// against the other side from the mid-surface is not held: it falls through at least as far as
+// free fall takes it in the run, g T^2 / 2 (the surface can only push it further that way).
+// Node-to-surface and surface-to-surface.
+TEST(ShellContact, OneSidedShellPushesEverythingToItsSide) {
+  for (const std::string method : {"S2S", "N2S"})
+    for (const bool below : {false, true})
+      for (const std::string side : {"NORM", "REVNORM"}) {
+        Case c;
+        c.from_below = below;
+        c.method = method;
+        c.symmetric = "0";
+        c.start = 0.0;
+        c.keywords = "*CONTACT_GAP\n1, , , , , , , , " + side + "\n";
+        const bool rests = (side == "NORM") != below;  // the block on the side of the push
+        const double face = face_height(c);
+        std::cout << method << (below ? " below, " : " above, ") << side << ": face " << face
+                  << " m from the mid-surface\n";
+        if (rests) {
+          EXPECT_NEAR(face, -kSink, 1e-6 * kSink) << method << " " << side << " " << below;
+        } else {
+          const double fall = 0.5 * 9.81 * 0.04 * 0.04;  // T = 0.04 s, *TIME of deck()
+          EXPECT_LT(face, -fall * (1.0 - 1e-9)) << method << " " << side << " " << below;
+        }
+      }
 }
 
 }  // namespace

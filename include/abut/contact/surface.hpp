@@ -50,15 +50,26 @@ struct ContactSurface {
   void add_shell(const std::array<std::int32_t, 4>& nodes, std::int64_t part_id, double pfac,
                  double h, double young = 0.0) {
     const auto first = static_cast<std::int32_t>(facets.size());
-    const std::array<std::int32_t, 4> reversed =
-        nodes[2] == nodes[3] ? std::array<std::int32_t, 4>{nodes[1], nodes[0], nodes[2], nodes[2]}
-                             : std::array<std::int32_t, 4>{nodes[3], nodes[2], nodes[1], nodes[0]};
-    for (const auto& n : {nodes, reversed}) {
+    for (const auto& n : {nodes, reversed(nodes)}) {
       add(n, part_id, pfac, h);
       young_modulus.back() = young;
     }
     twin[first] = first + 1;
     twin[first + 1] = first;
+  }
+  // One side of a shell only (OptiStruct MORIENT NORM / REVNORM, seed 003): a one-sided surface
+  // on the mid-surface that pushes every point out to the side of its normal (`reverse`: the
+  // other side), as a solid's face does, also points that come from behind within the detection
+  // depth. It has no twin and so no shell gap (gap.hpp padding may add one).
+  void add_shell_side(const std::array<std::int32_t, 4>& nodes, std::int64_t part_id, double pfac,
+                      double h, bool reverse) {
+    add(reverse ? reversed(nodes) : nodes, part_id, pfac, h);
+  }
+  // The nodes of a facet seen from its other side (a triangle keeps its repeated last node).
+  static std::array<std::int32_t, 4> reversed(const std::array<std::int32_t, 4>& nodes) {
+    return nodes[2] == nodes[3]
+               ? std::array<std::int32_t, 4>{nodes[1], nodes[0], nodes[2], nodes[2]}
+               : std::array<std::int32_t, 4>{nodes[3], nodes[2], nodes[1], nodes[0]};
   }
 };
 

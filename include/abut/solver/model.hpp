@@ -221,6 +221,10 @@ struct ContactSpec {
   // Where each contact keyword was given (for errors), empty when absent.
   SourceLocation normal_where, friction_where, stiffness_where, initial_where, discretisation_where;
   GapSettings gaps;         // *CONTACT_GAP
+  // *CONTACT_GAP shell_side (OptiStruct MORIENT, seed 003): which sides of surface 2's shells act.
+  // Both: two-sided shells (OPENGAP); Normal / Reverse: one side on the mid-surface (NORM,
+  // REVNORM; ContactSurface::add_shell_side).
+  enum class ShellSides { Both, Normal, Reverse } main_shell_sides = ShellSides::Both;
   ErosionSettings erosion;  // *CONTACT_EROSION
   EdgeSettings edges;       // *CONTACT_EDGE
   SourceLocation gap_where, erosion_where, edge_where;
