@@ -341,7 +341,8 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   stats_.damping_energy -= 0.5 * power * in.dt;
   // Edge-to-edge springs and contacts outside their time window (points may lie anywhere when it
   // opens) keep the bound everywhere.
-  const bool outside_window = in.time < settings_.begin_time || in.time > settings_.end_time;
+  const bool outside_window =
+      !enabled_ || in.time < settings_.begin_time || in.time > settings_.end_time;
   stats_.approach_step = speed2 > 0.0 && !edges_ && !outside_window
                              ? std::max(initial_stable_step_, 0.25 * margin_ / std::sqrt(speed2))
                              : initial_stable_step_;
@@ -409,6 +410,16 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
     if (e.omega2 > 0.0) stats_.stable_step = std::min(stats_.stable_step, spring_step(e.omega2));
   }
   book_damping(in);  // this step's damping forces (points and edges), the first half of their work
+}
+
+void ContactInterface::mark_secondary_nodes_in_contact(std::span<std::uint8_t> touched) const {
+  for (const Pass& pass : passes_) {
+    if (pass.own != 0) continue;  // surface 2's points (symmetric contact) are main nodes
+    const Side& side = sides_[0];
+    for (std::size_t p = 0; p < pass.hit.size(); ++p)
+      if (pass.hit[p])
+        for (const std::int32_t n : side.point_nodes(p)) touched[static_cast<std::size_t>(n)] = 1;
+  }
 }
 
 }  // namespace abut

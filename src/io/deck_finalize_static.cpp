@@ -117,6 +117,24 @@ void DeckReader::finish_static_steps() {
                      "remove *INITIAL_VELOCITY" +
                          static_at);
   }
+  if (!model.sensors.empty()) {
+    throw InputError(model.sensors.front().where,
+                     "sensors (*SENSOR) are not supported in static steps: they watch an explicit "
+                     "run in time" +
+                         static_at);
+  }
+  for (const ContactSpec& c : model.contacts) {
+    if (c.sensor)
+      throw InputError(c.sensor_where,
+                       "a contact switched by a sensor (*CONTACT_SENSOR) is not supported in "
+                       "static steps" +
+                           static_at);
+    if (c.release_bc)
+      throw InputError(c.release_bc_where,
+                       "releasing boundary conditions at impact (*CONTACT_RELEASE_BC) is not "
+                       "supported in static steps" +
+                           static_at);
+  }
   for (const Part& p : model.parts) {
     if (p.erosion.any())
       throw InputError(p.where, "element erosion (dt_erode, eps_geo_erode, eps_v_erode of part " +

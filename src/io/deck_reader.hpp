@@ -353,6 +353,11 @@ void read_contact_edge(DeckReader&, Block&);
 void read_contact_erosion(DeckReader&, Block&);
 void read_contact_scale_penalty(DeckReader&, Block&);
 void read_contact_initial(DeckReader&, Block&);
+void read_sensor(DeckReader&, Block&);  // keyword_sensor.cpp
+void read_contact_sensor(DeckReader&, Block&);
+void read_contact_release_bc(DeckReader&, Block&);
+// keyword_sensor.cpp: the contacts and sensors that *SENSOR and *CONTACT_SENSOR name exist.
+void check_sensors(const Model& model);
 
 // keyword_contact_laws.cpp, shared with keyword_contact_friction.cpp.
 // Records a *CONTACT_* keyword whose first field is coid; `apply` runs once the deck is in.

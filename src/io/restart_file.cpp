@@ -21,7 +21,8 @@ constexpr char kMagic[8] = {'A', 'B', 'U', 'T', 'R', 'S', 'T', '\n'};
 //    last step, whose work they book over the step after (issue 27).
 // 5: the heat balance keeps the largest heat of the run; the simulation keeps the heat the contact
 //    conducts apart from the mechanics' heat, and the thermal expansion work (issue 29).
-constexpr std::uint32_t kVersion = 5;
+// 6: the sensors' trigger times and the boundary conditions released at impact (issue 31).
+constexpr std::uint32_t kVersion = 6;
 
 // FNV-1a, 64 bits (Fowler, Noll, Vo): a checksum, not a cryptographic hash.
 class Fnv {

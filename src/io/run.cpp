@@ -213,8 +213,14 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
 
   RunReport report;
   const auto wall_start = std::chrono::steady_clock::now();
+  const auto log_messages = [&] {
+    const std::vector<std::string> lines = sim.take_messages();
+    for (const std::string& line : lines) log << line << "\n";
+    if (!lines.empty()) log << std::flush;
+  };
   try {
     for (;;) {
+      log_messages();  // sensors and releases at impact (the set-up's at t^0 first)
       if (history_schedule.due(sim.time())) histories.write(sim);
       if (state_schedule.due(sim.time())) states.write(sim, false);
       if (sim.finished()) {
@@ -230,6 +236,7 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
       sim.advance();
       if (options.progress) progress.update(sim.time(), sim.cycle());
     }
+    log_messages();
     histories.write(sim);  // the final time, unless it was just written
     states.write(sim, false);
   } catch (const InstabilityError& e) {

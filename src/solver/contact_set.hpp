@@ -31,6 +31,14 @@ class ContactSet {
   // Adds every interface's forces for the state `in`; also keeps them per node for output.
   void apply(const ContactInput& in, std::span<double> fx, std::span<double> fy,
              std::span<double> fz);
+  // Switches contact c (index in model.contacts) on or off for the next apply(): the solver's
+  // sensors (*CONTACT_SENSOR), decided before every apply.
+  void set_enabled(std::size_t c, bool on) { interfaces_[c].set_enabled(on); }
+  // touched[node] = 1 for the nodes of contact c's surface 1 in contact after the last apply()
+  // (ContactInterface::mark_secondary_nodes_in_contact; *CONTACT_RELEASE_BC).
+  void mark_secondary_nodes_in_contact(std::size_t c, std::span<std::uint8_t> touched) const {
+    interfaces_[c].mark_secondary_nodes_in_contact(touched);
+  }
   // Smallest stable step of the contact springs and the interface that sets it (-1: none).
   double stable_step(std::int64_t* limiting_contact) const;
   // Element erosion (ContactInterface::erode): `eroded` per element, hexes then shells.

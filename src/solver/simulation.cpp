@@ -97,7 +97,9 @@ void Simulation::Impl::compute_forces(double dt) {
   if (!pressure.empty()) pressure.add_forces(t, x, y, z, fx, fy, fz);  // follower load at x^n
   // Contact forces act at x^{n} with the latest velocities v^{n-1/2} (damping, friction).
   const auto contact_start = std::chrono::steady_clock::now();
+  switch_contacts();
   contacts->apply({x, y, z, vhx, vhy, vhz, t, dt, {}}, fx, fy, fz);  // conduction: advance_heat
+  release_at_impact();
   if (heat && contacts->thermal()) gather_contact_heat(dt);
   contact_seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_start).count();
@@ -320,7 +322,7 @@ void Simulation::Impl::apply_nodal_boundaries(double dt_avg) {
   const double* ref[3] = {x0.data(), y0.data(), z0.data()};
   for (std::size_t i = 0; i < n_nodes; ++i)
     for (int d = 0; d < 3; ++d)
-      if (node_fixed[i] & (1u << d)) v[d][i] = 0.0;
+      if (node_fixed[i] & held(i) & (1u << d)) v[d][i] = 0.0;
   double* w[3] = {whx.data(), why.data(), whz.data()};
   const double* wold[3] = {owx.data(), owy.data(), owz.data()};
   for (const NodalMotion& nm : bc.nodal) {
@@ -328,7 +330,8 @@ void Simulation::Impl::apply_nodal_boundaries(double dt_avg) {
     if (!motion_active(model, m, t)) continue;
     for (int d = 0; d < 3; ++d) {
       if (m.fixed_translation & (1u << d))
-        for (const std::int32_t i : nm.nodes) v[d][i] = 0.0;
+        for (const std::int32_t i : nm.nodes)
+          if (held(static_cast<std::size_t>(i)) & (1u << d)) v[d][i] = 0.0;
       if (m.fixed_rotation & (1u << d))
         for (const std::int32_t i : nm.rotating_nodes) w[d][i] = 0.0;
     }

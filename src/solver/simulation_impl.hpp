@@ -15,6 +15,7 @@
 #include "boundary_conditions.hpp"
 #include "contact_set.hpp"
 #include "rigid_body.hpp"
+#include "sensors.hpp"
 
 namespace abut {
 
@@ -63,6 +64,13 @@ struct Simulation::Impl {
   bool rotations() const { return !rotary_inertia.empty(); }
 
   std::unique_ptr<ContactSet> contacts;
+  // *SENSOR and what they switch (simulation_sensors.cpp): the sensors, the fixed directions of
+  // each node released at impact (*CONTACT_RELEASE_BC; empty when no contact releases any), the
+  // directions each node is held in (*NODE bc and *BC_MOTION bc_tr; same), and the log lines not
+  // yet taken.
+  std::unique_ptr<SensorSet> sensors;
+  std::vector<std::uint8_t> released, constrained, touched;
+  std::vector<std::string> messages;
   std::size_t eroded_elements = 0;           // as last reported to the contacts
   std::vector<std::uint8_t> element_eroded;  // per element, hexes then shells
   std::int64_t limiting_contact = -1;
@@ -130,6 +138,12 @@ struct Simulation::Impl {
   void setup();
   void compute_forces(double dt);
   void report_erosion_to_contact();
+  void setup_sensors();                        // simulation_sensors.cpp
+  void switch_contacts();                      // before the contacts' apply at t^n
+  void release_at_impact();                    // after it
+  std::uint8_t held(std::size_t node) const {  // fixed directions not released at impact
+    return released.empty() ? 0xFF : static_cast<std::uint8_t>(~released[node]);
+  }
   void kick();
   void drift();
   Vec3 gravity_at(double time) const;

@@ -24,6 +24,9 @@ void Simulation::archive(StateArchive& a) {
   a.values(s.blocks, s.shell_blocks, s.bodies);
   a.values(s.eroded_elements, s.element_eroded);  // element_eroded: filled at the first erosion
   s.contacts->archive(a);
+  s.sensors->archive(a);
+  a.values(s.released);
+  if (!a.saving()) s.messages.clear();  // those of the set-up at t^0: the run is past them
   // Heat: the temperatures, the planned rates and how long they hold.
   a.values(s.heat, s.heat_planned_to, s.planned_contact_rate, s.heat_steps);
   a.mark("simulation end");

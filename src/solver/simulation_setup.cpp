@@ -211,6 +211,7 @@ void Simulation::Impl::setup() {
   bc = resolve_boundary_conditions(model, rigid_body_of_node, body_of_part, rotary_inertia);
 
   contacts = std::make_unique<ContactSet>(model, mass, vhx, vhy, vhz);
+  setup_sensors();
   pressure = PressureLoads(model);
 
   fx.assign(n_nodes, 0.0);

@@ -145,6 +145,15 @@ class ContactInterface {
   void erode(std::span<const std::uint8_t> eroded);
 
   const ContactStats& stats() const { return stats_; }
+  // Switched off by the caller (a sensor of the solver, Radioss sens_ID): apply() then acts as
+  // outside the time window (no forces; the springs let go and the friction history is
+  // forgotten). The caller sets it before every apply(), so it is not part of the state.
+  void set_enabled(bool on) { enabled_ = on; }
+  bool enabled() const { return enabled_; }
+  // Sets touched[node] = 1 for every node of surface 1 (the secondary side) with a point in
+  // contact after the last apply(): the node itself (node to surface) or the four nodes of the
+  // point's facet (surface to surface). For Radioss IBC (release of boundary conditions at impact).
+  void mark_secondary_nodes_in_contact(std::span<std::uint8_t> touched) const;
   // Stable step bound of every spring that may act, spring_step of the largest 2 k / m_min over
   // the points, as if every point touched (stats().approach_step takes it over the points that may
   // touch only).
@@ -470,6 +479,7 @@ class ContactInterface {
   double sharp_cos_ = 1.0;     // cos(alpha_edge): facets turned further meet at a sharp edge
   double initial_stable_step_ = std::numeric_limits<double>::infinity();
   std::size_t builds_ = 0;
+  bool enabled_ = true;               // set_enabled
   bool rebuild_pending_ = false;      // points or facets changed (erosion)
   std::size_t gap_pairs_ = 0;         // pairs counted in stats_.gap_min / gap_max
   std::optional<EdgeContact> edges_;  // edge-to-edge contact (EdgeSettings)

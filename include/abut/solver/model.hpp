@@ -132,6 +132,20 @@ struct PressureLoad {
   SourceLocation where;
 };
 
+// *SENSOR (abut's own, after Radioss /SENSOR TIME, DIST and INTER): a condition on the run that,
+// once met, stays met (the sensor has triggered); it is on from `delay` after that. Sensors
+// switch contacts on or off (ContactSpec::sensor; seed 004 sens_ID).
+struct Sensor {
+  enum class Kind { Time, Distance, ContactForce } kind = Kind::Time;
+  std::int64_t id = 0;
+  double threshold = 0.0;    // Time: the time; Distance: a length; ContactForce: a force
+  bool below = false;        // Distance, ContactForce: triggers below the threshold (else above)
+  double delay = 0.0;        // on this long after it triggers
+  EntityRef node1, node2;    // Distance: the two nodes (EntityType::Node)
+  std::int64_t contact = 0;  // ContactForce: the *CONTACT whose total normal force is watched
+  SourceLocation where;
+};
+
 // *CONTACT, field by field (seed 000; keyword reference §6). Optional fields are empty when
 // the deck leaves them out, so that the contact code applies the documented defaults.
 struct ContactSpec {
@@ -236,6 +250,15 @@ struct ContactSpec {
   std::optional<Exponential> exponential;
   // *CONTACT PAIR, SMALL SLIDING (OptiStruct TRACK = small): partners found once, at the start.
   bool small_sliding = false;
+  // *CONTACT_SENSOR (Radioss sens_ID): the contact acts while the sensor is on (switches_off:
+  // until it is on); t_beg and t_end are then not used (seed 004, comment 10). Explicit runs.
+  std::optional<std::int64_t> sensor;
+  bool sensor_switches_off = false;
+  SourceLocation sensor_where;
+  // *CONTACT_RELEASE_BC (Radioss IBCX, IBCY, IBCZ): DofMask bits of the fixed directions released
+  // on every node of surface 1 from its first contact. Explicit runs.
+  std::uint8_t release_bc = 0;
+  SourceLocation release_bc_where;
 };
 
 // A geometry of *GEOMETRY_* with its id.
@@ -270,6 +293,7 @@ struct Model {
   std::vector<Gravity> gravity;
   std::vector<PressureLoad> pressures;
   std::vector<ContactSpec> contacts;
+  std::vector<Sensor> sensors;  // *SENSOR, in deck order
   // The static procedure (model_static.hpp): empty for an explicit run.
   std::vector<StaticStep> static_steps;
   std::vector<FaceSet> face_sets;

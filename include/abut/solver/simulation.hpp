@@ -132,6 +132,12 @@ class Simulation {
   // step [power] (empty without thermal properties).
   std::span<const double> heat_flow() const;
 
+  // Log lines of what happened since the last call (a sensor triggered, boundary conditions
+  // released at impact), in the order they happened; the caller prints them.
+  std::vector<std::string> take_messages();
+  // The time the *SENSOR with this id triggered (infinity while it has not).
+  double sensor_trigger_time(std::int64_t id) const;
+
   // Restart (issue 13): saves the complete state at t^n to `a`, or loads it into a simulation
   // built from the same model (StateArchiveError when it does not fit). Continuing from a loaded
   // state is bitwise identical to the run that saved it. The wall time spent in contact is not

@@ -53,6 +53,12 @@ void check_static(const ContactSpec& spec) {
   if (!spec.edge_where.file.empty()) not_static(spec.edge_where, "*CONTACT_EDGE");
   if (spec.friction_filter.kind != FrictionFilter::Kind::None)
     not_static(spec.friction_where, "friction filtering");
+  // Sensors and impact watch the run in time; a static step has no impact to release at.
+  if (spec.sensor)
+    not_static(spec.sensor_where, "a contact switched by a sensor (*CONTACT_SENSOR)");
+  if (spec.release_bc)
+    not_static(spec.release_bc_where,
+               "releasing boundary conditions at impact (*CONTACT_RELEASE_BC, Radioss IBC)");
 }
 
 // Young's modulus of a part from its initial moduli: E = 9 K G / (3 K + G).
