@@ -353,6 +353,9 @@ void read_contact_edge(DeckReader&, Block&);
 void read_contact_erosion(DeckReader&, Block&);
 void read_contact_scale_penalty(DeckReader&, Block&);
 void read_contact_initial(DeckReader&, Block&);
+void read_contact_dependency(DeckReader&, Block&);
+// keyword_contact_dependency.cpp: a dependency without its parameter (law) is an error.
+void check_contact_dependency(const ContactSpec& c);
 
 // keyword_contact_laws.cpp, shared with keyword_contact_friction.cpp.
 // Records a *CONTACT_* keyword whose first field is coid; `apply` runs once the deck is in.
