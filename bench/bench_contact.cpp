@@ -56,7 +56,7 @@ void run(benchmark::State& state, abut::Discretisation discretisation, const cha
   Plates p(100, shells);
   abut::ContactSettings s;
   s.discretisation = discretisation;
-  s.tangential_law = abut::Coulomb{0.2, 0.2, {}, {}};
+  s.tangential_law = abut::Coulomb{0.2, 0.2, {}, {}, {}, {}};
   abut::ContactInterface contact(s, p.upper, p.lower, p.mass, p.input(0.0));
   const std::size_t upper_first = (101 * 101);
   for (std::size_t i = upper_first; i < p.x.size(); ++i) p.z[i] += lift, p.vx[i] = 1.0;

@@ -32,7 +32,8 @@ void ContactInterface::press_corner_walls(Pass& pass, std::size_t p, const Point
     const double penetration = -wall.gap - pass.shift_at(p);
     if (!(area > 0.0) || !(penetration > 0.0)) continue;
     const double spring_k = spring(own, p, area, target, wall.facet);
-    const NormalResponse response = evaluate(s.normal_law, penetration, spring_k / area);
+    const NormalResponse response =
+        scaled(evaluate(s.normal_law, penetration, spring_k / area), s.normal_in_time.at(in.time));
     const double k_n = response.stiffness * area;
     // Damping as for the partner: a fraction of critical, 2 xi sqrt(k m), m the reduced mass of the
     // node and the wall's nodal masses at the projection (enforcement.cpp).

@@ -424,7 +424,8 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     const double slope = s.adhesion->max_stress / s.adhesion->zone();
     response = {s.adhesion->pressure(-penetration), slope, 0.5 * slope * penetration * penetration};
   } else {
-    response = evaluate(s.normal_law, penetration, r.stiffness / area);
+    response = scaled(evaluate(s.normal_law, penetration, r.stiffness / area),
+                      s.normal_in_time.at(in.time));
   }
   const double k_n = response.stiffness * area;
   const double c = damping_of(k_n, r);
@@ -438,7 +439,11 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   if (!bilateral && !adhesive) fn = std::max(fn, 0.0);
   const Vec3 v_t = v_rel - normal * v_n;
   const double slip_speed = norm(v_t);
-  const double k_t = s.tangential_penalty ? *s.tangential_penalty * area : r.stiffness;
+  // Metafor PEN_TANGENT (GD, TM): the spring of this step times g(d) f(t); the history force of
+  // the steps before keeps the springs it was built with (an incremental spring). A factor <= 0
+  // holds no tangential force.
+  const double k_t = (s.tangential_penalty ? *s.tangential_penalty * area : r.stiffness) *
+                     s.tangential_penalty_factor.factor(penetration, in.time);
   const Vec3 previous{pass.htx[p], pass.hty[p], pass.htz[p]};
   Vec3 ft, spring;  // the tangential force, and its elastic part (the history)
   double slip = 0.0, slip_work = 0.0;
@@ -448,7 +453,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   } else {
     const SlipLimits limits =
         slip_limits(s.tangential_law, {std::max(fn, 0.0), area, slip_speed, in.time, f.x});
-    if (limits.stick > 0.0 || limits.slide > 0.0) {
+    if (k_t > 0.0 && (limits.stick > 0.0 || limits.slide > 0.0)) {
       const StickSlipResult t =
           stick_slip(previous, pass.slip[p], {normal, v_t, in.dt, k_t, damping_of(k_t, r)}, limits);
       slip = t.slip;
@@ -477,7 +482,7 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   pass.tangential_force[p] = norm(ft);
   pass.pressure[p] = fn / area;
   pass.slip_speed[p] = slip_speed;
-  pass.energy[p] = response.energy * area + 0.5 * dot(spring, spring) / k_t;
+  pass.energy[p] = response.energy * area + (k_t > 0.0 ? 0.5 * dot(spring, spring) / k_t : 0.0);
   // The damping part of the force: along the normal, and the stick spring's (an adhesive zone's
   // viscous resistance counts as friction).
   Vec3 damping = normal * (fn - elastic);

@@ -345,7 +345,8 @@ void StaticContact::evaluate(const ContactInput& in) {
         const double slope = bond->max_stress / bond->zone();
         r = {bond->pressure(-d), slope, 0.5 * slope * d * d};
       } else {
-        r = abut::evaluate(settings_.normal, d, settings_.penalty);
+        r = scaled(abut::evaluate(settings_.normal, d, settings_.penalty),
+                   settings_.normal_in_time.at(in.time));
       }
       pressure = r.pressure, kn = r.stiffness, energy = r.energy;
       for (int i = 0; i < 3; ++i)
@@ -365,7 +366,10 @@ void StaticContact::evaluate(const ContactInput& in) {
         }
       } else if (frictional) {
         const Vec3 t0 = c.in_contact ? tangential(c.traction, normal) : Vec3{};
-        const Vec3 trial = t0 - slip * kt;
+        // k_t(d) and its slope (Metafor PEN_TANGENT GD, TM; laws/dependency.hpp).
+        const double kt_p = kt * settings_.stick_slope_factor.factor(d, in.time);
+        const double dkt = kt * settings_.stick_slope_factor.slope(d, in.time);
+        const Vec3 trial = t0 - slip * kt_p;
         // Per unit area: the normal "force" is the pressure on an area of 1.
         // The sliding speed: the slip over the increment (in.dt, 0: no rate).
         const double speed = in.dt > 0.0 ? norm(slip) / in.dt : 0.0;
@@ -373,10 +377,12 @@ void StaticContact::evaluate(const ContactInput& in) {
         const SlipLimits limits = slip_limits(settings_.tangential_law, state);
         const double hold = c.in_contact && c.sliding ? limits.slide : limits.stick;
         const double size = norm(trial);
-        if (settings_.stick || size <= hold) {
+        if (!(kt_p > 0.0)) {
+          // A factor <= 0: no tangential spring (as the explicit interface).
+        } else if (settings_.stick || size <= hold) {
           traction = trial;
           for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) C[i][j] += kt * P[i][j];
+            for (int j = 0; j < 3; ++j) C[i][j] += kt_p * P[i][j] - dkt * slip[i] * normal[j];
         } else {
           const double limit = limits.slide;
           const double slope = slide_slope(settings_.tangential_law, state);
@@ -390,16 +396,19 @@ void StaticContact::evaluate(const ContactInput& in) {
           traction = th * limit;
           slipping[p] = 1;
           h.sliding = true;
-          const double s = limit * kt / size;
+          const double s = limit * kt_p / size;
+          // (I - th th) s: the projection of the slip off the trial direction (the dk_t/dd term).
+          const Vec3 s_off = slip - th * dot(th, slip);
           for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 3; ++j) {
               double tt = 0.0;  // ((I - th th) P)_ij
               for (int k = 0; k < 3; ++k) tt += ((i == k) - th[i] * th[k]) * P[k][j];
-              C[i][j] += slope * kn * th[i] * normal[j] - th[i] * rate[j] + s * tt;
+              C[i][j] += slope * kn * th[i] * normal[j] - th[i] * rate[j] + s * tt -
+                         (limit / size) * dkt * s_off[i] * normal[j];
             }
-          h.slip_work = out.area * limit * (size - limit) / kt;  // |t| x plastic slip
+          h.slip_work = out.area * limit * (size - limit) / kt_p;  // |t| x plastic slip
         }
-        energy += 0.5 * dot(traction, traction) / kt;
+        if (kt_p > 0.0) energy += 0.5 * dot(traction, traction) / kt_p;
       }
     }
     h.in_contact = true;

@@ -61,6 +61,7 @@ const std::map<std::string, KeywordReader, std::less<>>& supported() {
       {"*GEOMETRY_PART", read_geometry_part},
       {"*CONTACT", read_contact},
       {"*CONTACT_ADHESION", read_contact_adhesion},
+      {"*CONTACT_DEPENDENCY", read_contact_dependency},
       {"*CONTACT_DISCRETIZATION", read_contact_discretization},
       {"*CONTACT_EDGE", read_contact_edge},
       {"*CONTACT_EROSION", read_contact_erosion},

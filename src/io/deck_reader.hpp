@@ -358,6 +358,9 @@ void read_contact_sensor(DeckReader&, Block&);
 void read_contact_release_bc(DeckReader&, Block&);
 // keyword_sensor.cpp: the contacts and sensors that *SENSOR and *CONTACT_SENSOR name exist.
 void check_sensors(const Model& model);
+void read_contact_dependency(DeckReader&, Block&);
+// keyword_contact_dependency.cpp: a dependency without its parameter (law) is an error.
+void check_contact_dependency(const ContactSpec& c);
 
 // keyword_contact_laws.cpp, shared with keyword_contact_friction.cpp.
 // Records a *CONTACT_* keyword whose first field is coid; `apply` runs once the deck is in.

@@ -20,6 +20,7 @@ void refine_contact(DeckReader& d, const Row& r, std::function<void(ContactSpec&
 }
 
 void check_contact_options(const ContactSpec& c) {
+  check_contact_dependency(c);
   const auto at = [](SourceLocation where, const char* field) {
     where.field = field;
     return where;

@@ -74,9 +74,11 @@ bool one_way_of(const ContactSpec& spec) {
 TangentialLaw tangential_law_of(const ContactSpec& spec, const FunctionTable* table, double term) {
   using Law = ContactSpec::FrictionLaw;
   const auto& c = spec.friction_c;
+  // Metafor TM (*CONTACT_DEPENDENCY): a coefficient times a function of the time.
+  const auto in_time = [table, term](FunctionRef f) { return function_of_one(table, f, term); };
   switch (spec.friction_law) {
     case Law::Impetus: {
-      Coulomb law{spec.friction, spec.friction, {}, {}};
+      Coulomb law{spec.friction, spec.friction, {}, {}, {}, {}};
       if (spec.friction_function.valid()) {
         const FunctionRef mu = spec.friction_function;
         law.function = [table, mu, term](double pres, double vtang, double t, double x, double y,
@@ -100,17 +102,27 @@ TangentialLaw tangential_law_of(const ContactSpec& spec, const FunctionTable* ta
     case Law::Freeze:
       return Frictionless{};
     case Law::Coulomb:
-      return Coulomb{spec.mu_static, spec.mu_dynamic, {}, {}};
+      return Coulomb{spec.mu_static,
+                     spec.mu_dynamic,
+                     {},
+                     {},
+                     {in_time(spec.mu_static_in_time)},
+                     {in_time(spec.mu_dynamic_in_time)}};
     case Law::Tresca:
-      return Tresca{c[0], c[1], c[2]};
+      return Tresca{c[0],
+                    c[1],
+                    c[2],
+                    {in_time(spec.mu_static_in_time)},
+                    {in_time(spec.mu_dynamic_in_time)},
+                    {in_time(spec.yield_in_time)}};
     case Law::Stick:
       return Sticking{};
     case Law::Viscous:
-      return Coulomb{0.0, 0.0, {}, ViscousFriction{spec.mu_static, c}};
+      return Coulomb{0.0, 0.0, {}, ViscousFriction{spec.mu_static, c}, {}, {}};
     case Law::Darmstad:
-      return Coulomb{0.0, 0.0, {}, DarmstadFriction{spec.mu_static, c}};
+      return Coulomb{0.0, 0.0, {}, DarmstadFriction{spec.mu_static, c}, {}, {}};
     case Law::Renard:
-      return Coulomb{0.0, 0.0, {}, RenardFriction{c}};
+      return Coulomb{0.0, 0.0, {}, RenardFriction{c}, {}, {}};
   }
   return Frictionless{};
 }
@@ -128,6 +140,9 @@ ContactSettings settings_of(const Model& model, const ContactSpec& spec) {
   s.tangential_law = tangential_law_of(spec, table, term);
   s.freeze = spec.friction_law == ContactSpec::FrictionLaw::Freeze;
   s.tangential_penalty = spec.tangential_penalty;
+  s.normal_in_time = {function_of_one(table, spec.pfac_in_time, term)};
+  s.tangential_penalty_factor = {function_of_one(table, spec.pen_t_of_gap, term),
+                                 {function_of_one(table, spec.pen_t_in_time, term)}};
   s.friction_filter = spec.friction_filter;
   if (spec.penalty_curve.valid()) s.normal_law = curve_penalty(model, spec.penalty_curve);
   s.sense = spec.sense;
@@ -344,6 +359,11 @@ void describe(const ContactSpec& spec, ContactReport& r) {
   }
   if (spec.stick_stress)
     r.tangential_law += fmt::format(", sticking until {:.4g}", *spec.stick_stress);
+  // *CONTACT_DEPENDENCY: "x f(t)" / "x g(d)" after the law its parameter belongs to.
+  for (const ContactSpec::Dependency& d : spec.dependencies) {
+    const std::string note = ", " + d.parameter + (d.gap ? " x g(d)" : " x f(t)");
+    (d.parameter == "PFAC" ? r.normal_law : r.tangential_law) += note;
+  }
   switch (spec.stiffness.rule) {
     case StiffnessRule::FacetPenalty:
       r.stiffness_rule = spec.element_penalty ? "ELEMENT" : "PFAC";

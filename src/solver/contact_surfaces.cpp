@@ -188,14 +188,17 @@ std::vector<std::string> adjust_contact_nodes(Model& model) {
 }
 
 CurvePenalty curve_penalty(const Model& model, FunctionRef curve) {
-  const FunctionTable* table = &model.functions;
-  const double term = model.time.end_time;
-  return CurvePenalty{[table, curve, term](double d) {
+  return CurvePenalty{function_of_one(&model.functions, curve, model.time.end_time)};
+}
+
+ScalarFunction function_of_one(const FunctionTable* table, FunctionRef f, double term) {
+  if (!f.valid()) return {};
+  return [table, f, term](double x) {
     Variables v;
     v.term = term;
-    v.t = d;
-    return table->value(curve, d, v);
-  }};
+    v.t = x;
+    return table->value(f, x, v);
+  };
 }
 
 }  // namespace abut

@@ -137,7 +137,7 @@ TEST(ContactHeat, FrictionWorkBecomesHeatSharedAsSpecified) {
   for (const double share : {0.5, 0.2, 1.0}) {
     HotPair pair;
     ContactSettings s;
-    s.tangential_law = Coulomb{0.3, 0.3, {}, {}};
+    s.tangential_law = Coulomb{0.3, 0.3, {}, {}, {}, {}};
     s.thermal.friction_heat = FrictionHeatSplit{share};
     ContactInterface c = pair.make(s);
     const double dt = 1e-4;

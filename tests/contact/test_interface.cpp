@@ -155,7 +155,7 @@ TEST(ContactInterface, CoulombBlockSticksBelowAndSlidesAboveMuN) {
   for (double ratio : {0.45, 1.5}) {
     Pair pair(0.1, pfac, pfac, true, m, 1e9);
     ContactSettings s = undamped(2);
-    s.tangential_law = Coulomb{mu, mu, {}, {}};
+    s.tangential_law = Coulomb{mu, mu, {}, {}, {}, {}};
     s.one_way = true;
     ContactInterface contact = pair.make(s);
     pair.move_upper(0, 0, -0.1 - d);
@@ -351,7 +351,7 @@ TEST(ContactInterface, InconsistentSettingsAreInputErrors) {
   EXPECT_THROW(ContactInterface(s, pair.upper, pair.upper, pair.w.mass, pair.w.input()),
                ContactSetupError);
   s = ContactSettings{};
-  s.tangential_law = Coulomb{-0.1, -0.1, {}, {}};
+  s.tangential_law = Coulomb{-0.1, -0.1, {}, {}, {}, {}};
   try {
     pair.make(s);
     ADD_FAILURE() << "a negative friction coefficient was accepted";
@@ -536,7 +536,7 @@ TEST(ContactInterface, SkippingOpenPointsChangesNothing) {
     ContactSettings s;
     s.discretisation = discretisation;
     s.skip_open_points = skip;
-    s.tangential_law = Coulomb{0.3, 0.3, {}, {}};
+    s.tangential_law = Coulomb{0.3, 0.3, {}, {}, {}, {}};
     ContactInterface contact(s, upper, lower, w.mass, w.input());
     for (std::size_t i = first; i < w.x.size(); ++i) w.vx[i] = 0.5, w.vz[i] = -1.0;
     std::vector<double> trace;

@@ -195,7 +195,7 @@ SlipState state() { return {2000.0, 0.04, 1.5, 0.25, {0.1, 0.2, 0.3}}; }
 
 // Seed 002 (CoulombContactMaterial): stick = mu_s F_n, slide = mu_d F_n.
 TEST(Coulomb, StaticAndDynamicLimits) {
-  const Coulomb law{0.3, 0.2, {}, {}};
+  const Coulomb law{0.3, 0.2, {}, {}, {}, {}};
   const SlipLimits l = law.limits(state());
   EXPECT_NEAR(l.stick, 0.3 * 2000.0, rel(600.0));
   EXPECT_NEAR(l.slide, 0.2 * 2000.0, rel(400.0));
@@ -213,7 +213,7 @@ TEST(Coulomb, StaticAndDynamicLimits) {
 // called with p = F_n / area. mu = 0.1 + 1e-6 p + 0.01 V + 0.02 t + 0.03 x + 0.04 y + 0.05 z
 // = 0.1 + 0.05 + 0.015 + 0.005 + 0.003 + 0.008 + 0.015 = 0.196 at state().
 TEST(Coulomb, FrictionFunctionOfPressureSpeedTimeAndPosition) {
-  Coulomb law{0.9, 0.8, {}, {}};  // the constants are overridden by the function
+  Coulomb law{0.9, 0.8, {}, {}, {}, {}};  // the constants are overridden by the function
   law.function = [](double p, double v, double t, double x, double y, double z) {
     return 0.1 + 1e-6 * p + 0.01 * v + 0.02 * t + 0.03 * x + 0.04 * y + 0.05 * z;
   };
@@ -228,14 +228,16 @@ TEST(Coulomb, WithEachRadiossFrictionModel) {
   const SlipState s = state();  // p = 5e4, V = 1.5
   {
     // Ifric 1: 0.1 + 2e-7 p + 0.01 V + 1e-8 p V + 1e-13 p^2 + 0.002 V^2 = 0.1305 (by hand).
-    const Coulomb law{0.0, 0.0, {}, ViscousFriction{0.1, {2e-7, 0.01, 1e-8, 1e-13, 0.002, 0.0}}};
+    const Coulomb law{0.0, 0.0, {}, ViscousFriction{0.1, {2e-7, 0.01, 1e-8, 1e-13, 0.002, 0.0}},
+                      {},  {}};
     const SlipLimits l = law.limits(s);
     EXPECT_NEAR(l.stick, 0.1305 * 2000.0, rel(261.0));
     EXPECT_NEAR(l.slide, 0.1305 * 2000.0, rel(261.0));
   }
   {
     // Ifric 2: 0.05 + 1e-12 e^{-0.75} p^2 + 2e-7 e^{-0.3} p + 0.1 e^{-1.5}.
-    const Coulomb law{0.0, 0.0, {}, DarmstadFriction{0.05, {1e-12, -0.5, 2e-7, -0.2, 0.1, -1.0}}};
+    const Coulomb law{0.0, 0.0, {}, DarmstadFriction{0.05, {1e-12, -0.5, 2e-7, -0.2, 0.1, -1.0}},
+                      {},  {}};
     const double mu =
         0.05 + 1e-12 * std::exp(-0.75) * 2.5e9 + 2e-7 * std::exp(-0.3) * 5e4 + 0.1 * std::exp(-1.5);
     const SlipLimits l = law.limits(s);
@@ -245,7 +247,7 @@ TEST(Coulomb, WithEachRadiossFrictionModel) {
   {
     // Ifric 3 (Renard) with V = 1.5 in [C5, C6] = [0.5, 2]: s = 2/3,
     // mu = 0.5 - 0.4 s^2 (3 - 2 s) = 0.5 - 0.4 * (4/9) * (5/3) = 0.5 - 8/27.
-    const Coulomb law{0.0, 0.0, {}, RenardFriction{{0.3, 0.2, 0.5, 0.1, 0.5, 2.0}}};
+    const Coulomb law{0.0, 0.0, {}, RenardFriction{{0.3, 0.2, 0.5, 0.1, 0.5, 2.0}}, {}, {}};
     const double mu = 0.5 - 8.0 / 27.0;
     const SlipLimits l = law.limits(s);
     EXPECT_NEAR(l.stick, mu * 2000.0, rel(mu * 2000.0));
@@ -253,7 +255,7 @@ TEST(Coulomb, WithEachRadiossFrictionModel) {
   }
   {
     // The pressure really is F_n / area: with Ifric 1 and only C1, mu = C1 p = 1e-6 * 5e4 = 0.05.
-    const Coulomb law{0.0, 0.0, {}, ViscousFriction{0.0, {1e-6, 0.0, 0.0, 0.0, 0.0, 0.0}}};
+    const Coulomb law{0.0, 0.0, {}, ViscousFriction{0.0, {1e-6, 0.0, 0.0, 0.0, 0.0, 0.0}}, {}, {}};
     EXPECT_NEAR(law.limits(s).stick, 0.05 * 2000.0, rel(100.0));
   }
 }
@@ -262,7 +264,7 @@ TEST(Coulomb, WithEachRadiossFrictionModel) {
 // independent of the pressure: stick = m_s k A, slide = m_d k A.
 TEST(Tresca, LimitsAreShearTimesAreaIndependentOfTheNormalForce) {
   const double k = 250e6 / std::sqrt(3.0);
-  const Tresca law{0.6, 0.4, k};
+  const Tresca law{0.6, 0.4, k, {}, {}, {}};
   for (const double fn : {0.0, 2000.0, 1e9}) {
     SlipState s = state();
     s.normal_force = fn;

@@ -83,7 +83,7 @@ double tangent_error(PressedNode& c, const Vec3& u) {
 
 TEST(StaticFrictionLaws, StaticCoulombHoldsUpToMuSThenSlidesAtMuD) {
   const double mu_s = 0.5, mu_d = 0.3, p = kPenalty * kDepth;
-  PressedNode c(Coulomb{mu_s, mu_d, {}, {}});
+  PressedNode c(Coulomb{mu_s, mu_d, {}, {}, {}, {}});
   // Beyond mu_d p but within mu_s p: t = k_t slip (k_t = the penalty), sticking.
   const double hold = 0.45 * p / kPenalty;
   c.evaluate({hold, 0.0, -kDepth});
@@ -107,7 +107,7 @@ TEST(StaticFrictionLaws, StaticCoulombHoldsUpToMuSThenSlidesAtMuD) {
 TEST(StaticFrictionLaws, TrescaSlidesAtMdKWhateverThePressure) {
   const double m_s = 0.6, m_d = 0.5, k = 4.0;  // m_d k = 2 < mu p for any mu > 0.1
   for (const double deeper : {0.0, 0.01}) {
-    PressedNode c(Tresca{m_s, m_d, k});
+    PressedNode c(Tresca{m_s, m_d, k, {}, {}, {}});
     const Vec3 u{0.1, 0.05, -kDepth - deeper};
     c.evaluate(u);
     EXPECT_TRUE(c.point().slipping);
@@ -121,7 +121,7 @@ TEST(StaticFrictionLaws, PressureDependentMuSlidesAtMuOfPTimesP) {
   ViscousFriction law;
   law.fric = fric;
   law.c[0] = c1;
-  PressedNode c(Coulomb{0.0, 0.0, {}, law});
+  PressedNode c(Coulomb{0.0, 0.0, {}, law, {}, {}});
   const Vec3 u{0.1, 0.0, -kDepth};
   c.evaluate(u);
   EXPECT_TRUE(c.point().slipping);
@@ -142,7 +142,7 @@ TEST(StaticFrictionLaws, SpeedDependentMuSlidesAtMuOfVAndTakesItsSlopeInTheTange
   renard.c = {0.2, 0.3, 0.5, 0.25, 0.1, 0.3};  // mu_s, mu_d, mu_max, mu_min, Vcr1, Vcr2
   for (const FrictionModel& model : {FrictionModel{viscous}, FrictionModel{renard}}) {
     for (const double slip : {0.02, 0.1, 0.4}) {  // V = 0.04, 0.2, 0.8 (Renard: each branch)
-      PressedNode c(Coulomb{0.0, 0.0, {}, model});
+      PressedNode c(Coulomb{0.0, 0.0, {}, model, {}, {}});
       c.dt = 0.5;
       const Vec3 u{slip, 0.3 * slip, -kDepth};
       c.evaluate(u);
@@ -167,7 +167,7 @@ TEST(StaticFrictionLaws, SpeedDependentMuSlidesAtMuOfVAndTakesItsSlopeInTheTange
 // SigMaxAdh s / (Gap/2) and resisted sideways by ViscAdhFact ViscFluid / (Gap/2) slip / dt.
 TEST(StaticFrictionLaws, AdhesionPullsBackAndItsViscosityResistsTheSlip) {
   const Adhesion bond{0.02, 50.0, 3.0, 2.0};  // Gap, SigMaxAdh, ViscFluid, ViscAdhFact
-  PressedNode c(Coulomb{0.3, 0.3, {}, {}}, bond);
+  PressedNode c(Coulomb{0.3, 0.3, {}, {}, {}, {}}, bond);
   c.dt = 0.5;
   const Vec3 u{0.004, -0.002, 0.005};
   c.evaluate(u);

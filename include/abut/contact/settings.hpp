@@ -98,6 +98,9 @@ struct ContactSettings {
 
   // Normal direction.
   NormalLaw normal_law = LinearPenalty{};
+  // Metafor PEN_NORMALE (TM): the normal law's pressure times f(t) (laws/dependency.hpp); not
+  // for ties (freeze, stick_stress), whose springs keep the penalty.
+  TimeFactor normal_in_time;
   ContactSense sense = ContactSense::Positive;
   std::optional<double> detection_depth;  // default: half the element thickness of either facet
   std::optional<double> clearance;  // OptiStruct CLEARANCE: initial opening of every point found
@@ -110,6 +113,8 @@ struct ContactSettings {
   // Tangential direction.
   TangentialLaw tangential_law = Frictionless{};
   std::optional<double> tangential_penalty;  // [stress / length]; default: the normal penalty
+  // Metafor PEN_TANGENT (GD, TM): the tangential spring times g(penetration) f(t).
+  TangentialPenalty tangential_penalty_factor;
   FrictionFilter friction_filter;
   bool freeze =
       false;  // OptiStruct FREEZE: points found at t = 0 tied in every direction, open or closed

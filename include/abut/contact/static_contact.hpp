@@ -28,6 +28,9 @@
 //   stick    A w_a w_b k_t (I - n (x) n)
 //   slip     A w_a w_b [(dL/dp)(dp/dd) t^ (x) n - (dL/dV) / dt t^ (x) s^
 //                       + (L k_t / |t_trial|)(I - t^ (x) t^)(I - n (x) n)]
+//   k_t(d)   a tangential penalty of the penetration (Metafor PEN_TANGENT GD): t_trial = t_0 -
+//            k_t(d) s adds -(dk_t/dd) s (x) n to the stick tangent, and its projection
+//            -(L / |t_trial|)(dk_t/dd)(I - t^ (x) t^) s (x) n to the slip tangent
 // (V = |s| / dt the sliding speed over the increment dt, s the slip, s^ its direction)
 // (the return-mapping tangent of Coulomb friction, e.g. Wriggers, Computational Contact Mechanics,
 // 2nd ed., 2006, section 10.3.2; unsymmetric when slipping). Tied contact: a bilinear spring in
@@ -61,6 +64,11 @@ struct StaticContactSettings {
   // increment (ContactInput::dt).
   TangentialLaw tangential_law = Frictionless{};
   double stick_slope = 0.0;    // k_t [stress / length]; 0: the normal penalty
+  // Metafor dependencies (laws/dependency.hpp), at the time of the evaluation (ContactInput::time,
+  // constant within an increment): the normal law's pressure times f(t) (PEN_NORMALE TM), and
+  // k_t times g(d) f(t) (PEN_TANGENT GD, TM). Ties keep the constant penalties.
+  TimeFactor normal_in_time;
+  TangentialPenalty stick_slope_factor;
   bool tied = false;           // bonded in every direction from the first evaluation on
   bool small_sliding = false;  // partners found at the first evaluation only
   // A point pairs with a facet when it lies at most `search_distance` outside it or at most
@@ -143,7 +151,7 @@ class StaticContact {
   // *CHANGE FRICTION: a new Coulomb coefficient (when given) and stick slope from the next
   // evaluation on.
   void change_friction(std::optional<double> mu, double stick_slope) {
-    if (mu) settings_.tangential_law = Coulomb{*mu, *mu, {}, {}};
+    if (mu) settings_.tangential_law = Coulomb{*mu, *mu, {}, {}, {}, {}};  // constant, as given
     settings_.stick_slope = stick_slope;
   }
   // *CHANGE SURFACE BEHAVIOR: a new normal law and penalty from the next evaluation on; a tied

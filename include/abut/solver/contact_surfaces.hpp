@@ -63,4 +63,8 @@ double smallest_element_volume(const Mesh& mesh, std::int64_t part, double shell
 // time as term.
 CurvePenalty curve_penalty(const Model& model, FunctionRef curve);
 
+// A *CURVE or *FUNCTION as a function of one variable x (a *FUNCTION gets x as its t and `term`
+// as term); empty when the reference is not valid. `table` must outlive the result.
+ScalarFunction function_of_one(const FunctionTable* table, FunctionRef f, double term);
+
 }  // namespace abut

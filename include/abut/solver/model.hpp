@@ -214,6 +214,19 @@ struct ContactSpec {
   std::optional<double> tangential_penalty;
   std::array<double, 6> friction_c{};  // C1..C6 (Radioss laws), m_s, m_d, k (Tresca)
   FrictionFilter friction_filter;
+  // *CONTACT_DEPENDENCY (Metafor TM / GD, seed 002): the functions that multiply a parameter;
+  // invalid when not given.
+  FunctionRef pfac_in_time;                           // PEN_NORMALE TM
+  FunctionRef mu_static_in_time, mu_dynamic_in_time;  // COEF_FROT_STA/DYN, TRESCA_STA_M/DYN_M TM
+  FunctionRef yield_in_time;                          // TRESCA_K TM
+  FunctionRef pen_t_in_time, pen_t_of_gap;            // PEN_TANGENT TM, GD (of the penetration)
+  struct Dependency {
+    std::string parameter;  // PFAC, MU_S, MU_D, K, PEN_T
+    bool gap = false;       // GAP (else TIME)
+    SourceLocation where;
+  };
+  std::vector<Dependency> dependencies;
+  SourceLocation dependency_where;
   // *CONTACT_STIFFNESS
   StiffnessSettings stiffness;
   bool element_penalty = false;  // rule ELEMENT: automatic penalty from the element step

@@ -122,6 +122,11 @@ StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side&
   s.penalty = spec.penalty ? *spec.penalty : 10.0 * young / thickness;
   s.stick_slope = spec.tangential_penalty.value_or(s.penalty);
   if (spec.penalty_curve.valid()) s.normal = curve_penalty(model, spec.penalty_curve);
+  const FunctionTable* table = &model.functions;
+  const double term = model.time.end_time;
+  s.normal_in_time = {function_of_one(table, spec.pfac_in_time, term)};
+  s.stick_slope_factor = {function_of_one(table, spec.pen_t_of_gap, term),
+                          {function_of_one(table, spec.pen_t_in_time, term)}};
   if (spec.exponential)
     s.normal = ExponentialOverclosure{spec.exponential->c0, spec.exponential->p0};
   s.depth = spec.detection_depth.value_or(0.5 * thickness);

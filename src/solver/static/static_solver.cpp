@@ -185,8 +185,9 @@ struct StaticSolver::Impl {
       bool symmetric = true;
       for (StaticContact& c : contacts) {
         // The increment's length: the sliding speed of rate-dependent friction is the slip over
-        // it (laws/tangential.hpp).
-        c.evaluate({x, y, z, {}, {}, {}, tau, dtau, {}});
+        // it (laws/tangential.hpp). The time: the total time, which the deck's functions of t
+        // read in static steps as in explicit runs (docs/deck-reference.md, *STATIC).
+        c.evaluate({x, y, z, {}, {}, {}, loads.step_start() + tau, dtau, {}});
         symmetric = symmetric && c.symmetric();
         for (const StaticContactElement& e : c.elements())
           for (int a = 0; a < e.count; ++a)

@@ -26,6 +26,7 @@ class StepLoads {
   StepLoads(const Model& model, const StaticStep& step, std::span<const double> u_start,
             const LoadHistory& previous, double step_start);
 
+  double step_start() const { return step_start_; }  // total time at the start of the step
   // One flag per global dof (3 per node).
   std::span<const std::uint8_t> prescribed() const { return prescribed_; }
   // Sets the prescribed dofs of u to their values at step time tau.

@@ -57,4 +57,11 @@ inline NormalResponse evaluate(const NormalLaw& law, double d, double pfac) {
   return std::visit([&](const auto& l) { return l.evaluate(d, pfac); }, law);
 }
 
+// The law's response times a factor f (Metafor PEN_NORMALE with a time dependency TM,
+// laws/dependency.hpp: for LinearPenalty exactly the law with pfac f). Pressure, slope and energy
+// scale alike, so the slope stays the derivative of the pressure at a fixed f.
+inline NormalResponse scaled(const NormalResponse& r, double f) {
+  return {r.pressure * f, r.stiffness * f, r.energy * f};
+}
+
 }  // namespace abut

@@ -6,9 +6,10 @@
 // slides (dynamic).
 //   Frictionless      no tangential force
 //   Coulomb           mu_s F_n / mu_d F_n (Metafor CoulombContactMaterial, seed 002); mu from a
-//                     callback (seed 000's mu = fcn) or a Radioss Ifric law (friction_model.hpp)
+//                     callback (seed 000's mu = fcn) or a Radioss Ifric law (friction_model.hpp);
+//                     mu_s and mu_d may each be times a function of time (Metafor TM)
 //   Tresca            m_s k A / m_d k A, independent of the pressure (Metafor
-//                     TrescaContactMaterial)
+//                     TrescaContactMaterial); m_s, m_d and k may each be times a function of time
 //   Sticking          no limit: the tangential spring holds while the contact is closed
 //                     (Metafor StickingContactMaterial, OptiStruct STICK)
 // A law gives its limits (explicit and static steps) and the slopes of the sliding limit in the
@@ -22,6 +23,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "abut/contact/laws/dependency.hpp"
 #include "abut/contact/laws/friction_model.hpp"
 #include "abut/core/vec3.hpp"
 
@@ -79,13 +81,23 @@ struct Coulomb {
   double mu_static = 0.0, mu_dynamic = 0.0;
   FrictionFunction function;  // when set: mu_s = mu_d = function(...)
   FrictionModel model;        // when set: mu_s = mu_d = model.mu(p, V)
+  // Metafor COEF_FROT_STA / COEF_FROT_DYN (TM): mu_static f_s(t), mu_dynamic f_d(t). Only with
+  // constant coefficients (no function, no model). Where mu_d(t) > mu_s(t), mu_s(t) is both.
+  TimeFactor static_in_time, dynamic_in_time;
 
   double mu(const SlipState& s, bool dynamic) const {
     const double p = s.area > 0.0 ? s.normal_force / s.area : 0.0;
     if (function)
       return function(p, s.slip_speed, s.time, s.position.x, s.position.y, s.position.z);
-    return of_model(dynamic ? mu_dynamic : mu_static,
-                    [&](const auto& m) { return m.mu(p, s.slip_speed); });
+    const double constant =
+        dynamic ? mu_dynamic * dynamic_in_time.at(s.time) : mu_static * static_in_time.at(s.time);
+    return of_model(constant, [&](const auto& m) { return m.mu(p, s.slip_speed); });
+  }
+  bool varies() const { return function || !std::holds_alternative<std::monostate>(model); }
+  // The sliding coefficient: mu(s, true), at most the static one (constant coefficients).
+  double mu_slide(const SlipState& s) const {
+    if (varies()) return mu(s, true);
+    return std::min(std::max(mu(s, true), 0.0), std::max(mu(s, false), 0.0));
   }
   // `value(m)` of the model m that is set, `none` without one. Every alternative answers here: a
   // model added to FrictionModel without mu, dmu_dp and dmu_dv does not compile (issue 31),
@@ -103,8 +115,7 @@ struct Coulomb {
   }
   SlipLimits limits(const SlipState& s) const {
     const double mu_s = std::max(mu(s, false), 0.0);
-    const bool varies = function || !std::holds_alternative<std::monostate>(model);
-    const double mu_d = varies ? mu_s : std::max(mu_dynamic, 0.0);
+    const double mu_d = varies() ? mu_s : mu_slide(s);
     return {mu_s * s.normal_force, mu_d * s.normal_force};
   }
   // d(mu p A)/d(p A) = mu + p dmu/dp at the sliding speed.
@@ -116,12 +127,12 @@ struct Coulomb {
                                     return std::array{q, s.slip_speed};
                                   })
                  : of_model(0.0, [&](const auto& m) { return m.dmu_dp(p, s.slip_speed); });
-    const double mu_slide = mu(s, true);
-    return mu_slide > 0.0 ? mu_slide + p * dmu_dp : 0.0;
+    const double slide = mu_slide(s);
+    return slide > 0.0 ? slide + p * dmu_dp : 0.0;
   }
   // d(mu p A)/dV = p A dmu/dV.
   double slide_rate_slope(const SlipState& s) const {
-    if (!(mu(s, true) > 0.0)) return 0.0;
+    if (!(mu_slide(s) > 0.0)) return 0.0;
     const double p = s.area > 0.0 ? s.normal_force / s.area : 0.0;
     const double dmu_dv =
         function ? function_slope(s.slip_speed, s,
@@ -145,11 +156,17 @@ struct Coulomb {
 };
 
 // Shear limit m k (seed 002: usually m sigma_0 / sqrt(3), k the shear yield stress), times area.
+// Each of m_s, m_d and k may be times a function of time (Metafor TM; seed 002 gives TRESCA_K
+// none, abut allows it); where m_d(t) > m_s(t), m_s(t) is both.
 struct Tresca {
   double factor_static = 0.0, factor_dynamic = 0.0;  // TRESCA_STA_M, TRESCA_DYN_M
   double shear_yield = 0.0;                          // TRESCA_K
+  TimeFactor static_in_time, dynamic_in_time, yield_in_time;
   SlipLimits limits(const SlipState& s) const {
-    return {factor_static * shear_yield * s.area, factor_dynamic * shear_yield * s.area};
+    const double k = std::max(shear_yield * yield_in_time.at(s.time), 0.0) * s.area;
+    const double m_s = std::max(factor_static * static_in_time.at(s.time), 0.0);
+    const double m_d = std::clamp(factor_dynamic * dynamic_in_time.at(s.time), 0.0, m_s);
+    return {m_s * k, m_d * k};
   }
   double slide_slope(const SlipState&) const { return 0.0; }
   double slide_rate_slope(const SlipState&) const { return 0.0; }
