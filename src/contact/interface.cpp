@@ -261,6 +261,10 @@ double ContactInterface::spring_step(double omega2) const {
   return 2.0 / std::sqrt(omega2) * (std::sqrt(1.0 + xi * xi) - xi);
 }
 
+double ContactInterface::approach_spring_step(double omega2) const {
+  return spring_step(spring_factor_ * omega2);
+}
+
 void ContactInterface::book_damping(const ContactInput& in) {
   if (in.vx.empty()) return;
   double power = 0.0;  // of the damping forces on the nodes (< 0: they dissipate)
@@ -325,6 +329,11 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
       0.0;
   stats_.active_points = 0;  // heat_flow: set by conduct_heat, which may follow on its own clock
   stats_.stable_step = kInfinity;
+  // A normal penalty that grows in time (Metafor PEN_NORMALE TM) stiffens every spring by f(t):
+  // the bounds made with the springs of factor 1 (approach, near points, the initial bound) shrink
+  // by sqrt(f) (approach_spring_step); touching points carry f in their own springs. f below 1
+  // is not taken: those bounds stay those of factor 1.
+  spring_factor_ = std::max(settings_.normal_in_time.at(in.time), 1.0);
   // Far from every facet a point cannot touch before the next broad-phase build sees it, as long
   // as no node crosses a quarter of the search margin in one step; at rest (no speed to judge
   // by) the bound before touching holds as before contact. Last step's damping forces did the
@@ -344,8 +353,8 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   const bool outside_window =
       !enabled_ || in.time < settings_.begin_time || in.time > settings_.end_time;
   stats_.approach_step = speed2 > 0.0 && !edges_ && !outside_window
-                             ? std::max(initial_stable_step_, 0.25 * margin_ / std::sqrt(speed2))
-                             : initial_stable_step_;
+                             ? std::max(initial_stable_step(), 0.25 * margin_ / std::sqrt(speed2))
+                             : initial_stable_step();
   if (outside_window) {
     for (Pass& pass : passes_) {  // outside the window: no forces and no friction memory
       for (std::size_t p = 0; p < pass.hit.size(); ++p)  // the springs let go (point order)
@@ -370,7 +379,7 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   // is below half that bound: the bound does not limit the caller then (its own safety factor on
   // the step taken into account), and sparing the points' look at their candidates costs at most
   // one step at the bound once the caller's other limits rise above it.
-  const double near_spring_step = spring_step(near_omega2_);
+  const double near_spring_step = approach_spring_step(near_omega2_);
   const bool per_point = speed2 > 0.0 && !edges_ && in.dt >= 0.5 * near_spring_step;
   const double speed = std::sqrt(speed2);
   double near_step = kInfinity;

@@ -94,6 +94,9 @@ ContactInterface::ContactInterface(ContactSettings settings, ContactSurface surf
   build_edges(initial);
   initial_state(initial);
   for (const Side& side : sides_) initial_points_.push_back(side.point_facet.size());
+  // The bounds above are those of the springs at a factor 1; apply() and initial_stable_step()
+  // scale them to the time's (spring_step).
+  spring_factor_ = std::max(settings_.normal_in_time.at(initial.time), 1.0);
 }
 
 void ContactInterface::build_parts() {

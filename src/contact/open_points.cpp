@@ -87,7 +87,7 @@ double ContactInterface::approach_limit(const Pass& pass, std::size_t p, const C
   if (first == last) return kInfinity;  // beyond the margin (apply's rule for far points)
   const double omega2 = pass.approach_omega2[p];
   if (!(omega2 > 0.0)) return kInfinity;
-  const double spring = spring_step(omega2);
+  const double spring = approach_spring_step(omega2);
   if (spring >= least) return kInfinity;
   const Side& own = sides_[pass.own];
   const Side& target = sides_[pass.target];

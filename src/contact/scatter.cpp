@@ -104,7 +104,7 @@ void ContactInterface::scatter(const ContactInput& in, ContactForces& out, bool 
   }
   if (omega2_max > 0.0) stats_.stable_step = spring_step(omega2_max);
   if (approach_omega2 > 0.0)
-    stats_.approach_step = std::min(stats_.approach_step, spring_step(approach_omega2));
+    stats_.approach_step = std::min(stats_.approach_step, approach_spring_step(approach_omega2));
 }
 
 }  // namespace abut

@@ -399,6 +399,38 @@ TEST(ContactInterface, UndampedBounceReturnsTheImpactSpeed) {
   EXPECT_LT(contact.initial_stable_step(), dt_seen);  // the bound before contact is conservative
 }
 
+// A normal penalty f(t) times pfac (Metafor PEN_NORMALE TM, laws/dependency.hpp) stiffens every
+// spring by f: the block on its spring then has the bound 2/omega with omega^2 = f k/M, and the
+// bounds made before contact (at a factor 1) shrink by sqrt(f), so that they stay below it.
+TEST(ContactInterface, ATimeFactorOnThePenaltyShrinksTheStepBounds) {
+  const double pfac = 1e6, v0 = 1.0, m = 1.0, f = 4.0;
+  Pair plain_pair(0.001, pfac, pfac, false, m, 1e12), pair(0.001, pfac, pfac, false, m, 1e12);
+  const ContactInterface plain = plain_pair.make(undamped(2));
+  ContactSettings s = undamped(2);
+  s.normal_in_time = {[f](double) { return f; }};
+  ContactInterface contact = pair.make(s);
+  EXPECT_DOUBLE_EQ(contact.initial_stable_step(), plain.initial_stable_step() / std::sqrt(f));
+  const double M = 4 * m, k = f * pfac, bound = 2.0 * std::sqrt(M / k);
+  const double dt = 0.02 * bound;
+  for (std::int32_t i = pair.upper_first; i < pair.end; ++i) pair.w.vz[i] = -v0;
+  double time = 0.0, dt_seen = 1e300, approach = 1e300;
+  for (int step = 0; step < 100000; ++step) {
+    pair.w.clear_forces();
+    ContactForces out = pair.w.forces();
+    contact.apply(pair.w.input(time, dt), out);
+    approach = std::min(approach, contact.stats().approach_step);
+    if (contact.stats().active_points > 0) dt_seen = std::min(dt_seen, contact.stats().stable_step);
+    for (std::int32_t i = pair.upper_first; i < pair.end; ++i) {
+      pair.w.vz[i] += pair.w.fz[i] / m * dt;
+      pair.w.z[i] += pair.w.vz[i] * dt;
+    }
+    time += dt;
+    if (dt_seen < 1e300 && pair.w.z[pair.upper_first] > 0.001) break;
+  }
+  EXPECT_NEAR(dt_seen, bound, 1e-6 * bound);
+  EXPECT_LT(approach, dt_seen);  // before contact the bound was already below the stiff spring's
+}
+
 // The bound before touching limits the step only where a spring may act in the next step (issue
 // 12): while the surfaces are further apart than the search margin the step only keeps the nodes
 // from crossing a quarter of the margin (at rest, with no speed to judge by, the bound holds);

@@ -11,6 +11,7 @@
 // OpenMP threads: points are evaluated in parallel into per-point slots and their forces are added
 // to the nodes serially in a fixed order. See docs/contact.md.
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -157,7 +158,7 @@ class ContactInterface {
   // Stable step bound of every spring that may act, spring_step of the largest 2 k / m_min over
   // the points, as if every point touched (stats().approach_step takes it over the points that may
   // touch only).
-  double initial_stable_step() const { return initial_stable_step_; }
+  double initial_stable_step() const { return initial_stable_step_ / std::sqrt(spring_factor_); }
   // Accumulated wear depth and current contact pressure per node (0 away from the surfaces).
   std::span<const double> wear() const { return wear_; }
   std::span<const double> nodal_pressure() const { return pressure_; }
@@ -445,6 +446,9 @@ class ContactInterface {
   // Finite Elements for Continua and Structures, 2000, section 6.2: stability with damping).
   // Undamped, 2 / omega; xi = 0.1 (the default) takes 9.5% off it.
   double spring_step(double omega2) const;
+  // spring_step of a spring made at a penalty factor 1 (approach and initial bounds), at the
+  // normal penalty's time factor of the last apply (settings.normal_in_time).
+  double approach_spring_step(double omega2) const;
   void add_damping(std::int32_t node, const Vec3& force) {
     damping_fx_[node] += force.x;
     damping_fy_[node] += force.y;
@@ -480,6 +484,7 @@ class ContactInterface {
   double initial_stable_step_ = std::numeric_limits<double>::infinity();
   std::size_t builds_ = 0;
   bool enabled_ = true;               // set_enabled
+  double spring_factor_ = 1.0;        // max(normal_in_time(t), 1) of the last apply (spring_step)
   bool rebuild_pending_ = false;      // points or facets changed (erosion)
   std::size_t gap_pairs_ = 0;         // pairs counted in stats_.gap_min / gap_max
   std::optional<EdgeContact> edges_;  // edge-to-edge contact (EdgeSettings)
