@@ -451,8 +451,13 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
     ft = s.adhesion->viscous_force(v_t, area);
     slip_work = -dot(ft, v_t) * in.dt;
   } else {
-    const SlipLimits limits =
-        slip_limits(s.tangential_law, {std::max(fn, 0.0), area, slip_speed, in.time, f.x});
+    // The law of this pair of parts (Radioss /FRICTION), else the interface's.
+    const std::int32_t pair =
+        part_friction_[static_cast<std::size_t>(own.point_part[p]) * part_ids_.size() +
+                       static_cast<std::size_t>(target.facet_part[h.facet])];
+    const TangentialLaw& law = pair < 0 ? s.tangential_law : s.pair_frictions[pair].law;
+    const FrictionFilter& filter = pair < 0 ? s.friction_filter : s.pair_frictions[pair].filter;
+    const SlipLimits limits = slip_limits(law, {std::max(fn, 0.0), area, slip_speed, in.time, f.x});
     if (k_t > 0.0 && (limits.stick > 0.0 || limits.slide > 0.0)) {
       const StickSlipResult t =
           stick_slip(previous, pass.slip[p], {normal, v_t, in.dt, k_t, damping_of(k_t, r)}, limits);
@@ -461,8 +466,8 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
       spring = t.spring;
       slip_work = t.slip_work;
     }
-    if (s.friction_filter.kind != FrictionFilter::Kind::None) {  // Radioss Ifiltr
-      const double a = s.friction_filter.alpha(in.dt);
+    if (filter.kind != FrictionFilter::Kind::None) {  // Radioss Ifiltr
+      const double a = filter.alpha(in.dt);
       const Vec3 filtered = (previous - normal * dot(previous, normal)) * (1.0 - a);
       ft = ft * a + filtered;
       spring = spring * a + filtered;

@@ -6,6 +6,37 @@
 
 namespace abut {
 
+namespace {
+
+// A tangential law and its filter that the steps can work with; `law_setting` and
+// `filter_setting` name them in the error.
+void check_friction(const TangentialLaw& law, const FrictionFilter& filter, const char* law_setting,
+                    const char* filter_setting) {
+  auto fail = [](const char* setting, const std::string& message) {
+    throw ContactSetupError(setting, message);
+  };
+  if (const auto* c = std::get_if<Coulomb>(&law)) {
+    if (!(c->mu_static >= 0.0) || !(c->mu_dynamic >= 0.0))
+      fail(law_setting, "the friction coefficients must be >= 0");
+    if (!c->function && std::holds_alternative<std::monostate>(c->model) &&
+        c->mu_dynamic > c->mu_static)
+      fail(law_setting, "the dynamic friction coefficient must not exceed the static one");
+  }
+  if (const auto* t = std::get_if<Tresca>(&law)) {
+    if (!(t->shear_yield > 0.0))
+      fail(law_setting, "Tresca friction needs a shear yield stress > 0");
+    if (!(t->factor_static >= 0.0 && t->factor_dynamic >= 0.0 &&
+          t->factor_dynamic <= t->factor_static))
+      fail(law_setting, "Tresca friction needs shear factors with 0 <= dynamic <= static");
+  }
+  if (filter.kind != FrictionFilter::Kind::None && !(filter.xfreq > 0.0))
+    fail(filter_setting, "the filter coefficient must be > 0");
+  if (filter.kind == FrictionFilter::Kind::Simple && !(filter.xfreq <= 1.0))
+    fail(filter_setting, "the simple filter coefficient must be in (0, 1]");
+}
+
+}  // namespace
+
 void ContactInterface::validate(const ContactSurface& s1, const ContactSurface& s2,
                                 std::size_t coordinates) const {
   const ContactSettings& s = settings_;
@@ -37,26 +68,11 @@ void ContactInterface::validate(const ContactSurface& s1, const ContactSurface& 
          "adhesion needs a gap > 0, a maximum adhesive stress >= 0 and a viscosity >= 0");
   if (s.freeze && s.stick_stress)
     fail("freeze", "a frozen contact cannot also have a sticking failure stress");
-  if (const auto* c = std::get_if<Coulomb>(&s.tangential_law)) {
-    if (!(c->mu_static >= 0.0) || !(c->mu_dynamic >= 0.0))
-      fail("tangential_law", "the friction coefficients must be >= 0");
-    if (!c->function && std::holds_alternative<std::monostate>(c->model) &&
-        c->mu_dynamic > c->mu_static)
-      fail("tangential_law", "the dynamic friction coefficient must not exceed the static one");
-  }
-  if (const auto* t = std::get_if<Tresca>(&s.tangential_law)) {
-    if (!(t->shear_yield > 0.0))
-      fail("tangential_law", "Tresca friction needs a shear yield stress > 0");
-    if (!(t->factor_static >= 0.0 && t->factor_dynamic >= 0.0 &&
-          t->factor_dynamic <= t->factor_static))
-      fail("tangential_law", "Tresca friction needs shear factors with 0 <= dynamic <= static");
-  }
+  check_friction(s.tangential_law, s.friction_filter, "tangential_law", "friction_filter");
+  for (const PairFriction& pf : s.pair_frictions)
+    check_friction(pf.law, pf.filter, "pair_frictions", "pair_frictions");
   if (const auto* c = std::get_if<CurvePenalty>(&s.normal_law); c && !c->pressure)
     fail("normal_law", "the penalty curve is missing");
-  if (s.friction_filter.kind != FrictionFilter::Kind::None && !(s.friction_filter.xfreq > 0.0))
-    fail("friction_filter", "the filter coefficient must be > 0");
-  if (s.friction_filter.kind == FrictionFilter::Kind::Simple && !(s.friction_filter.xfreq <= 1.0))
-    fail("friction_filter", "the simple filter coefficient must be in (0, 1]");
   const StiffnessSettings& k = s.stiffness;
   if (!(k.scale > 0.0) || !(k.minimum >= 0.0) || !(k.maximum > k.minimum))
     fail("stiffness", "expected a stiffness scale > 0 and 0 <= minimum < maximum");

@@ -188,6 +188,46 @@ TEST(ContactInterface, CoulombBlockSticksBelowAndSlidesAboveMuN) {
   }
 }
 
+// Radioss /FRICTION (seed 004, fric_ID; comment 7): the law of a part pair replaces the
+// interface's. The block of the test above (part 1) slides on the plate (part 2) under a pull
+// above mu N: once sliding, the friction force is the pair's mu times N. Interface frictionless;
+// pairs: (1, 2) mu 0.3 -> 0.3; (2, 2) mu 0.3 covers no pair that meets -> 0; (1, 2) mu 0.1 then
+// every pair mu 0.25 -> the last wins, 0.25.
+TEST(ContactInterface, APartPairsFrictionReplacesTheInterfacesLaw) {
+  const double pfac = 1e6, d = 1e-3, m = 0.25, dt = 2e-5;
+  const double N = pfac * d, T = 0.6 * N;
+  auto coulomb = [](double mu) { return Coulomb{mu, mu, {}, {}, {}, {}}; };
+  struct Case {
+    std::vector<PairFriction> pairs;
+    double mu;
+  };
+  const Case cases[] = {
+      {{PairFriction{{1}, {2}, coulomb(0.3), {}}}, 0.3},
+      {{PairFriction{{2}, {}, coulomb(0.3), {}}}, 0.0},
+      {{PairFriction{{1}, {2}, coulomb(0.1), {}}, PairFriction{{}, {}, coulomb(0.25), {}}}, 0.25},
+  };
+  for (const Case& c : cases) {
+    Pair pair(0.1, pfac, pfac, true, m, 1e9);
+    ContactSettings s = undamped(2);
+    s.one_way = true;
+    s.pair_frictions = c.pairs;
+    ContactInterface contact = pair.make(s);
+    pair.move_upper(0, 0, -0.1 - d);
+    for (int step = 0; step < 1000; ++step) {
+      pair.w.clear_forces();
+      ContactForces out = pair.w.forces();
+      contact.apply(pair.w.input(step * dt, dt), out);
+      for (std::int32_t i = pair.upper_first; i < pair.end; ++i) {
+        pair.w.vx[i] += (pair.w.fx[i] + T / 4) / m * dt;
+        pair.w.x[i] += pair.w.vx[i] * dt;
+      }
+    }
+    EXPECT_GT(pair.w.vx[pair.upper_first], 0.0);  // sliding
+    EXPECT_NEAR(std::abs(contact.stats().force.x), c.mu * contact.stats().normal_force, 1e-9 * N)
+        << "mu " << c.mu;
+  }
+}
+
 // Seed 000: contact acts between t_beg and t_end only.
 TEST(ContactInterface, ActsOnlyBetweenBeginAndEndTime) {
   Pair pair(0.1, 1e6, 1e6);

@@ -478,6 +478,8 @@ class ContactInterface {
   std::vector<double> damping_fx_, damping_fy_, damping_fz_;
   std::vector<std::int64_t> part_ids_;  // local part index -> user part id
   std::vector<double> part_scale_;      // pair scale, part_ids_.size()^2
+  // The settings.pair_frictions entry of each part pair (-1: tangential_law), part_ids_.size()^2.
+  std::vector<std::int32_t> part_friction_;
   double margin_ = 0.0;
   double smooth_reach_ = 0.0;  // overshoot beyond a smooth edge per unit |gap|: tan(alpha_edge)
   double sharp_cos_ = 1.0;     // cos(alpha_edge): facets turned further meet at a sharp edge

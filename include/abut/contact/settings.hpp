@@ -45,6 +45,16 @@ struct PairScale {
   double scale = 1.0;
 };
 
+// Radioss /FRICTION (seed 004, fric_ID and comment 7): the tangential law and filter of the
+// points between facets of parts1 and parts2 (either way round), in place of the interface's
+// tangential_law and friction_filter. Empty parts1: every part of the interface; empty parts2:
+// parts1 with itself. Where several cover a pair, the last one wins (as PairScale).
+struct PairFriction {
+  std::vector<std::int64_t> parts1, parts2;
+  TangentialLaw law = Frictionless{};
+  FrictionFilter filter;
+};
+
 // Edge-to-edge contact (Radioss /INTER/TYPE25 Iedge and Edge_angle, seed 004, comment 6): edges of
 // surface 1 (secondary) that cross edges of surface 2 (main) are pushed apart, which a point-to-
 // facet contact misses. Friction is not included (seed 004).
@@ -116,6 +126,7 @@ struct ContactSettings {
   // Metafor PEN_TANGENT (GD, TM): the tangential spring times g(penetration) f(t).
   TangentialPenalty tangential_penalty_factor;
   FrictionFilter friction_filter;
+  std::vector<PairFriction> pair_frictions;  // per part pair, over tangential_law (in order)
   bool freeze =
       false;  // OptiStruct FREEZE: points found at t = 0 tied in every direction, open or closed
   std::optional<double> stick_stress;  // sigma_stick (seed 000): tied on touch until this traction
