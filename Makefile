@@ -53,7 +53,7 @@ FUZZ_SEED ?= 1
 sanitize-build: setup
 	CC=$(LLVM_BIN)/clang CXX=$(LLVM_BIN)/clang++ cmake -S . -B $(SANITIZE_DIR) -G Ninja \
 	  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" \
-	  -DABUT_SANITIZE=ON -DABUT_LIBFUZZER=ON $(CMAKE_ARGS)
+	  -DABUT_SANITIZE=ON -DABUT_LIBFUZZER=ON -DABUT_BUILD_BENCHMARKS=OFF $(CMAKE_ARGS)
 	cmake --build $(SANITIZE_DIR) -j $(JOBS)
 
 # The whole test suite under the sanitizers (about 20 minutes on 2 cores).

@@ -104,6 +104,11 @@ PartnerRules ContactInterface::partner_rules(const Side& own, std::size_t p) con
   rules.point_min_edge = own.point_min_edge[p];
   rules.mesh_fraction =
       settings_.gaps.mesh_fraction.value_or(std::numeric_limits<double>::infinity());
+  // Radioss: Ishape 1 is not available with Igap 3 and is reset to 2 (seed 004, comment 4).
+  rules.border =
+      settings_.gaps.mesh_fraction && settings_.gaps.border == GapSettings::Border::Square
+          ? GapSettings::Border::Round
+          : settings_.gaps.border;
   if (!x0_.empty() && self_contact()) {  // Igap 2: where the point was at the start
     const auto nodes = own.point_nodes(p);
     const auto n = quad_shape(own.point_xi[p], own.point_eta[p]);

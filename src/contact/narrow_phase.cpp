@@ -74,9 +74,26 @@ FacetVerdict judge_facet(const TargetFacets& target, std::int32_t f, const PairR
     // (kEdgeRoundOff of the facet's size) is no overshoot.
     const double size = norm(c[2] - c[0]);
     const bool on_edge = q.overshoot <= kEdgeRoundOff * size;
+    const bool free_border = shell && (q.crossed_edges & target.free_edges[f]) != 0;
     if (rounded && !on_edge) {
       gap = q.distance - g;  // around the rounded edge
       push = (x_p - q.point) / q.distance;
+    } else if (free_border && rules.border != GapSettings::Border::Cut && !on_edge) {
+      // Radioss Ishape (seed 004, comment 4): the point's own gap g_s reaches over the border, no
+      // further; the facet's slab (half thickness g - g_s) ends square at the border.
+      const double g_s = std::min(rules.point_gap, g);
+      if (q.overshoot > g_s) return v;
+      if (rules.border == GapSettings::Border::Round) {
+        // The slab widened by a ball of radius g_s: the distance to the slab's edge, less g_s.
+        const Vec3 d = x_p - q.point;
+        const double rise = std::max(q.gap - (g - g_s), 0.0);  // above the slab's face
+        const Vec3 across = d - q.normal * q.gap;              // in the facet's plane
+        const Vec3 to_point = across + q.normal * rise;
+        const double distance = norm(to_point);
+        if (!(distance > 0.0)) return v;
+        gap = distance - g_s;
+        push = to_point / distance;
+      }
     } else {
       // Beyond a sharp (or free) edge only within delta_edge, or kOnBorder of the facet's size: a
       // node on the border of a matched mesh stays on it while the two surfaces stretch and turn

@@ -66,6 +66,7 @@ const std::map<std::string, KeywordReader, std::less<>>& supported() {
       {"*CONTACT_EDGE", read_contact_edge},
       {"*CONTACT_EROSION", read_contact_erosion},
       {"*CONTACT_FRICTION", read_contact_friction},
+      {"*CONTACT_FRICTION_PAIR", read_contact_friction_pair},  // abut's own (Radioss fric_ID)
       {"*CONTACT_GAP", read_contact_gap},
       {"*CONTACT_INITIAL", read_contact_initial},
       {"*CONTACT_NORMAL", read_contact_normal},

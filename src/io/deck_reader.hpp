@@ -345,6 +345,7 @@ void read_contact(DeckReader&, Block&);
 void read_contact_discretization(DeckReader&, Block&);
 void read_contact_normal(DeckReader&, Block&);
 void read_contact_friction(DeckReader&, Block&);
+void read_contact_friction_pair(DeckReader&, Block&);
 void read_contact_adhesion(DeckReader&, Block&);
 void read_contact_stiffness(DeckReader&, Block&);
 void read_contact_thermal(DeckReader&, Block&);

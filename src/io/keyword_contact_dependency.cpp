@@ -12,23 +12,9 @@
 namespace abut::deck {
 namespace {
 
-enum class Parameter { Pfac, MuStatic, MuDynamic, Yield, PenT };
+using Parameter = ContactSpec::Dependency::Parameter;
 
-const char* name_of(Parameter p) {
-  switch (p) {
-    case Parameter::Pfac:
-      return "PFAC";
-    case Parameter::MuStatic:
-      return "MU_S";
-    case Parameter::MuDynamic:
-      return "MU_D";
-    case Parameter::Yield:
-      return "K";
-    case Parameter::PenT:
-      return "PEN_T";
-  }
-  return "";
-}
+const char* name_of(Parameter p) { return ContactSpec::Dependency{p, false, {}}.name(); }
 
 FunctionRef ContactSpec::*member_of(Parameter p, bool gap) {
   switch (p) {
@@ -84,7 +70,7 @@ void read_contact_dependency(DeckReader& d, Block& b) {
                        " takes TIME");
     }
     for (const ContactSpec::Dependency& e : entries)
-      if (e.parameter == name_of(p) && e.gap == gap) {
+      if (e.parameter == p && e.gap == gap) {
         row->fail(0, std::string(name_of(p)) + (gap ? " GAP" : " TIME") +
                          " is given twice: give each dependency once");
       }
@@ -94,7 +80,7 @@ void read_contact_dependency(DeckReader& d, Block& b) {
       for (ContactSpec& c : m.contacts)
         if (c.id == coid) c.*member = f;  // a missing contact is reported at coid
     });
-    entries.push_back({name_of(p), gap, row->where(0)});
+    entries.push_back({p, gap, row->where(0)});
   }
   refine_contact(d, r, [entries, where = r.where()](ContactSpec& c) {
     c.dependencies = entries;
@@ -110,20 +96,20 @@ void check_contact_dependency(const ContactSpec& c) {
                                                  !c.friction_function.valid());
   for (const ContactSpec::Dependency& e : c.dependencies) {
     const auto fail = [&](const std::string& why) {
-      throw InputError(
-          e.where, e.parameter + " of *CONTACT_DEPENDENCY: " + why + " (" + contact_at(c) + ")");
+      throw InputError(e.where, std::string(e.name()) + " of *CONTACT_DEPENDENCY: " + why + " (" +
+                                    contact_at(c) + ")");
     };
-    if (e.parameter == "PFAC" && law == Law::Freeze)
+    if (e.parameter == Parameter::Pfac && law == Law::Freeze)
       fail("law FREEZE ties the points with the constant penalty; remove the dependency");
-    if ((e.parameter == "MU_S" || e.parameter == "MU_D") && law != Law::Coulomb &&
-        law != Law::Tresca) {
+    if ((e.parameter == Parameter::MuStatic || e.parameter == Parameter::MuDynamic) &&
+        law != Law::Coulomb && law != Law::Tresca) {
       fail(
           "a time-dependent friction coefficient needs *CONTACT_FRICTION COULOMB (mu_s, mu_d) or "
           "TRESCA (m_s, m_d); for mu of *CONTACT use mu = fcn(fid) of t");
     }
-    if (e.parameter == "K" && law != Law::Tresca)
+    if (e.parameter == Parameter::Yield && law != Law::Tresca)
       fail("K is the shear yield stress of *CONTACT_FRICTION TRESCA");
-    if (e.parameter == "PEN_T" && (frictionless || law == Law::Freeze)) {
+    if (e.parameter == Parameter::PenT && (frictionless || law == Law::Freeze)) {
       fail(std::string("the contact has no tangential spring to scale (friction ") +
            (law == Law::Freeze ? "FREEZE ties with the constant penalty)" : "NONE)"));
     }

@@ -75,58 +75,75 @@ std::array<double, 6> renard_coefficients(const Row& r1, const std::optional<Row
   return c;
 }
 
-}  // namespace
+// The law line's fields (*CONTACT_FRICTION has coid before them and pen_t among them).
+struct LawFields {
+  std::size_t law, mu_s, mu_d, filter, xfreq;
+};
 
-void read_contact_friction(DeckReader& d, Block& b) {
-  const Row r = b.row({"coid", "law", "mu_s", "mu_d", "pen_t", "filter", "xfreq"});
+// A tangential law as read: the law, its coefficients and its filter.
+struct LawCard {
+  Law law = Law::None;
+  double mu_s = 0.0, mu_d = 0.0;
+  std::array<double, 6> c{};
+  FrictionFilter filter;
+};
+
+// The law of line r (fields f) and of the optional line 2 of coefficients, r2. For a part pair
+// (*CONTACT_FRICTION_PAIR) the modes of the whole contact, STICK and FREEZE, are refused.
+LawCard read_law(const Row& r, const std::optional<Row>& r2, LawFields f, bool pair) {
   const std::string laws =
-      "a friction law: NONE, COULOMB, TRESCA, STICK, FREEZE, VISCOUS, DARMSTAD or RENARD (or "
-      "Radioss Ifric 1, 2, 3)";
-  r.require(r.given(1), 1, "expected " + laws);
-  const Law law = word_choice(r, 1, Law::Coulomb,
-                              {{"NONE", Law::None},
-                               {"COULOMB", Law::Coulomb},
-                               {"TRESCA", Law::Tresca},
-                               {"STICK", Law::Stick},
-                               {"FREEZE", Law::Freeze},
-                               {"VISCOUS", Law::Viscous},
-                               {"DARMSTAD", Law::Darmstad},
-                               {"RENARD", Law::Renard},
-                               {"1", Law::Viscous},
-                               {"2", Law::Darmstad},
-                               {"3", Law::Renard}},
-                              laws);
-  const std::optional<Row> r2 = b.optional_row({"c1", "c2", "c3", "c4", "c5", "c6"});
+      pair
+          ? "a friction law: NONE, COULOMB, TRESCA, VISCOUS, DARMSTAD or RENARD (or Radioss Ifric "
+            "1, 2, 3)"
+          : "a friction law: NONE, COULOMB, TRESCA, STICK, FREEZE, VISCOUS, DARMSTAD or RENARD (or "
+            "Radioss Ifric 1, 2, 3)";
+  r.require(r.given(f.law), f.law, "expected " + laws);
+  LawCard card;
+  const Law law = card.law = word_choice(r, f.law, Law::Coulomb,
+                                         {{"NONE", Law::None},
+                                          {"COULOMB", Law::Coulomb},
+                                          {"TRESCA", Law::Tresca},
+                                          {"STICK", Law::Stick},
+                                          {"FREEZE", Law::Freeze},
+                                          {"VISCOUS", Law::Viscous},
+                                          {"DARMSTAD", Law::Darmstad},
+                                          {"RENARD", Law::Renard},
+                                          {"1", Law::Viscous},
+                                          {"2", Law::Darmstad},
+                                          {"3", Law::Renard}},
+                                         laws);
+  if (pair && (law == Law::Stick || law == Law::Freeze)) {
+    r.fail(f.law, std::string("law ") + law_name(law) +
+                      " ties the whole contact: give it with *CONTACT_FRICTION, not for a part "
+                      "pair");
+  }
   const auto no_line2 = [&r2, law]() {
     if (!r2) return;
     for (std::size_t k = 0; k < 6; ++k) unused(*r2, k, law, " (line 2)");
   };
-
-  double mu_s = 0.0, mu_d = 0.0;
-  std::array<double, 6> c{};
   switch (law) {
     case Law::Impetus:
     case Law::None:
     case Law::Stick:
     case Law::Freeze:
-      unused(r, 2, law);
-      unused(r, 3, law);
+      unused(r, f.mu_s, law);
+      unused(r, f.mu_d, law);
       no_line2();
       break;
     case Law::Coulomb:
-      mu_s = r.number(2);
-      r.require(mu_s >= 0.0, 2, "expected a static friction coefficient >= 0");
-      mu_d = r.number_or(3, mu_s);
-      r.require(mu_d >= 0.0 && mu_d <= mu_s, 3,
+      card.mu_s = r.number(f.mu_s);
+      r.require(card.mu_s >= 0.0, f.mu_s, "expected a static friction coefficient >= 0");
+      card.mu_d = r.number_or(f.mu_d, card.mu_s);
+      r.require(card.mu_d >= 0.0 && card.mu_d <= card.mu_s, f.mu_d,
                 "expected a dynamic friction coefficient in [0, mu_s] (empty: mu_s)");
       no_line2();
       break;
     case Law::Tresca: {
       // Metafor TrescaContactMaterial: TRESCA_STA_M, TRESCA_DYN_M, TRESCA_K.
-      const double m_s = r.number(2);
-      r.require(m_s >= 0.0, 2, "expected the static shear factor m_s >= 0");
-      const double m_d = r.number_or(3, m_s);
-      r.require(m_d >= 0.0 && m_d <= m_s, 3,
+      const double m_s = r.number(f.mu_s);
+      r.require(m_s >= 0.0, f.mu_s, "expected the static shear factor m_s >= 0");
+      const double m_d = r.number_or(f.mu_d, m_s);
+      r.require(m_d >= 0.0 && m_d <= m_s, f.mu_d,
                 "expected the dynamic shear factor m_d in [0, m_s] (empty: m_s)");
       if (!r2 || !r2->given(0)) {
         throw InputError(r2 ? r2->where(0) : line_of(r, "c1"),
@@ -135,22 +152,48 @@ void read_contact_friction(DeckReader& d, Block& b) {
       const double k = r2->number(0);
       r2->require(k > 0.0, 0, "expected the shear yield stress k > 0");
       for (std::size_t i = 1; i < 6; ++i) unused(*r2, i, law, " (c1 is k)");
-      c = {m_s, m_d, k, 0.0, 0.0, 0.0};
+      card.c = {m_s, m_d, k, 0.0, 0.0, 0.0};
       break;
     }
     case Law::Viscous:
     case Law::Darmstad:
-      mu_s = r.number_or(2, 0.0);  // Radioss Fric
-      unused(r, 3, law, " (mu_s is Radioss Fric)");
-      c = coefficients(r2);
+      card.mu_s = r.number_or(f.mu_s, 0.0);  // Radioss Fric
+      unused(r, f.mu_d, law, " (mu_s is Radioss Fric)");
+      card.c = coefficients(r2);
       if (law == Law::Viscous && r2) unused(*r2, 5, law, " (Ifric 1 has C1..C5)");
       break;
     case Law::Renard:
-      unused(r, 2, law, " (c1 is mu_s)");
-      unused(r, 3, law, " (c2 is mu_d)");
-      c = renard_coefficients(r, r2);
+      unused(r, f.mu_s, law, " (c1 is mu_s)");
+      unused(r, f.mu_d, law, " (c2 is mu_d)");
+      card.c = renard_coefficients(r, r2);
       break;
   }
+
+  const std::int64_t kind = r.integer_or(f.filter, 0);
+  r.require(kind >= 0 && kind <= 3, f.filter,
+            "expected a friction filter 0 (none), 1 (simple), 2 (period) or 3 (cut-off frequency)");
+  if (kind != 0 && law == Law::None) unused(r, f.filter, law);
+  static constexpr FrictionFilter::Kind kinds[] = {
+      FrictionFilter::Kind::None, FrictionFilter::Kind::Simple, FrictionFilter::Kind::Period,
+      FrictionFilter::Kind::Frequency};
+  card.filter.kind = kinds[kind];
+  if (r.given(f.xfreq)) {
+    if (kind == 0) r.fail(f.xfreq, "xfreq is used only with a friction filter (filter 1, 2 or 3)");
+    card.filter.xfreq = r.number(f.xfreq);
+    r.require(card.filter.xfreq > 0.0, f.xfreq, "expected a filtering coefficient > 0");
+    r.require(kind != 1 || card.filter.xfreq <= 1.0, f.xfreq,
+              "expected a filtering coefficient in (0, 1] for the simple filter (filter 1)");
+  }
+  return card;
+}
+
+}  // namespace
+
+void read_contact_friction(DeckReader& d, Block& b) {
+  const Row r = b.row({"coid", "law", "mu_s", "mu_d", "pen_t", "filter", "xfreq"});
+  const std::optional<Row> r2 = b.optional_row({"c1", "c2", "c3", "c4", "c5", "c6"});
+  const LawCard card = read_law(r, r2, {1, 2, 3, 5, 6}, false);
+  const Law law = card.law;
 
   std::optional<double> pen_t;
   if (r.given(4)) {
@@ -159,42 +202,59 @@ void read_contact_friction(DeckReader& d, Block& b) {
     r.require(*pen_t > 0.0, 4,
               "expected a tangential penalty > 0 [stress/length] (empty: the normal penalty)");
   }
-  FrictionFilter filter;
-  const std::int64_t kind = r.integer_or(5, 0);
-  r.require(kind >= 0 && kind <= 3, 5,
-            "expected a friction filter 0 (none), 1 (simple), 2 (period) or 3 (cut-off frequency)");
-  if (kind != 0 && law == Law::None) unused(r, 5, law);
-  static constexpr FrictionFilter::Kind kinds[] = {
-      FrictionFilter::Kind::None, FrictionFilter::Kind::Simple, FrictionFilter::Kind::Period,
-      FrictionFilter::Kind::Frequency};
-  filter.kind = kinds[kind];
-  if (r.given(6)) {
-    if (kind == 0) r.fail(6, "xfreq is used only with a friction filter (filter 1, 2 or 3)");
-    filter.xfreq = r.number(6);
-    r.require(filter.xfreq > 0.0, 6, "expected a filtering coefficient > 0");
-    r.require(kind != 1 || filter.xfreq <= 1.0, 6,
-              "expected a filtering coefficient in (0, 1] for the simple filter (filter 1)");
-  }
-
-  refine_contact(d, r, [r, law, mu_s, mu_d, c, pen_t, filter](ContactSpec& spec) {
+  refine_contact(d, r, [r, card, pen_t](ContactSpec& spec) {
     if (spec.friction != 0.0 || spec.friction_function.valid()) {
       r.fail(1, "give friction either as mu on *CONTACT or with *CONTACT_FRICTION, not both (" +
                     contact_at(spec) + " has mu on line 2)");
     }
-    if (law == Law::Freeze && spec.stick_stress) {
+    if (card.law == Law::Freeze && spec.stick_stress) {
       r.fail(1,
              "law FREEZE ties the surfaces from the start and cannot be combined with the sticking "
              "contact (sigma_stick) of " +
                  contact_at(spec) + ": remove one of them");
     }
-    spec.friction_law = law;
-    spec.mu_static = mu_s;
-    spec.mu_dynamic = mu_d;
-    spec.friction_c = c;
+    spec.friction_law = card.law;
+    spec.mu_static = card.mu_s;
+    spec.mu_dynamic = card.mu_d;
+    spec.friction_c = card.c;
     spec.tangential_penalty = pen_t;
-    spec.friction_filter = filter;
+    spec.friction_filter = card.filter;
     spec.friction_where = r.where();
   });
+}
+
+// *CONTACT_FRICTION_PAIR (abut's own; Radioss fric_ID, /FRICTION, seed 004): the law between the
+// facets of two part sets of contact coid, in place of its *CONTACT_FRICTION law.
+//   coid, entype_1, enid_1, entype_2, enid_2
+//   law, mu_s, mu_d, filter, xfreq
+//   c1, c2, c3, c4, c5, c6                       (Tresca, Radioss laws)
+void read_contact_friction_pair(DeckReader& d, Block& b) {
+  const Row r = b.row({"coid", "entype_1", "enid_1", "entype_2", "enid_2"});
+  const auto set = [&d, &r](std::size_t type, std::size_t id) -> std::optional<EntityRef> {
+    if (!r.given(type) && !r.given(id)) return std::nullopt;
+    if (!r.given(type)) {
+      r.fail(type, "expected an entity type P, PS or ALL before " + r.where(id).field +
+                       " (leave both empty for every part of the contact)");
+    }
+    const EntityRef e =
+        d.entity(r, type, id, {EntityType::Part, EntityType::PartSet, EntityType::All});
+    d.entity_references.push_back(e);
+    return e;
+  };
+  ContactSpec::FrictionPair pair;
+  pair.set1 = set(1, 2);
+  pair.set2 = set(3, 4);
+  const Row law_row = b.row({"law", "mu_s", "mu_d", "filter", "xfreq"});
+  const std::optional<Row> r2 = b.optional_row({"c1", "c2", "c3", "c4", "c5", "c6"});
+  const LawCard card = read_law(law_row, r2, {0, 1, 2, 3, 4}, true);
+  pair.law = card.law;
+  pair.mu_static = card.mu_s;
+  pair.mu_dynamic = card.mu_d;
+  pair.c = card.c;
+  pair.filter = card.filter;
+  pair.where = law_row.where(0);
+  refine_contact(
+      d, r, [pair](ContactSpec& spec) { spec.friction_pairs.push_back(pair); }, true);
 }
 
 }  // namespace abut::deck

@@ -30,6 +30,14 @@ void check_contact_options(const ContactSpec& c) {
   const std::string initial_options =
       "the initial-penetration options given (penetration of *CONTACT_INITIAL, delta0_offset or "
       "delta0_max of *CONTACT) would do nothing";
+  if (!c.friction_pairs.empty() &&
+      (c.friction_law == ContactSpec::FrictionLaw::Freeze ||
+       c.friction_law == ContactSpec::FrictionLaw::Stick || c.stick_stress)) {
+    throw InputError(c.friction_pairs.front().where,
+                     "the contact ties its points (law FREEZE or STICK, or sigma_stick), so the "
+                     "friction of a part pair (*CONTACT_FRICTION_PAIR) would do nothing: remove "
+                     "one of them");
+  }
   if (c.friction_law == ContactSpec::FrictionLaw::Freeze && (c.clearance || initial)) {
     throw InputError(at(c.friction_where, "law"),
                      "law FREEZE ties every point at its initial distance, so " +

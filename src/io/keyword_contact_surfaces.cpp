@@ -10,7 +10,7 @@ namespace abut::deck {
 
 void read_contact_gap(DeckReader& d, Block& b) {
   const Row r = b.row({"coid", "igap", "gap_scale", "pct_mesh", "gap_max_s", "gap_max_m", "igap0",
-                       "gpad", "shell_side"});
+                       "gpad", "shell_side", "ishape"});
   const int igap = word_choice(r, 1, 1, {{"1", 1}, {"2", 2}, {"3", 3}},
                                "1 (variable gap), 2 (variable, close pairs of self contact "
                                "skipped) or 3 (variable, capped by the mesh size)");
@@ -36,6 +36,15 @@ void read_contact_gap(DeckReader& d, Block& b) {
   r.require(g.padding >= 0.0, 7, "expected a padding >= 0 [length]");
   if (g.padding > 0.0 && igap == 3)
     r.fail(7, "gpad cannot be combined with igap 3, whose mesh-size cap would cap the padding");
+  using Border = GapSettings::Border;
+  g.border = word_choice(r, 9, Border::Cut,
+                         {{"CUT", Border::Cut},
+                          {"SQUARE", Border::Square},
+                          {"1", Border::Square},
+                          {"ROUND", Border::Round},
+                          {"2", Border::Round}},
+                         "CUT (the surface ends at a shell's free border), SQUARE (Radioss "
+                         "Ishape 1) or ROUND (Ishape 2)");
   using Sides = ContactSpec::ShellSides;
   const Sides sides = word_choice(r, 8, Sides::Both,
                                   {{"BOTH", Sides::Both},

@@ -69,62 +69,64 @@ bool one_way_of(const ContactSpec& spec) {
   return spec.one_way || spec.surface1.type == EntityType::NodeSet;
 }
 
-}  // namespace
-
-TangentialLaw tangential_law_of(const ContactSpec& spec, const FunctionTable* table, double term) {
+// The law of a *CONTACT_FRICTION card other than IMPETUS's mu: law, coefficients and the Metafor
+// TM factors of mu_s / m_s, mu_d / m_d and k (*CONTACT_DEPENDENCY).
+TangentialLaw law_of_card(ContactSpec::FrictionLaw law, double mu_s, double mu_d,
+                          const std::array<double, 6>& c, TimeFactor static_in_time,
+                          TimeFactor dynamic_in_time, TimeFactor yield_in_time) {
   using Law = ContactSpec::FrictionLaw;
-  const auto& c = spec.friction_c;
-  // Metafor TM (*CONTACT_DEPENDENCY): a coefficient times a function of the time.
-  const auto in_time = [table, term](FunctionRef f) { return function_of_one(table, f, term); };
-  switch (spec.friction_law) {
-    case Law::Impetus: {
-      Coulomb law{spec.friction, spec.friction, {}, {}, {}, {}};
-      if (spec.friction_function.valid()) {
-        const FunctionRef mu = spec.friction_function;
-        law.function = [table, mu, term](double pres, double vtang, double t, double x, double y,
-                                         double z) {
-          Variables v;
-          v.pres = pres;
-          v.vtang = vtang;
-          v.t = t;
-          v.term = term;
-          v.x = x;
-          v.y = y;
-          v.z = z;
-          return table->value(mu, v);
-        };
-      } else if (spec.friction == 0.0) {
-        return Frictionless{};
-      }
-      return law;
-    }
+  switch (law) {
+    case Law::Impetus:  // not a card law (tangential_law_of)
     case Law::None:
     case Law::Freeze:
       return Frictionless{};
     case Law::Coulomb:
-      return Coulomb{spec.mu_static,
-                     spec.mu_dynamic,
-                     {},
-                     {},
-                     {in_time(spec.mu_static_in_time)},
-                     {in_time(spec.mu_dynamic_in_time)}};
+      return Coulomb{mu_s, mu_d, {}, {}, static_in_time, dynamic_in_time};
     case Law::Tresca:
-      return Tresca{c[0],
-                    c[1],
-                    c[2],
-                    {in_time(spec.mu_static_in_time)},
-                    {in_time(spec.mu_dynamic_in_time)},
-                    {in_time(spec.yield_in_time)}};
+      return Tresca{c[0], c[1], c[2], static_in_time, dynamic_in_time, yield_in_time};
     case Law::Stick:
       return Sticking{};
     case Law::Viscous:
-      return Coulomb{0.0, 0.0, {}, ViscousFriction{spec.mu_static, c}, {}, {}};
+      return Coulomb{0.0, 0.0, {}, ViscousFriction{mu_s, c}, {}, {}};
     case Law::Darmstad:
-      return Coulomb{0.0, 0.0, {}, DarmstadFriction{spec.mu_static, c}, {}, {}};
+      return Coulomb{0.0, 0.0, {}, DarmstadFriction{mu_s, c}, {}, {}};
     case Law::Renard:
       return Coulomb{0.0, 0.0, {}, RenardFriction{c}, {}, {}};
   }
   return Frictionless{};
+}
+
+}  // namespace
+
+TangentialLaw tangential_law_of(const ContactSpec& spec, const FunctionTable* table, double term) {
+  if (spec.friction_law != ContactSpec::FrictionLaw::Impetus) {
+    // Metafor TM (*CONTACT_DEPENDENCY): a coefficient times a function of the time.
+    const auto in_time = [table, term](FunctionRef f) {
+      return TimeFactor{function_of_one(table, f, term)};
+    };
+    return law_of_card(spec.friction_law, spec.mu_static, spec.mu_dynamic, spec.friction_c,
+                       in_time(spec.mu_static_in_time), in_time(spec.mu_dynamic_in_time),
+                       in_time(spec.yield_in_time));
+  }
+  Coulomb law{spec.friction, spec.friction, {}, {}, {}, {}};
+  if (spec.friction_function.valid()) {
+    const FunctionRef mu = spec.friction_function;
+    law.function = [table, mu, term](double pres, double vtang, double t, double x, double y,
+                                     double z) {
+      Variables v;
+      v.pres = pres;
+      v.vtang = vtang;
+      v.t = t;
+      v.term = term;
+      v.x = x;
+      v.y = y;
+      v.z = z;
+      return table->value(mu, v);
+    };
+  } else if (spec.friction == 0.0) {
+    return Frictionless{};
+  }
+  return law;
 }
 
 namespace {
@@ -157,6 +159,14 @@ ContactSettings settings_of(const Model& model, const ContactSpec& spec) {
     if (sc.set2) ps.parts2 = model.parts_of(*sc.set2);
     ps.scale = sc.scale;
     s.pair_scales.push_back(std::move(ps));
+  }
+  for (const ContactSpec::FrictionPair& fp : spec.friction_pairs) {
+    PairFriction pf;
+    if (fp.set1) pf.parts1 = model.parts_of(*fp.set1);
+    if (fp.set2) pf.parts2 = model.parts_of(*fp.set2);
+    pf.law = law_of_card(fp.law, fp.mu_static, fp.mu_dynamic, fp.c, {}, {}, {});
+    pf.filter = fp.filter;
+    s.pair_frictions.push_back(std::move(pf));
   }
   const auto wear_rate = [table, term](FunctionRef f) -> WearRateFunction {
     if (!f.valid()) return {};
@@ -302,6 +312,8 @@ SourceLocation location_of(const ContactSpec& spec, const std::string& setting) 
       {"erosion", &ContactSpec::erosion_where, "facets"},
       {"edges", &ContactSpec::edge_where, "iedge"},
   };
+  if (setting == "pair_frictions" && !spec.friction_pairs.empty())
+    return spec.friction_pairs.front().where;
   for (const Field& f : fields)
     if (setting == f.setting) {
       SourceLocation where = spec.*f.where;
@@ -359,10 +371,13 @@ void describe(const ContactSpec& spec, ContactReport& r) {
   }
   if (spec.stick_stress)
     r.tangential_law += fmt::format(", sticking until {:.4g}", *spec.stick_stress);
+  if (!spec.friction_pairs.empty())
+    r.tangential_law += fmt::format(", {} part-pair laws", spec.friction_pairs.size());
   // *CONTACT_DEPENDENCY: "x f(t)" / "x g(d)" after the law its parameter belongs to.
   for (const ContactSpec::Dependency& d : spec.dependencies) {
-    const std::string note = ", " + d.parameter + (d.gap ? " x g(d)" : " x f(t)");
-    (d.parameter == "PFAC" ? r.normal_law : r.tangential_law) += note;
+    const std::string note = std::string(", ") + d.name() + (d.gap ? " x g(d)" : " x f(t)");
+    (d.parameter == ContactSpec::Dependency::Parameter::Pfac ? r.normal_law : r.tangential_law) +=
+        note;
   }
   switch (spec.stiffness.rule) {
     case StiffnessRule::FacetPenalty:
@@ -395,6 +410,8 @@ void describe(const ContactSpec& spec, ContactReport& r) {
   if (std::isfinite(g.max_main)) r.gap_rule += fmt::format(", max_m {:.4g}", g.max_main);
   if (g.zero_at_free_edges) r.gap_rule += ", Igap0";
   if (g.padding > 0.0) r.gap_rule += fmt::format(", padding {:.4g}", g.padding);
+  if (g.border != GapSettings::Border::Cut)
+    r.gap_rule += g.border == GapSettings::Border::Square ? ", Ishape 1" : ", Ishape 2";
   static const char* const edge_words[] = {"NONE", "BORDERS (Iedge 1)", "SHARP (Iedge 11)",
                                            "SHARP_ALL_SHELLS (Iedge 13)", "ALL (Iedge 22)"};
   r.edge_rule = edge_words[static_cast<int>(spec.edges.selection)];

@@ -41,10 +41,12 @@ void Simulation::Impl::release_at_impact() {
   for (std::size_t c = 0; c < model.contacts.size(); ++c) {
     const ContactSpec& spec = model.contacts[c];
     if (!spec.release_bc) continue;
-    std::fill(touched.begin(), touched.end(), std::uint8_t{0});
+    // Only the contacts' surface nodes can be marked: clear and scan those, not the whole mesh.
+    const std::span<const std::int32_t> nodes = contacts->surface_nodes();
+    for (const std::int32_t i : nodes) touched[i] = 0;
     contacts->mark_secondary_nodes_in_contact(c, touched);
     std::size_t count = 0;
-    for (std::size_t i = 0; i < n_nodes; ++i) {
+    for (const std::int32_t i : nodes) {
       if (!touched[i]) continue;
       // Only the directions the node is held in count for the log; every one is released.
       if (constrained[i] & spec.release_bc & ~released[i]) ++count;

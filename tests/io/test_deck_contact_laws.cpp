@@ -439,6 +439,65 @@ TEST(DeckContactScalePenalty, Errors) {
               HasSubstr("part set 8 does not exist"));
 }
 
+// *CONTACT_FRICTION_PAIR (Radioss fric_ID): a law per part pair, in deck order, with the law
+// line of *CONTACT_FRICTION less coid and pen_t.
+TEST(DeckContactFrictionPair, PairsInDeckOrder) {
+  const ContactSpec c = contact_of(
+      "*CONTACT_FRICTION_PAIR\n3, P, 1, P, 2\nCOULOMB, 0.5, 0.3, 1, 0.2\n"
+      "*CONTACT_FRICTION_PAIR\n3, PS, 7\nTRESCA, 0.8, 0.6\n2.0e8\n"
+      "*CONTACT_FRICTION_PAIR\n3\n3\n0.1, 0.2, 0.3, 0.05, 1.0, 2.0\n");
+  ASSERT_EQ(c.friction_pairs.size(), 3u);
+  const auto& p = c.friction_pairs;
+  EXPECT_EQ(p[0].set1->type, EntityType::Part);
+  EXPECT_EQ(p[0].set1->id, 1);
+  EXPECT_EQ(p[0].set2->id, 2);
+  EXPECT_EQ(p[0].law, ContactSpec::FrictionLaw::Coulomb);
+  EXPECT_DOUBLE_EQ(p[0].mu_static, 0.5);
+  EXPECT_DOUBLE_EQ(p[0].mu_dynamic, 0.3);
+  EXPECT_EQ(p[0].filter.kind, FrictionFilter::Kind::Simple);
+  EXPECT_DOUBLE_EQ(p[0].filter.xfreq, 0.2);
+  EXPECT_EQ(p[0].where.line, kLine + 2);
+  EXPECT_EQ(p[1].set1->type, EntityType::PartSet);
+  EXPECT_FALSE(p[1].set2.has_value());
+  EXPECT_EQ(p[1].law, ContactSpec::FrictionLaw::Tresca);
+  EXPECT_DOUBLE_EQ(p[1].c[2], 2.0e8);
+  EXPECT_FALSE(p[2].set1.has_value());
+  EXPECT_EQ(p[2].law, ContactSpec::FrictionLaw::Renard);
+  EXPECT_DOUBLE_EQ(p[2].c[5], 2.0);
+  // The contact's own law is untouched.
+  EXPECT_EQ(c.friction_law, ContactSpec::FrictionLaw::Impetus);
+}
+
+TEST(DeckContactFrictionPair, Errors) {
+  const std::size_t l = kLine + 1;
+  EXPECT_THAT(error_at("*CONTACT_FRICTION_PAIR\n3, P, 1, P, 2\n", kLine, ""),
+              HasSubstr("missing data line: expected law"));
+  EXPECT_THAT(error_at("*CONTACT_FRICTION_PAIR\n3, P, 1, P, 2\nSTICK\n", l + 1, "law"),
+              HasSubstr("give it with *CONTACT_FRICTION"));
+  EXPECT_THAT(error_at("*CONTACT_FRICTION_PAIR\n3, P, 1, P, 2\nFRICTIONAL\n", l + 1, "law"),
+              HasSubstr("expected a friction law: NONE, COULOMB, TRESCA, VISCOUS"));
+  EXPECT_THAT(error_at("*CONTACT_FRICTION_PAIR\n3, P, 1, P, 2\nCOULOMB, 0.2, 0.3\n", l + 1, "mu_d"),
+              HasSubstr("expected a dynamic friction coefficient in [0, mu_s]"));
+  EXPECT_THAT(error_at("*CONTACT_FRICTION_PAIR\n3, , 1\nCOULOMB, 0.2\n", l, "entype_1"),
+              HasSubstr("expected an entity type P, PS or ALL"));
+  EXPECT_THAT(error_at("*CONTACT_FRICTION_PAIR\n3, P, 1, P, 9\nCOULOMB, 0.2\n", l, "enid_2"),
+              HasSubstr("part 9 does not exist"));
+  EXPECT_THAT(error_at("*CONTACT_FRICTION_PAIR\n3, P, 1\nCOULOMB, 0.2, , 0, 0.5\n", l + 1, "xfreq"),
+              HasSubstr("xfreq is used only with a friction filter"));
+  EXPECT_THAT(error_at("*CONTACT_FRICTION_PAIR\n4, P, 1\nCOULOMB, 0.2\n", l, "coid"),
+              HasSubstr("contact 4 does not exist"));
+  // A tied contact has no friction to replace, whichever keyword comes first.
+  for (const std::string& deck :
+       {std::string("*CONTACT_FRICTION_PAIR\n3, P, 1\nCOULOMB, 0.2\n*CONTACT_FRICTION\n3, "
+                    "FREEZE\n"),
+        std::string("*CONTACT_FRICTION\n3, STICK\n*CONTACT_FRICTION_PAIR\n3, P, 1\nCOULOMB, "
+                    "0.2\n")}) {
+    const InputError e = error_of(kContact + deck);
+    EXPECT_THAT(e.what(), HasSubstr("would do nothing"));
+    EXPECT_EQ(e.where().field, "law");
+  }
+}
+
 TEST(DeckContactInitial, PenetrationAndAdjust) {
   ContactSpec c = contact_of("*CONTACT_INITIAL\n3, SHIFT, 0.001\n");
   EXPECT_EQ(c.initial_penetration, InitialPenetration::Shift);

@@ -83,6 +83,13 @@ TEST(DeckContactGap, RadiossVariableGaps) {
   EXPECT_DOUBLE_EQ(*contact_of("*CONTACT_GAP\n3, 3.0, , 0.25\n").gaps.mesh_fraction, 0.25);
   EXPECT_TRUE(contact_of("*CONTACT_GAP\n3, 2\n").gaps.skip_close);
   EXPECT_FALSE(contact_of("*CONTACT_GAP\n3, 1, , , , , 1000\n").gaps.zero_at_free_edges);
+  // Radioss Ishape: abut's default ends the surface at the border; 1 square, 2 round.
+  using Border = GapSettings::Border;
+  EXPECT_EQ(contact_of("*CONTACT_GAP\n3\n").gaps.border, Border::Cut);
+  EXPECT_EQ(contact_of("*CONTACT_GAP\n3, , , , , , , , , 1\n").gaps.border, Border::Square);
+  EXPECT_EQ(contact_of("*CONTACT_GAP\n3, , , , , , , , , square\n").gaps.border, Border::Square);
+  EXPECT_EQ(contact_of("*CONTACT_GAP\n3, , , , , , , , , 2\n").gaps.border, Border::Round);
+  EXPECT_EQ(contact_of("*CONTACT_GAP\n3, , , , , , , , , ROUND\n").gaps.border, Border::Round);
 }
 
 TEST(DeckContactGap, Errors) {
@@ -100,6 +107,8 @@ TEST(DeckContactGap, Errors) {
               HasSubstr("cannot be combined with igap 3"));
   EXPECT_THAT(error_at("*CONTACT_GAP\n3, , , , , , , , OVERLAP\n", l, "shell_side"),
               HasSubstr("OVERLAP is not supported yet"));
+  EXPECT_THAT(error_at("*CONTACT_GAP\n3, , , , , , , , , 3\n", l, "ishape"),
+              HasSubstr("SQUARE (Radioss Ishape 1) or ROUND (Ishape 2)"));
 }
 
 TEST(DeckContactEdge, RadiossEdgeOptions) {

@@ -78,6 +78,14 @@ TEST(StaticContactSetup, ExplicitOnlyFeaturesAreErrorsAtTheirCard) {
       },
       "contact sense");
   expect_error([](ContactSpec& c) { c.surface1 = c.surface2; }, "self contact");
+  expect_error(
+      [](ContactSpec& c) {
+        ContactSpec::FrictionPair& pair = c.friction_pairs.emplace_back();
+        pair.law = ContactSpec::FrictionLaw::Coulomb;
+        pair.mu_static = pair.mu_dynamic = 0.2;
+        pair.where = {"t.k", 12, "", "law"};
+      },
+      "friction by part pair (*CONTACT_FRICTION_PAIR) is not supported in static steps");
 }
 
 // Small sliding (OptiStruct TRACK = SMALL) pairs points once; the explicit solver searches every

@@ -23,6 +23,7 @@
 // points carry the same area as the block's while it slides.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -250,6 +251,104 @@ TEST(FrictionTresca, StoppingDistanceIndependentOfTheNormalLoad) {
   EXPECT_NEAR(two.distance, one.distance, 0.01 * one.distance);
   EXPECT_LT(std::abs(one.speed), 1e-3 * v0);
   EXPECT_LT(std::abs(two.speed), 1e-3 * v0);
+}
+
+// Radioss fric_ID (/FRICTION per part pair, seed 004; *CONTACT_FRICTION_PAIR): three rigid blocks
+// (as above) slide side by side at v0 = 1 m/s on one plane under g, in one contact whose own law is
+// Coulomb mu = 0.3. The pair (block 1, plane) takes Coulomb mu = 0.5, the pair (plane, block 3),
+// given the other way round, Tresca m_d k = 800 Pa; block 4 keeps the contact's law. Each stops
+// where its own law alone would stop it: v0^2 / (2 mu g) = 0.10194 m and 0.16990 m, and
+// v0^2 M / (2 tau A) = 0.0975 m (the closed forms above). Energy: the balance (friction work
+// included) within 1% at every cycle.
+TEST(FrictionPair, EachPartPairSlidesWithItsOwnLaw) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string deck = R"(*UNIT_SYSTEM
+SI
+*TIME
+0.4
+*COMPONENT_BOX
+1, 1, 2, 2, 1
+0.0, -0.17, 0.0, 0.1, -0.07, 0.02
+*COMPONENT_BOX
+3, 3, 2, 2, 1
+0.0, -0.05, 0.0, 0.1, 0.05, 0.02
+*COMPONENT_BOX
+4, 4, 2, 2, 1
+0.0, 0.07, 0.0, 0.1, 0.17, 0.02
+*COMPONENT_BOX
+2, 2, 10, 8, 1
+-0.05, -0.2, -0.02, 0.45, 0.2, 0.0
+*MAT_RIGID
+1, 7800.0
+*PART
+"block 1"
+1, 1
+"plane"
+2, 1
+"block 3"
+3, 1
+"block 4"
+4, 1
+*SET_PART
+10
+1, 3, 4
+*INITIAL_VELOCITY
+PS, 10, 1.0, 0.0, 0.0
+*BC_MOTION
+P, 2, XYZ, XYZ
+*CURVE
+1
+0.0, -9.81
+1.0, -9.81
+*LOAD_GRAVITY
+Z, 1
+*CONTACT
+"blocks on the plane"
+1
+PS, 10, P, 2, , 6.2e9
+*CONTACT_FRICTION
+1, COULOMB, 0.3
+*CONTACT_FRICTION_PAIR
+1, P, 1, P, 2
+COULOMB, 0.5
+*CONTACT_FRICTION_PAIR
+1, P, 2, P, 3
+TRESCA, 1.0, 0.8
+1000.0
+*END
+)";
+  const Model model = read_deck_string(deck, "friction_pair.k");
+  Simulation sim(model);
+  std::array<double, 3> x0{};
+  for (int b = 0; b < 3; ++b) x0[b] = sim.part_states()[b == 0 ? 0 : b + 1].centre_of_mass.x;
+  const double kinetic0 = 3.0 * 0.5 * kMass;
+  double worst = 0.0;
+  verification::run_to(sim, sim.end_time(), [&](const Simulation& s) {
+    const Energies e = s.energies();
+    if (std::max(std::abs(e.total()), std::abs(e.external_work)) > 1e-3 * kinetic0)
+      worst = std::max(worst, std::abs(s.energy_balance_error()));
+  });
+  const double tau = kTrescaMd * kTrescaK;
+  const struct {
+    const char* name;
+    int part_index;
+    double expected;
+  } blocks[] = {{"block 1, pair Coulomb 0.5", 0, 1.0 / (2.0 * 0.5 * kG)},
+                {"block 3, pair Tresca", 2, kMass / (2.0 * tau * kArea)},
+                {"block 4, the contact's Coulomb 0.3", 3, 1.0 / (2.0 * 0.3 * kG)}};
+  for (int b = 0; b < 3; ++b) {
+    const PartState state = sim.part_states()[blocks[b].part_index];
+    const double distance = state.centre_of_mass.x - x0[b];
+    std::cout << blocks[b].name << ": stopped after " << distance << " m, expected "
+              << blocks[b].expected << " m, error "
+              << 100.0 * (distance - blocks[b].expected) / blocks[b].expected << "%; speed "
+              << state.velocity.x << " m/s\n";
+    EXPECT_NEAR(distance, blocks[b].expected, 0.01 * blocks[b].expected) << blocks[b].name;
+    EXPECT_LT(std::abs(state.velocity.x), 1e-3) << blocks[b].name;
+  }
+  std::cout << "worst energy balance " << 100.0 * worst << "%; " << sim.cycle() << " cycles, "
+            << seconds_since(start) << " s\n";
+  EXPECT_LT(worst, 0.01);
 }
 
 }  // namespace

@@ -29,6 +29,15 @@ struct GapSettings {
   // OptiStruct GPAD (seed 003, CONTPRM/PCONT): a layer of this thickness on the main surface,
   // solid or shell, added to every pair's gap after the caps: the surfaces touch at this distance.
   double padding = 0.0;
+  // Radioss Ishape (seed 004, comment 4): what a shell surface's free border is to a point that
+  // carries a gap of its own (g_s > 0). Cut: the surface ends at the border. Square (Ishape 1):
+  // the point's gap reaches up to g_s over the border, the gap and the push along the facet's
+  // normal as on the facet. Round (Ishape 2): the facet's slab (its gap g - g_s) cut square at
+  // the border, widened by a ball of radius g_s: beyond the border the push points away from the
+  // slab's edge. Either way the gap never reaches further than g_s beyond the border.
+  enum class Border { Cut, Square, Round } border = Border::Cut;
+
+  bool operator==(const GapSettings&) const = default;
 };
 
 // The gap a shell of thickness t contributes on one side, before the caps.

@@ -17,7 +17,9 @@
 //    edge; see docs/contact.md). A shell's contact surface is rounded around its inner edges (the
 //    round gap of seed 004, comment 5): beyond such an edge the gap is the distance to the edge
 //    less the pair's gap, along the radial direction, at any overshoot; only its free border cuts
-//    off like a sharp edge. Folds that sharpen as a shell crushes then stay continuous.
+//    off like a sharp edge (or, for a point with a gap of its own, as the border rule says:
+//    GapSettings::border, Radioss Ishape). Folds that sharpen as a shell crushes then stay
+//    continuous.
 // The closest accepted facet (distance less the pair's gap) is the partner.
 #include <algorithm>
 #include <array>
@@ -66,6 +68,7 @@ struct PartnerRules {
   double point_gap = 0.0;                                           // g_s, capped (gap.hpp)
   double point_min_edge = std::numeric_limits<double>::infinity();  // g_s_l
   double mesh_fraction = std::numeric_limits<double>::infinity();   // %mesh_size (Igap 3)
+  GapSettings::Border border = GapSettings::Border::Cut;            // a shell's free border
   // Igap 2 (self contact): the point's initial position and the initial nodal coordinates; a
   // facet with a node that lay within twice the pair's gap of the point is skipped. Empty: off.
   Vec3 initial_point;
@@ -91,6 +94,8 @@ inline PairReach pair_reach(const TargetFacets& target, std::int32_t f, const Pa
   r.gap = pair_gap(rules.point_gap, target.gap[f], rules.point_min_edge, target.min_edge[f],
                    rules.mesh_fraction);
   r.reach = std::max({r.below, rules.depth_above, rules.edge_tolerance}) + r.gap;
+  // Beyond a shell's free border the point's own gap reaches up to g_s further (GapSettings).
+  if (rules.border != GapSettings::Border::Cut) r.reach += std::min(rules.point_gap, r.gap);
   return r;
 }
 

@@ -214,6 +214,18 @@ struct ContactSpec {
   std::optional<double> tangential_penalty;
   std::array<double, 6> friction_c{};  // C1..C6 (Radioss laws), m_s, m_d, k (Tresca)
   FrictionFilter friction_filter;
+  // *CONTACT_FRICTION_PAIR (Radioss fric_ID, /FRICTION): the law between facets of two part sets,
+  // in place of the law above; in deck order, the last covering pair winning. Laws NONE, COULOMB,
+  // TRESCA, VISCOUS, DARMSTAD and RENARD; the tangential penalty is the contact's.
+  struct FrictionPair {
+    std::optional<EntityRef> set1, set2;  // empty set1: every part; empty set2: set1 with itself
+    FrictionLaw law = FrictionLaw::None;
+    double mu_static = 0.0, mu_dynamic = 0.0;
+    std::array<double, 6> c{};  // as friction_c
+    FrictionFilter filter;
+    SourceLocation where;
+  };
+  std::vector<FrictionPair> friction_pairs;
   // *CONTACT_DEPENDENCY (Metafor TM / GD, seed 002): the functions that multiply a parameter;
   // invalid when not given.
   FunctionRef pfac_in_time;                           // PEN_NORMALE TM
@@ -221,9 +233,14 @@ struct ContactSpec {
   FunctionRef yield_in_time;                          // TRESCA_K TM
   FunctionRef pen_t_in_time, pen_t_of_gap;            // PEN_TANGENT TM, GD (of the penetration)
   struct Dependency {
-    std::string parameter;  // PFAC, MU_S, MU_D, K, PEN_T
-    bool gap = false;       // GAP (else TIME)
+    enum class Parameter { Pfac, MuStatic, MuDynamic, Yield, PenT } parameter = Parameter::Pfac;
+    bool gap = false;  // GAP (else TIME)
     SourceLocation where;
+    // The parameter's name in *CONTACT_DEPENDENCY (for messages, the log and summary.json).
+    const char* name() const {
+      static constexpr const char* names[] = {"PFAC", "MU_S", "MU_D", "K", "PEN_T"};
+      return names[static_cast<int>(parameter)];
+    }
   };
   std::vector<Dependency> dependencies;
   SourceLocation dependency_where;

@@ -36,17 +36,15 @@ void check_static(const ContactSpec& spec) {
     not_static(spec.normal_where, "a contact sense other than POSITIVE");
   if (!spec.pair_scales.empty())
     not_static(spec.pair_scales.front().where, "*CONTACT_SCALE_PENALTY");
+  if (!spec.friction_pairs.empty())
+    not_static(spec.friction_pairs.front().where, "friction by part pair (*CONTACT_FRICTION_PAIR)");
   if (!spec.stiffness_where.file.empty())
     not_static(spec.stiffness_where,
                "*CONTACT_STIFFNESS (the static penalty is pfac of *CONTACT, or 10 E / L)");
   // A padding alone (OptiStruct GPAD) acts in static steps; the shell gaps do not.
   GapSettings padding_only;
   padding_only.padding = spec.gaps.padding;
-  const GapSettings& g = spec.gaps;
-  const bool only_padding = g.scale == padding_only.scale &&
-                            g.max_secondary == padding_only.max_secondary &&
-                            g.max_main == padding_only.max_main && !g.mesh_fraction &&
-                            !g.skip_close && !g.zero_at_free_edges;
+  const bool only_padding = spec.gaps == padding_only;
   if (!spec.gap_where.file.empty() && !only_padding)
     not_static(spec.gap_where, "*CONTACT_GAP other than gpad");
   if (!spec.erosion_where.file.empty()) not_static(spec.erosion_where, "*CONTACT_EROSION");
