@@ -67,6 +67,7 @@ const std::map<std::string, KeywordReader, std::less<>>& supported() {
       {"*CONTACT_EROSION", read_contact_erosion},
       {"*CONTACT_FRICTION", read_contact_friction},
       {"*CONTACT_GAP", read_contact_gap},
+      {"*CONTACT_TOOL", read_contact_tool},
       {"*CONTACT_INITIAL", read_contact_initial},
       {"*CONTACT_NORMAL", read_contact_normal},
       {"*CONTACT_SCALE_PENALTY", read_contact_scale_penalty},
