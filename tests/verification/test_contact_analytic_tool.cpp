@@ -16,7 +16,8 @@
 //    round-off, and the impulse of friction mu (m g t - m v_z(t)) changes its velocity by
 //    mu g t once it rests vertically (v_z = 0 to 1e-6 after the damped bounce); a PLANE
 //    translating tangentially at constant speed drags a block at rest the same way: v_x = mu g t
-//    (Coulomb's law with the tool's velocity as the partner's);
+//    (Coulomb's law with the tool's velocity as the partner's); two CYLINDER rollers spinning
+//    under a held block push it along their surface velocity omega x r with mu N;
 //  - the energy balance (the moving tool's work as external work) within 1e-3 at every cycle.
 // Cells left out: symmetric and surface-to-surface (the tool has no points or facets: refused,
 // tests/io/test_deck_contact_tool.cpp), static steps (refused), meshed curved tools (a chord's
@@ -208,6 +209,45 @@ TEST(ContactAnalyticTool, MovingPlaneDragsBlockByFriction) {
   EXPECT_LT(r.worst_coulomb, 1e-12);
   EXPECT_NEAR(r.force_x, kMu * r.normal, 1e-12 * kSlabMass * kG);
   EXPECT_LT(r.worst_energy, 1e-3);
+}
+
+TEST(ContactAnalyticTool, SpinningRollersRubAHeldBlock) {
+  // Two rollers (CYLINDER, axes along y under the block's bottom edges x = 0 and x = 0.1, tops
+  // at z = 0) spinning at 20 rad/s: their tops move along x at omega R = 1 m/s and rub the block,
+  // held in x and y and against turning (a free block would ride off the rollers' crowns). Each
+  // roller pushes its nodes along x with mu N (Coulomb, the surface velocity omega x r as the
+  // partner's); at rest the two carry m g: mu m g along x. All the spin's work is dissipated by
+  // friction: the balance checks the tool work booked for a spinning tool.
+  const std::string roller = "0, -1, -0.05, 0, 1, 0, 0.05\n, , , , , , 2, 20.0\n";
+  const std::string deck = block_deck(
+      kSlab,
+      "*BC_MOTION\nP, 1, XY, XYZ\n*CURVE\n2\n0.0, 1.0\n1.0, 1.0\n*CONTACT_TOOL\n7, "
+      "CYLINDER\n" +
+          roller + "*CONTACT_TOOL\n8, CYLINDER\n" + std::string("0.1") + roller.substr(1) +
+          "*CONTACT\n1\nP, 1, TOOL, 7, 0.3, 1.0e10\n, 0.5\n*CONTACT\n2\nP, 1, TOOL, 8, "
+          "0.3, 1.0e10\n, 0.5\n");
+  const Model model = read_deck_string(deck, "rollers.k");
+  Simulation sim(model);
+  double worst = 0.0;
+  verification::run_to(sim, sim.end_time(), [&](const Simulation& s) {
+    for (const ContactReport& c : s.contact_reports())
+      worst = std::max(
+          worst, std::abs(c.stats.force.x - kMu * c.stats.normal_force) / (kMu * kSlabMass * kG));
+  });
+  double fx = 0.0, tool_work = 0.0;
+  for (const ContactReport& c : sim.contact_reports()) {
+    fx += c.stats.force.x;
+    tool_work += c.stats.tool_work;
+  }
+  const Energies e = sim.energies();
+  const double friction = kMu * kSlabMass * kG;
+  std::cout << "spinning rollers: worst |F_x - mu N| " << worst << " of mu m g; F_x at rest " << fx
+            << " (mu m g = " << friction << "); spin work " << tool_work << ", friction energy "
+            << e.friction << "; energy balance " << sim.energy_balance_error() << "\n";
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_NEAR(fx, friction, 1e-4 * friction);
+  EXPECT_GT(tool_work, 0.0);
+  EXPECT_LT(std::abs(sim.energy_balance_error()), 1e-3);
 }
 
 }  // namespace
