@@ -105,5 +105,13 @@ TEST(DeckContactTool, MistakesNameTheirFileLineAndField) {
                "*CONTACT_EROSION with an analytic tool");
 }
 
+TEST(DeckContactTool, StaticStepsRefuseTools) {
+  std::string deck = std::string(kBoxModel);
+  deck.erase(deck.find("*TIME\n1.0e-3\n"), std::string("*TIME\n1.0e-3\n").size());
+  deck += "*CONTACT_TOOL\n7, PLANE\n0, 0, 0, 0, 0, 1\n*CONTACT\n5\nP, 1, TOOL, 7\n*STATIC\n1.0\n";
+  expect_error(deck, "TOOL, 7", "enid_2",
+               "an analytic tool (*CONTACT_TOOL) is not supported in static steps yet");
+}
+
 }  // namespace
 }  // namespace abut
