@@ -68,6 +68,7 @@ const std::map<std::string, KeywordReader, std::less<>>& supported() {
       {"*CONTACT_FRICTION", read_contact_friction},
       {"*CONTACT_FRICTION_PAIR", read_contact_friction_pair},  // abut's own (Radioss fric_ID)
       {"*CONTACT_GAP", read_contact_gap},
+      {"*CONTACT_TOOL", read_contact_tool},
       {"*CONTACT_INITIAL", read_contact_initial},
       {"*CONTACT_NORMAL", read_contact_normal},
       {"*CONTACT_SCALE_PENALTY", read_contact_scale_penalty},

@@ -73,6 +73,7 @@ void merge_contact_keywords(Model& model, const std::vector<PendingContactKeywor
   }
   for (const ContactSpec& c : model.contacts) {
     check_contact_options(c);
+    check_tool_contact(model, c);
     if (c.surface1.type == EntityType::NodeSet &&
         c.discretisation != Discretisation::NodeToSurface) {
       throw InputError(c.surface1.where,
@@ -171,7 +172,10 @@ DeckResult DeckReader::finish() {
 
   // Entities: every id must exist.
   for (const EntityRef& e : entity_references) {
-    if (e.type == EntityType::Part || e.type == EntityType::PartSet || e.type == EntityType::All) {
+    if (e.type == EntityType::Tool) {
+      model.tool(e);
+    } else if (e.type == EntityType::Part || e.type == EntityType::PartSet ||
+               e.type == EntityType::All) {
       model.parts_of(e);
     } else {
       model.nodes_of(e);

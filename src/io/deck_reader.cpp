@@ -52,6 +52,8 @@ std::string entity_word(EntityType t) {
       return "G";
     case EntityType::FaceSet:  // element faces of an .inp *SURFACE: no word in the deck
       return "SURFACE";
+    case EntityType::Tool:
+      return "TOOL";
   }
   return "";
 }

@@ -352,6 +352,10 @@ void read_contact_thermal(DeckReader&, Block&);
 void read_contact_gap(DeckReader&, Block&);
 void read_contact_edge(DeckReader&, Block&);
 void read_contact_erosion(DeckReader&, Block&);
+void read_contact_tool(DeckReader&, Block&);  // keyword_contact_tool.cpp
+// keyword_contact_tool.cpp: the tool of a contact with surface 2 TOOL exists, and the contact asks
+// for nothing a tool contact does not do (InputError at the field).
+void check_tool_contact(const Model& model, const ContactSpec& c);
 void read_contact_scale_penalty(DeckReader&, Block&);
 void read_contact_initial(DeckReader&, Block&);
 void read_sensor(DeckReader&, Block&);  // keyword_sensor.cpp

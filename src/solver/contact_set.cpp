@@ -492,6 +492,10 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
     } else {
       faces1 = contact_faces(model, spec.surface1, spec.merge, !spec.no_internal);
     }
+    if (spec.surface2.type == EntityType::Tool) {
+      add_tool_contact(spec, faces1, secondary_nodes, node_mass, initial, v_max);
+      continue;
+    }
     const std::vector<SkinFace> faces2 =
         contact_faces(model, spec.surface2, spec.merge, !spec.no_internal);
     const std::map<std::int64_t, PartPenalty> penalties =
@@ -545,11 +549,14 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
          deep_start_warnings(spec.id, interfaces_.back().deep_initial_points(initial)))
       report.warnings.push_back(std::move(w));
     reports_.push_back(std::move(report));
+    slots_.push_back({false, interfaces_.size() - 1});
   }
   cfx_.assign(nodes.size(), 0.0);
   cfy_.assign(nodes.size(), 0.0);
   cfz_.assign(nodes.size(), 0.0);
   for (const ContactInterface& c : interfaces_)
+    surface_nodes_.insert(surface_nodes_.end(), c.surface_nodes().begin(), c.surface_nodes().end());
+  for (const ToolContact& c : tools_)
     surface_nodes_.insert(surface_nodes_.end(), c.surface_nodes().begin(), c.surface_nodes().end());
   std::sort(surface_nodes_.begin(), surface_nodes_.end());
   surface_nodes_.erase(std::unique(surface_nodes_.begin(), surface_nodes_.end()),
@@ -562,9 +569,47 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
   }
 }
 
+void ContactSet::add_tool_contact(const ContactSpec& spec, const std::vector<SkinFace>& faces1,
+                                  const std::vector<std::int32_t>& secondary_nodes,
+                                  std::span<const double> node_mass, const ContactInput& initial,
+                                  double v_max) {
+  const Model& model = model_;
+  const RigidTool& tool = model.tool(spec.surface2);
+  for (const SkinFace& f : faces1)
+    if (model.find_part(f.part)->erosion.any())
+      throw InputError(spec.surface1.where,
+                       "part " + std::to_string(f.part) +
+                           " may erode: eroding elements against an analytic tool (surface 2 "
+                           "TOOL) are not supported yet");
+  // The tool has no elements: each node's spring is pfac of its own facets (given, or the
+  // automatic penalty of its part, seed 000).
+  const std::map<std::int64_t, PartPenalty> penalties =
+      part_penalties(model, spec, faces1, {}, v_max);
+  ContactReport report;
+  report.id = spec.id;
+  report.title = spec.title;
+  for (const auto& [part, p] : penalties) report.parts.push_back(p);
+  describe(spec, report);
+  report.discretisation = "N2S one-way, tool " + std::to_string(tool.id);
+  ContactSettings settings = settings_of(model, spec);
+  try {
+    tools_.emplace_back(
+        std::move(settings), tool.tool,
+        contact_surface(model.mesh, faces1,
+                        [&penalties](const SkinFace& f) { return penalties.at(f.part).penalty; }),
+        node_mass, initial, secondary_nodes);
+  } catch (const ContactSetupError& e) {
+    throw InputError(e.setting() == "tool" ? tool.where : location_of(spec, e.setting()), e.what());
+  }
+  motions_.emplace_back(model, tool);
+  report.points = tools_.back().point_count();
+  reports_.push_back(std::move(report));
+  slots_.push_back({true, tools_.size() - 1});
+}
+
 void ContactSet::apply(const ContactInput& in, std::span<double> fx, std::span<double> fy,
                        std::span<double> fz) {
-  if (interfaces_.empty()) return;
+  if (slots_.empty()) return;
   for (const std::int32_t i : surface_nodes_) cfx_[i] = cfy_[i] = cfz_[i] = 0.0;
   ContactForces forces{cfx_, cfy_, cfz_, {}, {}};
   if (thermal_) {
@@ -572,9 +617,17 @@ void ContactSet::apply(const ContactInput& in, std::span<double> fx, std::span<d
     forces.heat = heat_;
     forces.conductance = conductance_;
   }
-  for (std::size_t c = 0; c < interfaces_.size(); ++c) {
-    interfaces_[c].apply(in, forces);
-    reports_[c].stats = interfaces_[c].stats();
+  for (std::size_t c = 0; c < slots_.size(); ++c) {
+    const std::size_t k = slots_[c].index;
+    if (slots_[c].tool) {
+      // The nodes' velocities are those of the half step before t (v^{n-1/2}).
+      const ToolPose pose = motions_[k].advance(in.time, in.time - 0.5 * in.dt);
+      tools_[k].apply(in, pose, forces);
+      reports_[c].stats = tools_[k].stats();
+    } else {
+      interfaces_[k].apply(in, forces);
+      reports_[c].stats = interfaces_[k].stats();
+    }
   }
   for (const std::int32_t i : surface_nodes_) {
     fx[i] += cfx_[i];
@@ -584,16 +637,20 @@ void ContactSet::apply(const ContactInput& in, std::span<double> fx, std::span<d
 }
 
 void ContactSet::conduct_heat(std::span<const double> temperature, std::span<double> heat) {
-  for (std::size_t c = 0; c < interfaces_.size(); ++c) {
-    interfaces_[c].conduct_heat(temperature, 0.0, heat);
-    reports_[c].stats = interfaces_[c].stats();
+  for (std::size_t c = 0; c < slots_.size(); ++c) {
+    if (slots_[c].tool) continue;  // tools exchange no heat (refused at setup)
+    ContactInterface& interface = interfaces_[slots_[c].index];
+    interface.conduct_heat(temperature, 0.0, heat);
+    reports_[c].stats = interface.stats();
   }
 }
 
 void ContactSet::book_conducted_heat(double duration) {
-  for (std::size_t c = 0; c < interfaces_.size(); ++c) {
-    interfaces_[c].book_conducted_heat(duration);
-    reports_[c].stats.conducted_heat = interfaces_[c].stats().conducted_heat;
+  for (std::size_t c = 0; c < slots_.size(); ++c) {
+    if (slots_[c].tool) continue;
+    ContactInterface& interface = interfaces_[slots_[c].index];
+    interface.book_conducted_heat(duration);
+    reports_[c].stats.conducted_heat = interface.stats().conducted_heat;
   }
 }
 
@@ -603,8 +660,9 @@ void ContactSet::erode(std::span<const std::uint8_t> eroded) {
 
 double ContactSet::stable_step(std::int64_t* limiting_contact) const {
   double step = std::numeric_limits<double>::infinity();
-  for (std::size_t c = 0; c < interfaces_.size(); ++c) {
-    const ContactStats& stats = interfaces_[c].stats();
+  for (std::size_t c = 0; c < slots_.size(); ++c) {
+    const ContactStats& stats =
+        slots_[c].tool ? tools_[slots_[c].index].stats() : interfaces_[slots_[c].index].stats();
     const double s = std::min(stats.stable_step, stats.approach_step);
     if (s < step) {
       step = s;
@@ -618,18 +676,27 @@ double ContactSet::elastic_and_damping_energy() const {
   double e = 0.0;
   for (const ContactInterface& c : interfaces_)
     e += c.stats().elastic_energy + c.stats().damping_energy;
+  for (const ToolContact& c : tools_) e += c.stats().elastic_energy + c.stats().damping_energy;
   return e;
 }
 
 double ContactSet::released_energy() const {
   double e = 0.0;
   for (const ContactInterface& c : interfaces_) e += c.stats().released_energy;
+  for (const ToolContact& c : tools_) e += c.stats().released_energy;
   return e;
 }
 
 double ContactSet::friction_energy() const {
   double e = 0.0;
   for (const ContactInterface& c : interfaces_) e += c.stats().friction_energy;
+  for (const ToolContact& c : tools_) e += c.stats().friction_energy;
+  return e;
+}
+
+double ContactSet::tool_work() const {
+  double e = 0.0;
+  for (const ToolContact& c : tools_) e += c.stats().tool_work;
   return e;
 }
 
@@ -650,13 +717,20 @@ void ContactSet::nodal_fields(std::vector<double>& force, std::vector<double>& p
     for (std::size_t i = 0; i < n && i < p.size(); ++i) pressure[i] += p[i];
     for (std::size_t i = 0; i < n && i < w.size(); ++i) wear[i] += w[i];
   }
+  for (const ToolContact& c : tools_) {
+    const auto p = c.nodal_pressure();
+    for (std::size_t i = 0; i < n && i < p.size(); ++i) pressure[i] += p[i];
+  }
 }
 
 void ContactSet::archive(StateArchive& a) {
   a.mark("contacts");
   a.expect(static_cast<std::uint64_t>(interfaces_.size()), "the number of contacts");
-  a.values(interfaces_, cfx_, cfy_, cfz_, heat_, conductance_);
-  for (std::size_t c = 0; c < interfaces_.size(); ++c) reports_[c].stats = interfaces_[c].stats();
+  a.expect(static_cast<std::uint64_t>(tools_.size()), "the number of tool contacts");
+  a.values(interfaces_, tools_, motions_, cfx_, cfy_, cfz_, heat_, conductance_);
+  for (std::size_t c = 0; c < slots_.size(); ++c)
+    reports_[c].stats =
+        slots_[c].tool ? tools_[slots_[c].index].stats() : interfaces_[slots_[c].index].stats();
 }
 
 }  // namespace abut

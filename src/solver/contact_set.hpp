@@ -7,8 +7,11 @@
 #include <vector>
 
 #include "abut/contact/interface.hpp"
+#include "abut/contact/tool_contact.hpp"
+#include "abut/mesh/skin.hpp"
 #include "abut/solver/contact_report.hpp"
 #include "abut/solver/model.hpp"
+#include "tool_motion.hpp"
 
 namespace abut {
 
@@ -27,17 +30,25 @@ class ContactSet {
   ContactSet(const Model& model, std::span<const double> node_mass, std::span<const double> vx0,
              std::span<const double> vy0, std::span<const double> vz0);
 
-  bool empty() const { return interfaces_.empty(); }
+  bool empty() const { return slots_.empty(); }
   // Adds every interface's forces for the state `in`; also keeps them per node for output.
   void apply(const ContactInput& in, std::span<double> fx, std::span<double> fy,
              std::span<double> fz);
   // Switches contact c (index in model.contacts) on or off for the next apply(): the solver's
   // sensors (*CONTACT_SENSOR), decided before every apply.
-  void set_enabled(std::size_t c, bool on) { interfaces_[c].set_enabled(on); }
+  void set_enabled(std::size_t c, bool on) {
+    if (slots_[c].tool)
+      tools_[slots_[c].index].set_enabled(on);
+    else
+      interfaces_[slots_[c].index].set_enabled(on);
+  }
   // touched[node] = 1 for the nodes of contact c's surface 1 in contact after the last apply()
   // (ContactInterface::mark_secondary_nodes_in_contact; *CONTACT_RELEASE_BC).
   void mark_secondary_nodes_in_contact(std::size_t c, std::span<std::uint8_t> touched) const {
-    interfaces_[c].mark_secondary_nodes_in_contact(touched);
+    if (slots_[c].tool)
+      tools_[slots_[c].index].mark_secondary_nodes_in_contact(touched);
+    else
+      interfaces_[slots_[c].index].mark_secondary_nodes_in_contact(touched);
   }
   // Smallest stable step of the contact springs and the interface that sets it (-1: none).
   double stable_step(std::int64_t* limiting_contact) const;
@@ -46,6 +57,7 @@ class ContactSet {
   double elastic_and_damping_energy() const;  // "contact" column of energy.csv
   double friction_energy() const;
   double released_energy() const;  // ContactStats::released_energy, summed
+  double tool_work() const;        // ContactStats::tool_work, summed: external work of the tools
   // Thermal contact (*CONTACT fid_thermal, fric_heat, *CONTACT_THERMAL): the heat into each node
   // [power] (friction, and conduction when apply() had temperatures) and each node's conductance
   // through contact [power/temperature] of the last apply(); empty without thermal contact.
@@ -70,9 +82,25 @@ class ContactSet {
   void archive(StateArchive& a);
 
  private:
+  // A *CONTACT whose surface 2 is an analytic tool (*CONTACT_TOOL): surface 1's faces and nodes
+  // as the meshed contacts take them, pfac of surface 1's own parts.
+  void add_tool_contact(const ContactSpec& spec, const std::vector<SkinFace>& faces1,
+                        const std::vector<std::int32_t>& secondary_nodes,
+                        std::span<const double> node_mass, const ContactInput& initial,
+                        double v_max);
+
   const Model& model_;
   std::vector<ContactReport> reports_;
+  // Contact c of the model is interfaces_[slots_[c].index] (two meshed surfaces) or, with an
+  // analytic tool as surface 2 (*CONTACT_TOOL), tools_[slots_[c].index] moved by motions_.
+  struct Slot {
+    bool tool = false;
+    std::size_t index = 0;
+  };
+  std::vector<Slot> slots_;
   std::vector<ContactInterface> interfaces_;
+  std::vector<ToolContact> tools_;
+  std::vector<ToolMotion> motions_;
   std::vector<double> cfx_, cfy_, cfz_;  // contact force per node, last step
   // The nodes any interface can load (their surfaces' nodes, sorted): the only entries of the
   // per-node arrays that apply() clears and adds, instead of every node of the model.

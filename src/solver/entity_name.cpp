@@ -17,6 +17,8 @@ std::string entity_name(const EntityRef& e) {
       return "the region of geometry " + id;
     case EntityType::FaceSet:
       return "surface " + id;
+    case EntityType::Tool:
+      return "tool " + id;
     case EntityType::All:
       break;
   }

@@ -144,6 +144,9 @@ std::vector<std::int32_t> Model::nodes_of(const EntityRef& entity) const {
       }
       return nodes;
     }
+    case EntityType::Tool:
+      throw InputError(entity.where,
+                       "expected nodes here, not the analytic tool " + std::to_string(entity.id));
     case EntityType::FaceSet: {
       const FaceSet& set = face_set(entity);
       for (const HexFace& f : set.faces)
@@ -153,6 +156,16 @@ std::vector<std::int32_t> Model::nodes_of(const EntityRef& entity) const {
   }
   sort_unique(nodes);
   return nodes;
+}
+
+const RigidTool& Model::tool(const EntityRef& entity) const {
+  const RigidTool* t = find_by_id(tools, entity.id);
+  if (!t || entity.type != EntityType::Tool)
+    throw InputError(entity.where, "tool " + std::to_string(entity.id) +
+                                       " does not exist (defined tools: " +
+                                       id_list(tools, [](const RigidTool& r) { return r.id; }) +
+                                       "; expected a *CONTACT_TOOL with this tid)");
+  return *t;
 }
 
 const FaceSet& Model::face_set(const EntityRef& entity) const {

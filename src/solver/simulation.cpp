@@ -268,7 +268,9 @@ void Simulation::Impl::kick() {
     }
   }
   // The work reported at t^n takes the share of this kick's work that lies before t^n.
-  energy.external_work = external_work_done + share * work;
+  // The moving analytic tools' work up to t^n (the contact booked it at t^n, ContactStats::
+  // tool_work): external work the nodal reactions above do not see.
+  energy.external_work = external_work_done + share * work + contacts->tool_work();
   external_work_done += work;
   // Kinetic energy at t^n: (1/2) m |v^n|^2, a sum of squares, and a rigid body's (1/2) M |v^n|^2
   // + (1/2) omega^n . I omega^n from the velocities of its centre and rotation at t^n, exactly

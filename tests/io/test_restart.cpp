@@ -163,6 +163,35 @@ P, 1, P, 2, 0.3
 *END
 )";
 
+// An elastic block held in z on a roller (*CONTACT_TOOL CYLINDER) that rises into it, translates
+// and spins, with Coulomb friction: the tool's pose, work and the friction history of its nodes.
+const char* const kRollerTool = R"(*UNIT_SYSTEM
+SI
+*TIME
+1.0
+*COMPONENT_BOX
+1, 1, 2, 2, 1
+-0.01, -0.01, 0.0, 0.01, 0.01, 0.005
+*MAT_ELASTIC
+1, 7800.0, 210.0e9, 0.3
+*PART
+1, 1
+*BC_MOTION
+P, 1, Z
+*CURVE
+1
+0.0, 0.5
+1.0, 0.5
+*CONTACT_TOOL
+7, CYLINDER
+0, -1, -0.02, 0, 1, 0, 0.02
+1, 1.0, , , 1, 0.1, 1, 40.0
+*CONTACT
+3
+P, 1, TOOL, 7, 0.3
+*END
+)";
+
 struct Case {
   const char* name;
   const char* deck;
@@ -230,6 +259,14 @@ TEST_P(RestartOf, ContinuesBitwiseIdentically) {
 // quietly make the test pass without the history it is about.
 TEST(Restart, TheCasesExerciseTheirFeatures) {
   {
+    const Model model = read_deck_string(kRollerTool, "t.k");
+    Simulation sim(model);
+    for (int i = 0; i < 300; ++i) sim.advance();
+    EXPECT_GT(sim.energies().friction, 0.0);
+    EXPECT_GT(sim.contact_reports().at(0).stats.active_points, 0u);
+    EXPECT_NE(sim.energies().external_work, 0.0);
+  }
+  {
     const Model model = read_deck_string(kFrictionSlide, "t.k");
     Simulation sim(model);
     for (int i = 0; i < 300; ++i) sim.advance();
@@ -268,7 +305,8 @@ INSTANTIATE_TEST_SUITE_P(Restart, RestartOf,
                          ::testing::Values(Case{"friction_slide", kFrictionSlide, 300, 300},
                                            Case{"eroding_impact", kErodingImpact, 400, 400},
                                            Case{"shell_edges", kShellEdges, 300, 300},
-                                           Case{"thermal_contact", kThermalContact, 300, 300}),
+                                           Case{"thermal_contact", kThermalContact, 300, 300},
+                                           Case{"roller_tool", kRollerTool, 300, 300}),
                          [](const auto& param_info) { return std::string(param_info.param.name); });
 
 // ---------------------------------------------------------------------------------------------

@@ -89,6 +89,10 @@ struct ContactStats {
   // below half the bound, the bound holds for every point with a candidate. A caller's step is
   // min(stable_step, approach_step).
   double approach_step = std::numeric_limits<double>::infinity();
+  // Work done on the nodes by a moving analytic tool so far (tool_contact.hpp): over each step,
+  // the mean of its forces at the step's two ends times the tool's displacement at the nodes.
+  // 0 for contacts between meshed surfaces (their motion's work is the solver's).
+  double tool_work = 0.0;
 };
 
 // The spring a part pair gets (after the stiffness rule and pair scaling), for reports.

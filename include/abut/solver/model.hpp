@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "abut/contact/analytic_tool.hpp"
 #include "abut/contact/settings.hpp"
 #include "abut/core/error.hpp"
 #include "abut/core/functions.hpp"
@@ -83,8 +84,10 @@ enum class EntityType {
   PartSet,
   All,
   GeometryRegion,
-  FaceSet
-};  // GeometryRegion: entype G; FaceSet: element faces (Abaqus *SURFACE, model_static.hpp)
+  FaceSet,
+  Tool
+};  // GeometryRegion: entype G; FaceSet: element faces (Abaqus *SURFACE, model_static.hpp);
+    // Tool: an analytic rigid tool of *CONTACT_TOOL (entype TOOL), surface 2 of a *CONTACT
 struct EntityRef {
   EntityType type = EntityType::All;
   std::int64_t id = 0;
@@ -291,6 +294,19 @@ struct ContactSpec {
   SourceLocation release_bc_where;
 };
 
+// *CONTACT_TOOL (abut's own, after Metafor's analytic rigid contact matrices, seed 002): a plane,
+// cylinder or sphere moved rigidly: velocity component d = velocity_scale[d] * velocity[d](t)
+// (no curve: 0), and a cylinder's spin about its axis spin_scale * spin(t) [rad / time].
+struct RigidTool {
+  std::int64_t id = 0;
+  AnalyticTool tool;
+  std::array<FunctionRef, 3> velocity;
+  std::array<double, 3> velocity_scale{1.0, 1.0, 1.0};
+  FunctionRef spin;
+  double spin_scale = 1.0;
+  SourceLocation where;
+};
+
 // A geometry of *GEOMETRY_* with its id.
 struct GeometryEntry {
   std::int64_t id = 0;
@@ -323,6 +339,7 @@ struct Model {
   std::vector<Gravity> gravity;
   std::vector<PressureLoad> pressures;
   std::vector<ContactSpec> contacts;
+  std::vector<RigidTool> tools;  // *CONTACT_TOOL
   std::vector<Sensor> sensors;  // *SENSOR, in deck order
   // The static procedure (model_static.hpp): empty for an explicit run.
   std::vector<StaticStep> static_steps;
@@ -335,6 +352,8 @@ struct Model {
   const Part* find_part(std::int64_t id) const;
   const Material* find_material(std::int64_t id) const;
   const GeometryEntry* find_geometry(std::int64_t id) const;
+  // The *CONTACT_TOOL of an entity of type Tool; InputError at its location if it does not exist.
+  const RigidTool& tool(const EntityRef& entity) const;
   const MaterialParams& material_of_part(std::int64_t part_id) const;
 
   // Node indices of an entity (sorted, unique); InputError at the entity's location if the

@@ -1,0 +1,50 @@
+// Closest point, normal and gap of a point to an analytic tool (analytic_tool.hpp): the plane's
+// signed distance, the radial distance to a cylinder's axis or a sphere's centre less the radius.
+#include "abut/contact/analytic_tool.hpp"
+
+#include <cmath>
+
+namespace abut {
+
+ToolProjection project(const AnalyticTool& tool, const ToolPose& pose, const Vec3& x) {
+  ToolProjection r;
+  const Vec3 origin = tool.point + pose.displacement;
+  const double sign = tool.side == ToolSide::Outside ? 1.0 : -1.0;
+  Vec3 radial = x - origin;  // from the axis (cylinder) or centre (sphere) to the point
+  if (tool.shape == ToolShape::Plane) {
+    const double distance = dot(radial, tool.axis);
+    r.gap = sign * distance;
+    r.normal = tool.axis * sign;
+    r.closest = x - tool.axis * distance;
+    r.found = true;
+    return r;
+  }
+  if (tool.shape == ToolShape::Cylinder) {
+    const double along = dot(radial, tool.axis);
+    if (along < 0.0 || along > tool.length) return r;  // beyond an open end
+    radial -= tool.axis * along;
+  }
+  const double distance = norm(radial);
+  if (!(distance > 0.0)) return r;  // on the axis or at the centre: no direction to push
+  const Vec3 out = radial / distance;
+  r.gap = sign * (distance - tool.radius);
+  r.normal = out * sign;
+  r.closest = x - out * (distance - tool.radius);
+  r.found = true;
+  return r;
+}
+
+Vec3 tool_velocity(const AnalyticTool& tool, const ToolPose& pose, const Vec3& x) {
+  if (pose.spin == 0.0) return pose.velocity;
+  return pose.velocity + cross(tool.axis * pose.spin, x - (tool.point + pose.displacement));
+}
+
+Vec3 tool_increment(const AnalyticTool& tool, const ToolPose& from, const ToolPose& to,
+                    const Vec3& x) {
+  const Vec3 translation = to.displacement - from.displacement;
+  const double turn = to.angle - from.angle;
+  if (turn == 0.0) return translation;
+  return translation + cross(tool.axis * turn, x - (tool.point + to.displacement));
+}
+
+}  // namespace abut

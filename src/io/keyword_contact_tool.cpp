@@ -1,0 +1,120 @@
+// *CONTACT_TOOL (abut's own): an analytic rigid tool, a plane, cylinder or sphere given by
+// parameters and a motion, that a *CONTACT names as its surface 2 (entype_2 TOOL, enid_2 tid).
+// After Metafor's rigid contact matrices of analytic lines and arcs (seed 002). Keyword reference:
+// docs/deck-reference.md.
+#include <cmath>
+
+#include "deck_reader.hpp"
+
+namespace abut::deck {
+
+void read_contact_tool(DeckReader& d, Block& b) {
+  RigidTool t;
+  const Row r1 = b.row({"tid", "shape", "side"});
+  t.id = d.other_id(r1, 0);
+  d.claim_id("tool", t.id, r1.where(0));
+  t.where = r1.where();
+  if (!r1.given(1)) r1.fail(1, "expected a tool shape: PLANE, CYLINDER or SPHERE");
+  t.tool.shape = word_choice(r1, 1, ToolShape::Plane,
+                             {{"PLANE", ToolShape::Plane},
+                              {"CYLINDER", ToolShape::Cylinder},
+                              {"SPHERE", ToolShape::Sphere}},
+                             "PLANE, CYLINDER or SPHERE");
+  t.tool.side = word_choice(r1, 2, ToolSide::Outside,
+                            {{"OUTSIDE", ToolSide::Outside}, {"INSIDE", ToolSide::Inside}},
+                            "OUTSIDE (the body lies outside the tool) or INSIDE (in a pipe, a cup, "
+                            "or the plane's other side)");
+
+  const Row r2 = b.row({"x0", "y0", "z0", "nx", "ny", "nz", "radius", "length"});
+  const Vec3 point{r2.number(0), r2.number(1), r2.number(2)};
+  t.tool.point = d.frame().transform.point(point);
+  const bool sphere = t.tool.shape == ToolShape::Sphere;
+  if (sphere) {
+    for (std::size_t k = 3; k < 6; ++k)
+      if (r2.given(k)) r2.fail(k, "a sphere has no direction: leave nx, ny, nz empty");
+  } else {
+    const Vec3 n{r2.number(3), r2.number(4), r2.number(5)};
+    const double length = norm(n);
+    r2.require(length > 0.0, 3,
+               t.tool.shape == ToolShape::Plane ? "expected a nonzero normal (nx, ny, nz)"
+                                                : "expected a nonzero axis direction (nx, ny, nz)");
+    d.require_unrotated(r2.where(3), "a tool's direction");
+    t.tool.axis = n / length;
+  }
+  if (t.tool.shape == ToolShape::Plane) {
+    if (r2.given(6)) r2.fail(6, "a plane has no radius: leave it empty");
+  } else {
+    t.tool.radius = r2.number(6);
+    r2.require(t.tool.radius > 0.0, 6, "expected a radius > 0");
+    d.require_unrotated(r2.where(6), "a tool's radius");
+  }
+  if (t.tool.shape == ToolShape::Cylinder) {
+    if (r2.given(7)) {
+      t.tool.length = r2.number(7);
+      r2.require(t.tool.length > 0.0, 7, "expected a length > 0 (empty: infinite)");
+    }
+  } else if (r2.given(7)) {
+    r2.fail(7, "only a cylinder has a length: leave it empty");
+  }
+
+  const std::size_t index = d.model.tools.size();
+  if (auto r3 = b.optional_row(
+          {"fid_vx", "sf_vx", "fid_vy", "sf_vy", "fid_vz", "sf_vz", "fid_spin", "sf_spin"})) {
+    if (r3->given(0) || r3->given(2) || r3->given(4))
+      d.require_unrotated(r3->where(), "a tool's velocity");
+    for (std::size_t k = 0; k < 3; ++k) {
+      t.velocity_scale[k] = r3->number_or(2 * k + 1, 1.0);
+      if (const auto fid = d.optional_other_id(*r3, 2 * k))
+        d.bind_function(*fid, r3->where(2 * k),
+                        [index, k](Model& m, FunctionRef f) { m.tools[index].velocity[k] = f; });
+      else if (r3->given(2 * k + 1))
+        r3->fail(2 * k + 1, "a scale factor without its curve (fid) would do nothing");
+    }
+    t.spin_scale = r3->number_or(7, 1.0);
+    if (const auto fid = d.optional_other_id(*r3, 6)) {
+      if (t.tool.shape != ToolShape::Cylinder)
+        r3->fail(6, "only a cylinder spins about its axis (a roller): not supported yet for " +
+                        std::string(sphere ? "a sphere" : "a plane"));
+      d.bind_function(*fid, r3->where(6),
+                      [index](Model& m, FunctionRef f) { m.tools[index].spin = f; });
+    } else if (r3->given(7)) {
+      r3->fail(7, "a scale factor without its curve (fid_spin) would do nothing");
+    }
+  }
+  d.model.tools.push_back(t);
+}
+
+}  // namespace abut::deck
+
+namespace abut::deck {
+
+void check_tool_contact(const Model& model, const ContactSpec& c) {
+  if (c.surface2.type != EntityType::Tool) return;
+  model.tool(c.surface2);  // the tool exists
+  const auto at = [&c](SourceLocation where, const char* field) {
+    if (where.file.empty()) where = c.where;
+    where.field = field;
+    return where;
+  };
+  const std::string tool = " with an analytic tool (surface 2 TOOL) is not supported yet";
+  if (c.symmetric.value_or(false))
+    throw InputError(at(c.discretisation_where, "symmetric"),
+                     "symmetric contact" + tool +
+                         ": the tool has no points of its own (one-way "
+                         "node to surface)");
+  if (!c.discretisation_where.file.empty() && c.discretisation != Discretisation::NodeToSurface)
+    throw InputError(
+        at(c.discretisation_where, "method"),
+        "surface-to-surface contact" + tool + ": the nodes of surface 1 touch the tool (give N2S)");
+  if (c.adjust_depth) throw InputError(at(c.initial_where, "adjust"), "ADJUST" + tool);
+  if (!c.erosion_where.file.empty())
+    throw InputError(at(c.erosion_where, "facets"), "*CONTACT_EROSION" + tool);
+  if (c.element_penalty)
+    throw InputError(at(c.stiffness_where, "rule"),
+                     "the ELEMENT penalty rule" + tool + " (give pfac or the automatic rule)");
+  if (c.exchanges_heat())
+    throw InputError(at(c.thermal_where, "fid_thermal"), "heat exchange" + tool);
+  if (c.wear1.valid() || c.wear2.valid()) throw InputError(at(c.where, "fid_wear1"), "wear" + tool);
+}
+
+}  // namespace abut::deck
