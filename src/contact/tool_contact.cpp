@@ -40,8 +40,8 @@ void ToolContact::validate() const {
   if (!s.pair_scales.empty()) refuse("pair_scales", "a pair scale factor");
   if (!s.pair_frictions.empty()) refuse("pair_frictions", "a per-part-pair friction");
   if (s.gaps.mesh_fraction || s.gaps.skip_close || s.gaps.zero_at_free_edges ||
-      std::isfinite(s.gaps.max_main))
-    refuse("gaps", "igap 2 or 3, Igap0 or Gap_max_m");
+      std::isfinite(s.gaps.max_main) || s.gaps.border != GapSettings::Border::Cut)
+    refuse("gaps", "igap 2 or 3, Igap0, Gap_max_m or Ishape");
   if (s.sense == ContactSense::Negative)
     refuse("normal_law", "sense NEGATIVE (choose the tool's side INSIDE instead)");
   if (std::holds_alternative<ExponentialOverclosure>(s.normal_law))
