@@ -78,7 +78,7 @@ std::array<double, 6> renard_coefficients(const Row& r1, const std::optional<Row
 }  // namespace
 
 void read_contact_friction(DeckReader& d, Block& b) {
-  const Row r = b.row({"coid", "law", "mu_s", "mu_d", "pen_t", "filter", "xfreq"});
+  const Row r = b.row({"coid", "law", "mu_s", "mu_d", "pen_t", "filter", "xfreq", "tie"});
   const std::string laws =
       "a friction law: NONE, COULOMB, TRESCA, STICK, FREEZE, VISCOUS, DARMSTAD or RENARD (or "
       "Radioss Ifric 1, 2, 3)";
@@ -176,7 +176,22 @@ void read_contact_friction(DeckReader& d, Block& b) {
               "expected a filtering coefficient in (0, 1] for the simple filter (filter 1)");
   }
 
-  refine_contact(d, r, [r, law, mu_s, mu_d, c, pen_t, filter](ContactSpec& spec) {
+  // FREEZE as a penalty tie (springs, the default) or as an exact kinematic tie (a constraint:
+  // OptiStruct implements FREEZE as a TIE kinematic condition, seed 003 comment 10).
+  bool exact = false;
+  if (r.given(7)) {
+    r.require(law == Law::Freeze, 7,
+              "tie is an option of law FREEZE (PENALTY or EXACT): leave it empty for law " +
+                  std::string(law_name(law)));
+    exact = word_choice(r, 7, false, {{"PENALTY", false}, {"EXACT", true}},
+                        "a tie kind: PENALTY (springs) or EXACT (a kinematic constraint)");
+    if (exact) {
+      unused(r, 4, law, " with tie EXACT (no springs)");
+      if (kind != 0) unused(r, 5, law, " with tie EXACT (no springs)");
+    }
+  }
+
+  refine_contact(d, r, [r, law, mu_s, mu_d, c, pen_t, filter, exact](ContactSpec& spec) {
     if (spec.friction != 0.0 || spec.friction_function.valid()) {
       r.fail(1, "give friction either as mu on *CONTACT or with *CONTACT_FRICTION, not both (" +
                     contact_at(spec) + " has mu on line 2)");
@@ -188,6 +203,7 @@ void read_contact_friction(DeckReader& d, Block& b) {
                  contact_at(spec) + ": remove one of them");
     }
     spec.friction_law = law;
+    spec.exact_tie = exact;
     spec.mu_static = mu_s;
     spec.mu_dynamic = mu_d;
     spec.friction_c = c;

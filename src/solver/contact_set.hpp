@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "abut/contact/interface.hpp"
+#include "abut/mesh/skin.hpp"
 #include "abut/solver/contact_report.hpp"
 #include "abut/solver/model.hpp"
 
@@ -20,6 +21,12 @@ ThermalContactSettings thermal_of(const Model& model, const ContactSpec& spec);
 // *CONTACT_FRICTION, or seed 000's Coulomb mu (constant, or a *FUNCTION of the model's `table`
 // evaluated with term = `term`).
 TangentialLaw tangential_law_of(const ContactSpec& spec, const FunctionTable* table, double term);
+
+// The contact faces (exterior faces of hexes, shells) holding at least one of `nodes` (a node set
+// as surface 1 of node-to-surface contact); InputError at `entity` if a node is on none.
+std::vector<SkinFace> faces_touching(const std::vector<SkinFace>& faces,
+                                     const std::vector<std::int32_t>& nodes, std::size_t node_count,
+                                     const EntityRef& entity);
 
 class ContactSet {
  public:
