@@ -41,6 +41,20 @@ std::size_t ContactInterface::tied_points() const {
   return n;
 }
 
+std::vector<ContactInterface::NodeTie> ContactInterface::node_ties() const {
+  std::vector<NodeTie> out;
+  for (const Pass& pass : passes_) {
+    const Side& own = sides_[pass.own];
+    const Side& target = sides_[pass.target];
+    for (std::size_t p = 0; p < pass.state.size(); ++p) {
+      if (pass.state[p] != kTied || own.point_node.empty() || own.point_node[p] < 0) continue;
+      out.push_back({own.point_node[p], target.surface.facets[pass.tie_facet[p]],
+                     quad_shape(pass.tie_xi[p], pass.tie_eta[p])});
+    }
+  }
+  return out;
+}
+
 bool ContactInterface::needs_rebuild(const ContactInput& in) const {
   if (builds_ == 0) return true;
   // Verlet-list rule: boxes were inflated by the margin m; while no node has moved more than

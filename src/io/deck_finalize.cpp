@@ -183,6 +183,7 @@ DeckResult DeckReader::finish() {
   }
   // *CONTACT_* keywords, now that every *CONTACT, function and entity is known.
   merge_contact_keywords(model, contact_keywords);
+  extract_exact_ties(model);
   check_sensors(model);
   // Every element holds node indices now; joining nodes must come before refinement, contact
   // adjustment and initial velocities take them up.

@@ -374,6 +374,9 @@ void refine_contact(DeckReader& d, const Row& r, std::function<void(ContactSpec&
 // Options of different keywords that the contact library does not combine (one of them would do
 // nothing): an InputError at the *CONTACT_* field. Run once every keyword is merged.
 void check_contact_options(const ContactSpec& c);
+// keyword_contact_tie.cpp: moves the contacts with an exact tie (FREEZE, tie = EXACT) from
+// model.contacts to model.ties; InputError at any option of theirs a tie would not use.
+void extract_exact_ties(Model& model);
 // "*CONTACT <id> at <file>:<line>", for messages that point at the contact a keyword refines.
 std::string contact_at(const ContactSpec& c);
 

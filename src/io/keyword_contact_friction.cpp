@@ -190,7 +190,7 @@ LawCard read_law(const Row& r, const std::optional<Row>& r2, LawFields f, bool p
 }  // namespace
 
 void read_contact_friction(DeckReader& d, Block& b) {
-  const Row r = b.row({"coid", "law", "mu_s", "mu_d", "pen_t", "filter", "xfreq"});
+  const Row r = b.row({"coid", "law", "mu_s", "mu_d", "pen_t", "filter", "xfreq", "tie"});
   const std::optional<Row> r2 = b.optional_row({"c1", "c2", "c3", "c4", "c5", "c6"});
   const LawCard card = read_law(r, r2, {1, 2, 3, 5, 6}, false);
   const Law law = card.law;
@@ -202,7 +202,23 @@ void read_contact_friction(DeckReader& d, Block& b) {
     r.require(*pen_t > 0.0, 4,
               "expected a tangential penalty > 0 [stress/length] (empty: the normal penalty)");
   }
-  refine_contact(d, r, [r, card, pen_t](ContactSpec& spec) {
+  // FREEZE as a penalty tie (springs, the default) or as an exact kinematic tie (a constraint:
+  // OptiStruct implements FREEZE as a TIE kinematic condition, seed 003 comment 10).
+  bool exact = false;
+  if (r.given(7)) {
+    r.require(law == Law::Freeze, 7,
+              "tie is an option of law FREEZE (PENALTY or EXACT): leave it empty for law " +
+                  std::string(law_name(law)));
+    exact = word_choice(r, 7, false, {{"PENALTY", false}, {"EXACT", true}},
+                        "a tie kind: PENALTY (springs) or EXACT (a kinematic constraint)");
+    if (exact) {
+      unused(r, 4, law, " with tie EXACT (no springs)");
+      if (card.filter.kind != FrictionFilter::Kind::None)
+        unused(r, 5, law, " with tie EXACT (no springs)");
+    }
+  }
+
+  refine_contact(d, r, [r, card, pen_t, exact](ContactSpec& spec) {
     if (spec.friction != 0.0 || spec.friction_function.valid()) {
       r.fail(1, "give friction either as mu on *CONTACT or with *CONTACT_FRICTION, not both (" +
                     contact_at(spec) + " has mu on line 2)");
@@ -214,6 +230,7 @@ void read_contact_friction(DeckReader& d, Block& b) {
                  contact_at(spec) + ": remove one of them");
     }
     spec.friction_law = card.law;
+    spec.exact_tie = exact;
     spec.mu_static = card.mu_s;
     spec.mu_dynamic = card.mu_d;
     spec.friction_c = card.c;

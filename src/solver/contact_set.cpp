@@ -69,6 +69,34 @@ bool one_way_of(const ContactSpec& spec) {
   return spec.one_way || spec.surface1.type == EntityType::NodeSet;
 }
 
+}  // namespace
+
+// The contact faces (exterior faces of hexes, shells) holding at least one of `nodes`; InputError
+// if a node is on none.
+std::vector<SkinFace> faces_touching(const std::vector<SkinFace>& faces,
+                                     const std::vector<std::int32_t>& nodes, std::size_t node_count,
+                                     const EntityRef& entity) {
+  std::vector<std::uint8_t> wanted(node_count, 0), found(node_count, 0);
+  for (auto n : nodes) wanted[static_cast<std::size_t>(n)] = 1;
+  std::vector<SkinFace> out;
+  for (const SkinFace& f : faces) {
+    bool hit = false;
+    for (auto n : f.nodes) hit = hit || wanted[static_cast<std::size_t>(n)];
+    if (!hit) continue;
+    out.push_back(f);
+    for (auto n : f.nodes) found[static_cast<std::size_t>(n)] = 1;
+  }
+  for (auto n : nodes)
+    if (!found[static_cast<std::size_t>(n)])
+      throw InputError(entity.where,
+                       "node set " + std::to_string(entity.id) +
+                           " holds a node that is neither on the model's exterior surface nor on a "
+                           "shell; node-to-surface contact of free nodes is not supported yet");
+  return out;
+}
+
+namespace {
+
 // The law of a *CONTACT_FRICTION card other than IMPETUS's mu: law, coefficients and the Metafor
 // TM factors of mu_s / m_s, mu_d / m_d and k (*CONTACT_DEPENDENCY).
 TangentialLaw law_of_card(ContactSpec::FrictionLaw law, double mu_s, double mu_d,
@@ -242,30 +270,6 @@ double face_area(const Nodes& nodes, const SkinFace& f) {
     return Vec3{nodes.x[i], nodes.y[i], nodes.z[i]};
   };
   return 0.5 * norm(cross(at(2) - at(0), at(3) - at(1)));
-}
-
-// The contact faces (exterior faces of hexes, shells) holding at least one of `nodes`; InputError
-// if a node is on none.
-std::vector<SkinFace> faces_touching(const std::vector<SkinFace>& faces,
-                                     const std::vector<std::int32_t>& nodes, std::size_t node_count,
-                                     const EntityRef& entity) {
-  std::vector<std::uint8_t> wanted(node_count, 0), found(node_count, 0);
-  for (auto n : nodes) wanted[static_cast<std::size_t>(n)] = 1;
-  std::vector<SkinFace> out;
-  for (const SkinFace& f : faces) {
-    bool hit = false;
-    for (auto n : f.nodes) hit = hit || wanted[static_cast<std::size_t>(n)];
-    if (!hit) continue;
-    out.push_back(f);
-    for (auto n : f.nodes) found[static_cast<std::size_t>(n)] = 1;
-  }
-  for (auto n : nodes)
-    if (!found[static_cast<std::size_t>(n)])
-      throw InputError(entity.where,
-                       "node set " + std::to_string(entity.id) +
-                           " holds a node that is neither on the model's exterior surface nor on a "
-                           "shell; node-to-surface contact of free nodes is not supported yet");
-  return out;
 }
 
 // Moduli for the Radioss stiffness rules. A rigid part has none: it gets the bulk modulus that

@@ -24,6 +24,12 @@ ThermalContactSettings thermal_of(const Model& model, const ContactSpec& spec);
 // evaluated with term = `term`).
 TangentialLaw tangential_law_of(const ContactSpec& spec, const FunctionTable* table, double term);
 
+// The contact faces (exterior faces of hexes, shells) holding at least one of `nodes` (a node set
+// as surface 1 of node-to-surface contact); InputError at `entity` if a node is on none.
+std::vector<SkinFace> faces_touching(const std::vector<SkinFace>& faces,
+                                     const std::vector<std::int32_t>& nodes, std::size_t node_count,
+                                     const EntityRef& entity);
+
 class ContactSet {
  public:
   // `node_mass`: lumped nodal masses; initial velocities give v_max of the automatic penalty.

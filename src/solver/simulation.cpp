@@ -196,6 +196,8 @@ void Simulation::Impl::kick() {
     vhy[i] = oy[i] + dt_avg * fy[i] * inverse_mass[i];
     vhz[i] = oz[i] + dt_avg * fz[i] * inverse_mass[i];
   }
+  // Exact ties (ties.hpp): the facet nodes carry their tied nodes' mass and force.
+  ties.kick(dt_avg, mass, ox, oy, oz, fx, fy, fz, vhx, vhy, vhz);
   if (rotations()) {
     owx.resize(n_nodes), owy.resize(n_nodes), owz.resize(n_nodes);
     owx.swap(whx);
@@ -240,20 +242,29 @@ void Simulation::Impl::kick() {
     }
   }
   apply_nodal_boundaries(dt_avg);
+  ties.follow(vhx, vhy, vhz);  // tied nodes move with their facets
 
   // Work of the external forces over [t^{n-1/2}, t^{n+1/2}]: every force that is not internal
   // (gravity and boundary reactions) equals m dv/dt - f_internal; its work with the mid velocity.
   const Vec3 g = gravity_at(t);
   double work = 0.0;
+  // With exact ties, that of the tied system: a tied node's mass and force are its facet nodes'
+  // (the constraint's own forces are internal to it).
+  const bool tied = !ties.empty();
   for (std::size_t i = 0; i < n_nodes; ++i) {
+    if (tied && ties.tied(i)) continue;
     const double ux = 0.5 * (ox[i] + vhx[i]), uy = 0.5 * (oy[i] + vhy[i]),
                  uz = 0.5 * (oz[i] + vhz[i]);  // mid-step velocity
+    const double m = tied ? mass[i] + ties.added_mass(i) : mass[i];
+    const double gx = tied ? fx[i] + ties.added_force(i, 0) : fx[i],
+                 gy = tied ? fy[i] + ties.added_force(i, 1) : fy[i],
+                 gz = tied ? fz[i] + ties.added_force(i, 2) : fz[i];
     // Reaction = m (v_new - v_old)/dt_avg - f^n (f^n includes gravity, so add gravity back).
-    const double rx = mass[i] * (vhx[i] - ox[i]) - dt_avg * fx[i];
-    const double ry = mass[i] * (vhy[i] - oy[i]) - dt_avg * fy[i];
-    const double rz = mass[i] * (vhz[i] - oz[i]) - dt_avg * fz[i];
-    work += (rx + dt_avg * mass[i] * g.x) * ux + (ry + dt_avg * mass[i] * g.y) * uy +
-            (rz + dt_avg * mass[i] * g.z) * uz;
+    const double rx = m * (vhx[i] - ox[i]) - dt_avg * gx;
+    const double ry = m * (vhy[i] - oy[i]) - dt_avg * gy;
+    const double rz = m * (vhz[i] - oz[i]) - dt_avg * gz;
+    work +=
+        (rx + dt_avg * m * g.x) * ux + (ry + dt_avg * m * g.y) * uy + (rz + dt_avg * m * g.z) * uz;
   }
   // f^n includes the pressure forces too: add their work back as gravity's.
   if (!pressure.empty()) work += dt_avg * pressure.mid_step_power(ox, oy, oz, vhx, vhy, vhz);
@@ -278,15 +289,20 @@ void Simulation::Impl::kick() {
   // (1/2) m v^{n-1/2} . v^{n+1/2} (conserved_kinetic, simulation_impl.hpp), which goes negative
   // where a velocity turns within a step: a rigid body on a stiff contact, a node at the turning
   // point of its vibration (issue 28).
+  // With exact ties, the kinetic energy of the tied system the run integrates: a tied node's mass
+  // counts at its facet's nodes, where the kick carries it (ties.hpp; it exceeds the nodes' own
+  // (1/2) m |v|^2 by the variance of the facet's velocities).
   double kinetic = 0.0, conserved = 0.0;
   for (std::size_t i = 0; i < n_nodes; ++i) {
     vx[i] = ox[i] + share * (vhx[i] - ox[i]);
     vy[i] = oy[i] + share * (vhy[i] - oy[i]);
     vz[i] = oz[i] + share * (vhz[i] - oz[i]);
+    if (tied && ties.tied(i)) continue;
+    const double m = tied ? mass[i] + ties.added_mass(i) : mass[i];
     if (rigid_body_of_node[i] < 0)
-      kinetic += 0.5 * mass[i] * (vx[i] * vx[i] + vy[i] * vy[i] + vz[i] * vz[i]);
-    conserved += n == 0 ? 0.5 * mass[i] * (ox[i] * ox[i] + oy[i] * oy[i] + oz[i] * oz[i])
-                        : 0.5 * mass[i] * (ox[i] * vhx[i] + oy[i] * vhy[i] + oz[i] * vhz[i]);
+      kinetic += 0.5 * m * (vx[i] * vx[i] + vy[i] * vy[i] + vz[i] * vz[i]);
+    conserved += n == 0 ? 0.5 * m * (ox[i] * ox[i] + oy[i] * oy[i] + oz[i] * oz[i])
+                        : 0.5 * m * (ox[i] * vhx[i] + oy[i] * vhy[i] + oz[i] * vhz[i]);
   }
   if (rotations()) {  // shell nodes; a rigid body's rotation is in its own energy below
     for (std::size_t i = 0; i < n_nodes; ++i) {
@@ -470,6 +486,7 @@ void Simulation::Impl::drift() {
       z[node] = p.z;
     }
   }
+  ties.place(x, y, z);  // exactly on their facets, without the drift's round-off
   t += dt;
   ++n;
   dt_prev = dt;

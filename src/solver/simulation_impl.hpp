@@ -16,6 +16,7 @@
 #include "contact_set.hpp"
 #include "rigid_body.hpp"
 #include "sensors.hpp"
+#include "ties.hpp"
 
 namespace abut {
 
@@ -64,6 +65,7 @@ struct Simulation::Impl {
   bool rotations() const { return !rotary_inertia.empty(); }
 
   std::unique_ptr<ContactSet> contacts;
+  KinematicTies ties;  // exact ties (*CONTACT_FRICTION FREEZE, tie = EXACT); empty: none
   // *SENSOR and what they switch (simulation_sensors.cpp): the sensors, the fixed directions of
   // each node released at impact (*CONTACT_RELEASE_BC; empty when no contact releases any), the
   // directions each node is held in (*NODE bc and *BC_MOTION bc_tr; same), and the log lines not

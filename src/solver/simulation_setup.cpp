@@ -9,6 +9,7 @@
 #include "abut/element/shell4.hpp"
 #include "abut/mesh/skin.hpp"
 #include "simulation_impl.hpp"
+#include "tie_search.hpp"
 
 namespace abut {
 
@@ -209,6 +210,8 @@ void Simulation::Impl::setup() {
   std::vector<std::pair<std::int64_t, std::size_t>> body_of_part;
   for (std::size_t b = 0; b < bodies.size(); ++b) body_of_part.emplace_back(bodies[b].part_id, b);
   bc = resolve_boundary_conditions(model, rigid_body_of_node, body_of_part, rotary_inertia);
+  ties = KinematicTies(model, find_tied_nodes(model), mass, rigid_body_of_node, node_fixed, bc, vhx,
+                       vhy, vhz);
 
   contacts = std::make_unique<ContactSet>(model, mass, vhx, vhy, vhz);
   setup_sensors();

@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 
 #include "abut/io/deck.hpp"
+#include "abut/solver/static_solver.hpp"
 
 namespace abut {
 namespace {
@@ -220,6 +222,50 @@ TOP, UNDER
   EXPECT_FALSE(changes[0].overclosure->slope.has_value());
   EXPECT_EQ(changes[0].friction, 0.3);
   EXPECT_EQ(changes[0].stick_slope, 1.e3);
+}
+
+// *TIE (CalculiX) is abut's exact tie: the slave nodes follow the master faces at their initial
+// gap. The upper cube, tied 0.01 above the lower one, moves with it under a shear load.
+TEST(InpContact, TieBindsTheSlaveNodesToTheMasterFaces) {
+  const std::string tie = "*TIE, NAME=GLUE, POSITION TOLERANCE=0.05, ADJUST=NO\nUNDER_NODES, TOP\n";
+  const std::string step =
+      "*STEP\n*STATIC\n*BOUNDARY\n1, 1, 3\n2, 1, 3\n3, 1, 3\n4, 1, 3\n*CLOAD\n15, 1, 1000.\n"
+      "16, 1, 1000.\n*END STEP\n";
+  const DeckResult r = read(kModel + tie + step);
+  const Model& m = r.model;
+  EXPECT_TRUE(m.contacts.empty());
+  ASSERT_EQ(m.ties.size(), 1u);
+  EXPECT_EQ(m.ties[0].title, "GLUE");
+  EXPECT_EQ(m.ties[0].detection_depth, 0.05);
+  EXPECT_EQ(m.ties[0].surface1.type, EntityType::NodeSet);
+  StaticSolver solver(m);
+  solver.run();
+  const auto u = solver.displacement();
+  const auto index = [&m](std::int64_t id) {
+    for (std::size_t i = 0; i < m.mesh.nodes.size(); ++i)
+      if (m.mesh.nodes.id[i] == id) return i;
+    return std::size_t(0);
+  };
+  EXPECT_GT(u[3 * index(15)], 1e-6);  // it moves
+  for (const auto& [tied, main] : {std::pair{11, 5}, {12, 6}, {13, 7}, {14, 8}})
+    for (int d = 0; d < 3; ++d)
+      EXPECT_NEAR(u[3 * index(tied) + d], u[3 * index(main) + d], 1e-12 * u[3 * index(15)]);
+
+  // ADJUST=YES (the default) is not supported; the master must be made of faces.
+  try {
+    read(kModel + "*TIE, NAME=GLUE\nUNDER_NODES, TOP\n" + step);
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().field, "ADJUST");
+    EXPECT_NE(std::string(e.what()).find("give ADJUST=NO"), std::string::npos);
+  }
+  try {
+    read(kModel + "*TIE, NAME=GLUE, ADJUST=NO\nTOP, UNDER_NODES\n" + step);
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().field, "master");
+    EXPECT_NE(std::string(e.what()).find("is made of nodes"), std::string::npos);
+  }
 }
 
 }  // namespace

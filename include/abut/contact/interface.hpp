@@ -180,6 +180,15 @@ class ContactInterface {
   // Empty for self contact, where a point faces its own body's far side within that layer.
   std::vector<DeepStart> deep_initial_points(const ContactInput& initial) const;
   std::size_t tied_points() const;  // currently tied (sticking or freeze)
+  // A node point tied by FREEZE (ContactSettings::freeze) to its partner found at t = 0: the
+  // partner facet's nodes and their shape values N_a(xi, eta) at the partner point.
+  struct NodeTie {
+    std::int32_t node = -1;
+    std::array<std::int32_t, 4> facet{};
+    std::array<double, 4> shape{};
+  };
+  // The node points (node-to-surface) currently tied, in pass and point order.
+  std::vector<NodeTie> node_ties() const;
   std::size_t broad_phase_builds() const { return builds_; }
   std::size_t contact_edges() const { return edges_ ? edges_->edge_count() : 0; }
   double search_margin() const { return margin_; }

@@ -213,6 +213,7 @@ struct ContactSpec {
     Renard
   };
   FrictionLaw friction_law = FrictionLaw::Impetus;
+  bool exact_tie = false;  // FREEZE as a kinematic constraint (tie = EXACT); moved to Model::ties
   double mu_static = 0.0, mu_dynamic = 0.0;
   std::optional<double> tangential_penalty;
   std::array<double, 6> friction_c{};  // C1..C6 (Radioss laws), m_s, m_d, k (Tresca)
@@ -307,6 +308,22 @@ struct RigidTool {
   SourceLocation where;
 };
 
+// An exact kinematic tie (*CONTACT_FRICTION FREEZE with tie = EXACT; OptiStruct FREEZE as a TIE
+// kinematic condition, seed 003 comment 10): every node of surface 1 found at t = 0 within the
+// detection depth of a facet of surface 2 follows that facet, x_s = sum N_a(xi) x_a + offset
+// (solver/tie_search.hpp). A constraint, not a spring: the contact keywords of its *CONTACT set
+// only which nodes and facets are tied.
+struct TieSpec {
+  std::int64_t id = 0;  // ctid of the *CONTACT
+  std::string title;
+  EntityRef surface1, surface2;
+  bool merge = false;
+  std::optional<double> detection_depth;  // *CONTACT_NORMAL depth (empty: the contact default)
+  double edge_tolerance = 0.0, edge_angle = 20.0;
+  SourceLocation where;        // the *CONTACT
+  SourceLocation exact_where;  // the field that asks for the exact tie
+};
+
 // A geometry of *GEOMETRY_* with its id.
 struct GeometryEntry {
   std::int64_t id = 0;
@@ -340,6 +357,7 @@ struct Model {
   std::vector<PressureLoad> pressures;
   std::vector<ContactSpec> contacts;
   std::vector<RigidTool> tools;  // *CONTACT_TOOL
+  std::vector<TieSpec> ties;    // exact ties (not in `contacts`: they have no penalty springs)
   std::vector<Sensor> sensors;  // *SENSOR, in deck order
   // The static procedure (model_static.hpp): empty for an explicit run.
   std::vector<StaticStep> static_steps;

@@ -196,6 +196,47 @@ void read_contact_pair(Reader& r, const Card& c) {
   }
 }
 
+// *TIE, NAME=..., POSITION TOLERANCE=..., ADJUST=NO (CalculiX User's Manual, *TIE): the slave
+// surface's nodes within the tolerance of the master faces are tied to them, as abut's exact tie.
+// CalculiX moves the slave nodes onto the master surface by default (ADJUST=YES); abut keeps their
+// initial gaps, so ADJUST=NO must be given.
+void read_tie(Reader& r, const Card& c) {
+  using Kind = ParameterRule::Kind;
+  check_parameters(r, c,
+                   {{"NAME"},
+                    {"POSITION TOLERANCE"},
+                    {"ADJUST"},
+                    {"MULTISTAGE", Kind::Unsupported},
+                    {"FLUID CYCLIC", Kind::Unsupported},
+                    {"CYCLIC SYMMETRY", Kind::Unsupported}});
+  TieRecord t;
+  t.card = r.loc(c);
+  t.name = required_parameter(r, c, "NAME");
+  const auto adjust = parameter_value(c, "ADJUST");
+  if (!adjust || upper_name(*adjust) != "NO") {
+    throw InputError(
+        r.where(c, "ADJUST"),
+        "ADJUST=YES (CalculiX's default) moves the slave nodes onto the master "
+        "surface, which abut's tie does not do yet: give ADJUST=NO (the tie then keeps "
+        "each node's initial gap)");
+  }
+  if (const auto tolerance = parameter_value(c, "POSITION TOLERANCE")) {
+    t.tolerance = inp_number(*tolerance);
+    if (!t.tolerance || !(*t.tolerance > 0.0))
+      throw InputError(r.where(c, "POSITION TOLERANCE"), "expected a position tolerance > 0");
+  }
+  if (c.data.size() != 1)
+    throw InputError(r.where(c), "expected one line 'slave surface, master surface'");
+  const Fields f(r, c, c.data.front());
+  f.at_most(2, "slave surface, master surface");
+  if (!f.given(0)) f.fail("slave", "the slave surface name is missing");
+  if (!f.given(1)) f.fail("master", "the master surface name is missing");
+  t.slave = f.text(0);
+  t.master = f.text(1);
+  t.where = f.loc();
+  r.ties.push_back(std::move(t));
+}
+
 void read_change_friction(Reader& r, const Card& c) {
   check_parameters(r, c, {{"INTERACTION"}, {"RESET", ParameterRule::Kind::Unsupported}});
   no_data(r, c, "the new values follow on a *FRICTION card");

@@ -286,6 +286,7 @@ DeckResult Reader::finish() {
     model.title += (i ? " " : "") + title_lines[i];
   finish_mesh(*this);
   finish_contacts(*this);
+  finish_ties(*this);
   finish_steps(*this);
   model.functions.resolve();
   // CalculiX ADJUST: slave nodes onto the master surface, in the reference configuration.

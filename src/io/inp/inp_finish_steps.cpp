@@ -252,6 +252,32 @@ void finish_contacts(Reader& r) {
   }
 }
 
+// *TIE -> TieSpec (model.hpp): the slave surface's nodes (all nodes of its faces, or its nodes)
+// follow the master faces; the position tolerance is the search depth.
+void finish_ties(Reader& r) {
+  for (const TieRecord& t : r.ties) {
+    const SurfaceRecord& slave = find_surface(r, t.slave, t.where, "slave");
+    const SurfaceRecord& master = find_surface(r, t.master, t.where, "master");
+    if (master.node_based) {
+      throw InputError(r.where(t.where, "*TIE", "master"),
+                       "the master surface " + master.name +
+                           " is made of nodes: it must be made of element faces (*SURFACE, "
+                           "TYPE=ELEMENT)");
+    }
+    TieSpec s;
+    s.id = static_cast<std::int64_t>(r.model.contacts.size() + r.model.ties.size()) + 1;
+    s.title = t.name;
+    s.surface1 = slave.entity;
+    s.surface1.where = r.where(t.where, "*TIE", "slave");
+    s.surface2 = master.entity;
+    s.surface2.where = r.where(t.where, "*TIE", "master");
+    s.detection_depth = t.tolerance;
+    s.where = r.where(t.where, "*TIE");
+    s.exact_where = r.where(t.card, "*TIE", "NAME");
+    r.model.ties.push_back(std::move(s));
+  }
+}
+
 void finish_steps(Reader& r) {
   make_amplitudes(r);
   const auto dependent = make_equations(r);

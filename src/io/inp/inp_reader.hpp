@@ -104,6 +104,13 @@ struct PairRecord {
   Loc card, where;  // the keyword line and the data line
 };
 
+// *TIE (CalculiX): the slave surface's nodes follow the master faces (an exact tie, TieSpec).
+struct TieRecord {
+  std::string name, slave, master;
+  std::optional<double> tolerance;  // POSITION TOLERANCE
+  Loc card, where;                  // the keyword line and the data line
+};
+
 struct AmplitudeRecord {
   std::string name;
   bool total_time = false;
@@ -207,6 +214,7 @@ class Reader {
   std::vector<InteractionRecord> interactions;
   std::unordered_map<std::string, std::size_t> interaction_names;
   std::vector<PairRecord> pairs;
+  std::vector<TieRecord> ties;
   std::vector<AmplitudeRecord> amplitudes;
   std::unordered_map<std::string, std::size_t> amplitude_names;
   std::vector<EquationRecord> equations;
@@ -307,6 +315,7 @@ void read_surface_interaction(Reader&, const Card&);
 void read_surface_behavior(Reader&, const Card&);
 void read_friction(Reader&, const Card&);
 void read_contact_pair(Reader&, const Card&);
+void read_tie(Reader&, const Card&);
 void read_change_friction(Reader&, const Card&);
 void read_change_surface_behavior(Reader&, const Card&);
 void read_change_surface_behavior(Reader&, const Card&);
@@ -342,7 +351,9 @@ std::vector<std::string> closest_keywords(const std::string& key);
 
 // inp_finish.cpp / inp_finish_steps.cpp.
 void finish_mesh(Reader& r);      // nodes, hexes, parts, materials, node sets, face sets
-void finish_contacts(Reader& r);  // amplitudes' curves are made first (finish_steps)
+void finish_contacts(Reader& r);
+void finish_ties(
+    Reader& r);  // *TIE -> Model::ties  // amplitudes' curves are made first (finish_steps)
 void finish_steps(Reader& r);     // amplitudes, equations, static steps
 // The indices of a node / element item (an id or a set name); InputError at the item.
 std::vector<std::int32_t> nodes_of(const Reader& r, const Item& item, const std::string& keyword);

@@ -18,6 +18,7 @@
 #include "solver/static/static_contacts.hpp"
 #include "solver/static/static_elements.hpp"
 #include "solver/static/step_loads.hpp"
+#include "solver/tie_search.hpp"
 
 namespace abut {
 
@@ -118,6 +119,10 @@ struct StaticSolver::Impl {
   double coordinate_size = 0.0;  // the largest coordinate magnitude of the model
   bool indefinite = false;       // NLGEOM made the tangent indefinite: LU from then on
   LinearSolver* linear = nullptr;
+  // The exact ties' nodes (tie_search.hpp) and the linear constraints of every step: the
+  // *EQUATION cards, then u_s = sum N_a u_a of each tied node, eliminated by DofMap.
+  std::vector<TiedNode> tied;
+  std::vector<LinearConstraint> constraints;
 
   Impl(const Model& m, StaticControls c) : model(m), controls(c), elements(m) {
     if (!m.motions.empty() || !m.gravity.empty() || !m.pressures.empty())
@@ -131,6 +136,18 @@ struct StaticSolver::Impl {
     detail::StaticContacts set = detail::make_static_contacts(m);
     contacts = std::move(set.passes);
     contact_of = std::move(set.contact_of);
+    tied = find_tied_nodes(m);
+    constraints = m.equations;
+    for (const LinearConstraint& eq : m.equations) {
+      const auto& first = eq.terms.front();
+      for (const TiedNode& n : tied)
+        if (n.node == first.node)
+          throw InputError(eq.where, "the dependent dof of this *EQUATION is on node " +
+                                         std::to_string(m.mesh.nodes.id[first.node]) +
+                                         ", which exact tie " + std::to_string(m.ties[n.tie].id) +
+                                         " binds to its facet: put another dof first");
+    }
+    for (LinearConstraint& eq : tie_constraints(m, tied)) constraints.push_back(std::move(eq));
     const Nodes& x = m.mesh.nodes;
     for (std::size_t i = 0; i < x.size(); ++i)
       coordinate_size =
@@ -348,7 +365,17 @@ struct StaticSolver::Impl {
         }
       }
       const detail::StepLoads loads(model, step, u, history, total);
-      const detail::DofMap dofs(model.mesh.nodes.size(), loads.prescribed(), model.equations);
+      for (const TiedNode& n : tied)
+        for (int d = 0; d < 3; ++d)
+          if (loads.prescribed()[3 * static_cast<std::size_t>(n.node) + d])
+            throw InputError(model.ties[n.tie].exact_where,
+                             "node " + std::to_string(model.mesh.nodes.id[n.node]) +
+                                 " follows its facet by exact tie " +
+                                 std::to_string(model.ties[n.tie].id) +
+                                 " but has a boundary condition in direction " + "xyz"[d] +
+                                 " in step " + std::to_string(s + 1) +
+                                 ": prescribe the nodes of the facet it is tied to instead");
+      const detail::DofMap dofs(model.mesh.nodes.size(), loads.prescribed(), constraints);
       ElementEquations base;
       for (std::size_t e = 0; e < elements.count(); ++e) base.add(elements.nodes(e), dofs);
       stats.equations = std::max<std::int64_t>(stats.equations, dofs.equations());
