@@ -25,6 +25,8 @@ void check_exact_tie(const ContactSpec& c) {
   };
   if (c.surface1.type == c.surface2.type && c.surface1.id == c.surface2.id)
     refuse(at({}, c.where, "enid_2"), "a surface cannot be tied to itself (self contact)");
+  if (c.surface2.type == EntityType::Tool)
+    refuse(at({}, c.where, "enid_2"), "an analytic tool (*CONTACT_TOOL) cannot be tied");
   if (c.penalty) refuse(at({}, c.where, "pfac"), "a tie is a constraint: pfac has no use");
   if (c.begin_time != 0.0 || c.end_time != 1e20)
     refuse(at({}, c.where, "t_beg"), "a tie holds for the whole run: t_beg and t_end have no use");

@@ -115,6 +115,9 @@ void check_tool_contact(const Model& model, const ContactSpec& c) {
   if (c.exchanges_heat())
     throw InputError(at(c.thermal_where, "fid_thermal"), "heat exchange" + tool);
   if (c.wear1.valid() || c.wear2.valid()) throw InputError(at(c.where, "fid_wear1"), "wear" + tool);
+  if (c.gaps.border != GapSettings::Border::Cut)
+    throw InputError(at(c.gap_where, "ishape"),
+                     "ishape" + tool + " (the tool has no shell border)");
 }
 
 }  // namespace abut::deck
