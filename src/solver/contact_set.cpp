@@ -71,8 +71,9 @@ bool one_way_of(const ContactSpec& spec) {
 
 }  // namespace
 
-// The contact faces (exterior faces of hexes, shells) holding at least one of `nodes`; InputError
-// if a node is on none.
+namespace {
+
+// The contact faces holding at least one of `nodes`; InputError at `entity` if a node is on none.
 std::vector<SkinFace> faces_touching(const std::vector<SkinFace>& faces,
                                      const std::vector<std::int32_t>& nodes, std::size_t node_count,
                                      const EntityRef& entity) {
@@ -93,6 +94,22 @@ std::vector<SkinFace> faces_touching(const std::vector<SkinFace>& faces,
                            " holds a node that is neither on the model's exterior surface nor on a "
                            "shell; node-to-surface contact of free nodes is not supported yet");
   return out;
+}
+
+}  // namespace
+
+SecondarySurface secondary_surface(const Model& model, const EntityRef& surface1, bool merge,
+                                   bool exposed_faces) {
+  SecondarySurface s;
+  if (surface1.type != EntityType::NodeSet) {
+    s.faces = contact_faces(model, surface1, merge, exposed_faces);
+    return s;
+  }
+  s.nodes = model.nodes_of(surface1);
+  s.faces =
+      faces_touching(contact_faces(model, EntityRef{EntityType::All, 0, surface1.where}, merge),
+                     s.nodes, model.mesh.nodes.size(), surface1);
+  return s;
 }
 
 namespace {
@@ -486,16 +503,8 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
           "small sliding (TRACK = SMALL) is an option of static steps: the explicit "
           "solver searches partners as the bodies move (give FINITE)");
     // Node-to-surface of a node group: its nodes on the model's exterior faces that hold them.
-    std::vector<std::int32_t> secondary_nodes;
-    std::vector<SkinFace> faces1;
-    if (spec.surface1.type == EntityType::NodeSet) {
-      secondary_nodes = model.nodes_of(spec.surface1);
-      faces1 = faces_touching(
-          contact_faces(model, EntityRef{EntityType::All, 0, spec.surface1.where}, spec.merge),
-          secondary_nodes, nodes.size(), spec.surface1);
-    } else {
-      faces1 = contact_faces(model, spec.surface1, spec.merge, !spec.no_internal);
-    }
+    const auto [secondary_nodes, faces1] =
+        secondary_surface(model, spec.surface1, spec.merge, !spec.no_internal);
     if (spec.surface2.type == EntityType::Tool) {
       add_tool_contact(spec, faces1, secondary_nodes, node_mass, initial, v_max);
       continue;

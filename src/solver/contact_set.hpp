@@ -24,11 +24,15 @@ ThermalContactSettings thermal_of(const Model& model, const ContactSpec& spec);
 // evaluated with term = `term`).
 TangentialLaw tangential_law_of(const ContactSpec& spec, const FunctionTable* table, double term);
 
-// The contact faces (exterior faces of hexes, shells) holding at least one of `nodes` (a node set
-// as surface 1 of node-to-surface contact); InputError at `entity` if a node is on none.
-std::vector<SkinFace> faces_touching(const std::vector<SkinFace>& faces,
-                                     const std::vector<std::int32_t>& nodes, std::size_t node_count,
-                                     const EntityRef& entity);
+// Surface 1 of a contact or tie: its faces, and for a node set (node-to-surface) its nodes, the
+// faces being the contact faces (exterior faces of hexes, shells) that hold at least one of them
+// (InputError at the set if a node is on none). `exposed_faces`: as contact_faces.
+struct SecondarySurface {
+  std::vector<std::int32_t> nodes;  // empty unless surface 1 is a node set
+  std::vector<SkinFace> faces;
+};
+SecondarySurface secondary_surface(const Model& model, const EntityRef& surface1, bool merge,
+                                   bool exposed_faces);
 
 class ContactSet {
  public:

@@ -20,16 +20,7 @@ std::string node_name(const Model& model, std::int32_t node) {
 // which is not used: any positive value does.
 std::vector<ContactInterface::NodeTie> search(const Model& model, const TieSpec& tie) {
   const Nodes& nodes = model.mesh.nodes;
-  std::vector<std::int32_t> secondary;
-  std::vector<SkinFace> faces1;
-  if (tie.surface1.type == EntityType::NodeSet) {
-    secondary = model.nodes_of(tie.surface1);
-    faces1 = faces_touching(
-        contact_faces(model, EntityRef{EntityType::All, 0, tie.surface1.where}, tie.merge),
-        secondary, nodes.size(), tie.surface1);
-  } else {
-    faces1 = contact_faces(model, tie.surface1, tie.merge);
-  }
+  const auto [secondary, faces1] = secondary_surface(model, tie.surface1, tie.merge, false);
   const std::vector<SkinFace> faces2 = contact_faces(model, tie.surface2, tie.merge);
   const auto unit = [](const SkinFace&) { return 1.0; };
   ContactSettings s;
