@@ -186,6 +186,7 @@ bool ContactInterface::quiet(const Pass& pass, std::size_t p) const {
 void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactInput& in) {
   const std::int32_t last_partner = pass.hit[p] ? pass.hit_facet[p] : -1;
   pass.hit[p] = 0;
+  pass.kink[p] = 0.0;
   // What the point's springs held at the end of last step: where they vanish without doing work
   // now, that energy is released (ContactStats::released_energy; scatter adds and clears it).
   const double held = last_partner >= 0 ? pass.energy[p] : 0.0;
@@ -502,6 +503,10 @@ void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactIn
   pass.dfz[p] = damping.z;
   pass.slip_work[p] = slip_work;
   pass.penetration[p] = penetration;
+  // Separating within a step's travel at the spring's own bound: it may let go part way through
+  // the next step (ContactStats::kink_step).
+  if (v_n > 0.0 && !adhesive && bounds_kinks() && penetration < v_n * spring_step(pass.omega2[p]))
+    pass.kink[p] = 0.125 * k_n * v_n * v_n;
   record_conductance(pass, p, h.facet, h.xi, h.eta, std::max(fn, 0.0) / area, -penetration, area);
 }
 

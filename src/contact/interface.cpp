@@ -261,7 +261,7 @@ void ContactInterface::archive(StateArchive& a) {
   a.expect(settings_.thermal.any(), "whether a contact exchanges heat");
   a.values(sides_, passes_, mass_, bx_, by_, bz_, wear_, pressure_, damping_fx_, damping_fy_,
            damping_fz_, margin_, initial_stable_step_, builds_, rebuild_pending_, gap_pairs_,
-           edges_, stats_);
+           edges_, kink_scale_, kink_hold_, kink_elastic_, stats_);
   if (!a.saving()) {
     awake_current_ = false;
     update_near_bound();
@@ -338,11 +338,12 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
     if (size < node_count)
       throw std::invalid_argument(
           "ContactInterface::apply: nodal arrays shorter than the node masses");
+  const double spring_energy = stats_.elastic_energy;  // of the last step
   stats_.force = {};
   stats_.normal_force = stats_.tangential_force = stats_.elastic_energy = stats_.max_penetration =
       0.0;
   stats_.active_points = 0;  // heat_flow: set by conduct_heat, which may follow on its own clock
-  stats_.stable_step = kInfinity;
+  stats_.stable_step = stats_.kink_step = kInfinity;
   // A normal penalty that grows in time (Metafor PEN_NORMALE TM) stiffens every spring by f(t):
   // the bounds made with the springs of factor 1 (approach, near points, the initial bound) shrink
   // by sqrt(f) (approach_spring_step); touching points carry f in their own springs. f below 1
@@ -352,16 +353,19 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   // as no node crosses a quarter of the search margin in one step; at rest (no speed to judge
   // by) the bound before touching holds as before contact. Last step's damping forces did the
   // other half of their work over the step just taken (book_damping), and are cleared.
-  double speed2 = 0.0, power = 0.0;
+  double speed2 = 0.0, power = 0.0, kinetic = 0.0;
   for (auto i : surface_nodes_) {
     pressure_[i] = 0.0;
     if (!in.vx.empty()) {
-      speed2 = std::max(speed2, in.vx[i] * in.vx[i] + in.vy[i] * in.vy[i] + in.vz[i] * in.vz[i]);
+      const double v2 = in.vx[i] * in.vx[i] + in.vy[i] * in.vy[i] + in.vz[i] * in.vz[i];
+      speed2 = std::max(speed2, v2);
+      kinetic += 0.5 * mass_[i] * v2;
       power += damping_power(i, in);
     }
     damping_fx_[i] = damping_fy_[i] = damping_fz_[i] = 0.0;
   }
   stats_.damping_energy -= 0.5 * power * in.dt;
+  kink_scale_ = std::max({kink_scale_, kinetic + spring_energy, in.energy_scale});
   // Edge-to-edge springs and contacts outside their time window (points may lie anywhere when it
   // opens) keep the bound everywhere.
   const bool outside_window =
@@ -396,6 +400,7 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   const double near_spring_step = approach_spring_step(near_omega2_);
   const bool per_point = speed2 > 0.0 && !edges_ && in.dt >= 0.5 * near_spring_step;
   const double speed = std::sqrt(speed2);
+  const bool kinks = speed2 > 0.0 && bounds_kinks();
   double near_step = kInfinity;
   // Quiet points stay so until the next build: after a build every point is evaluated once and
   // the others listed; until the next one only those are.
@@ -408,6 +413,7 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t p = every ? k : static_cast<std::size_t>(pass.awake[k]);
       evaluate_point(pass, p, in);
+      if (kinks && !pass.hit[p]) pass.kink[p] = onset_kink(pass, p, in, speed);
       if (per_point) near_step = std::min(near_step, approach_limit(pass, p, in, speed, near_step));
     }
     if (every) {

@@ -452,31 +452,19 @@ void ContactInterface::size_pass(Pass& pass, std::size_t n) const {
   pass.mortar_target.resize(cells ? 4 * kMaxOverlaps * n : 0, 0.0);
   pass.mortar_facet.resize(cells ? kMaxOverlaps * n : 0, -1);
   pass.mortar_count.resize(cells ? n : 0, 0);
-  for (auto* v : {&pass.offset,
-                  &pass.htx,
-                  &pass.hty,
-                  &pass.htz,
-                  &pass.slip,
-                  &pass.hit_xi,
-                  &pass.hit_eta,
-                  &pass.fx,
-                  &pass.fy,
-                  &pass.fz,
-                  &pass.dfx,
-                  &pass.dfy,
-                  &pass.dfz,
-                  &pass.area,
-                  &pass.pressure,
-                  &pass.slip_speed,
-                  &pass.normal_force,
-                  &pass.tangential_force,
-                  &pass.energy,
-                  &pass.slip_work,
-                  &pass.penetration,
-                  &pass.omega2,
-                  &pass.pair_gap,
-                  &pass.released,
-                  &pass.approach_omega2})
+  for (auto* v : {&pass.offset,       &pass.htx,
+                  &pass.hty,          &pass.htz,
+                  &pass.slip,         &pass.hit_xi,
+                  &pass.hit_eta,      &pass.fx,
+                  &pass.fy,           &pass.fz,
+                  &pass.dfx,          &pass.dfy,
+                  &pass.dfz,          &pass.area,
+                  &pass.pressure,     &pass.slip_speed,
+                  &pass.normal_force, &pass.tangential_force,
+                  &pass.energy,       &pass.slip_work,
+                  &pass.penetration,  &pass.omega2,
+                  &pass.pair_gap,     &pass.released,
+                  &pass.kink,         &pass.approach_omega2})
     v->resize(n, 0.0);
   const bool nodes = settings_.discretisation == Discretisation::NodeToSurface;
   pass.corner.resize(nodes ? n * kMaxCornerWalls : 0);

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "abut/contact/interface.hpp"
 #include "abut/contact/penetration_zone.hpp"
@@ -103,6 +104,55 @@ double ContactInterface::approach_limit(const Pass& pass, std::size_t p, const C
     clearance = std::min(clearance, d - pair_reach(facets, f, rules).reach);
   }
   return std::max(spring, clearance / (2.0 * (1.0 + kSqrt3) * speed));
+}
+
+bool ContactInterface::bounds_kinks() const {
+  return settings_.sense != ContactSense::Bilateral && !settings_.adhesion;
+}
+
+// An open point touches in the next step only if it comes within the narrow phase's reach of a
+// candidate's box (the travel of approach_limit) and its height above the facet's mean plane, less
+// the pair's gap and the band's slack (penetration_zone.hpp), is within a step's travel at its
+// speed w towards the facet (the facet moving with its corners' mean velocity). The step is at
+// most the point's spring bound: approach_limit (or, at rest and with edges, the bound for every
+// near point) holds a longer one off before the point may touch.
+double ContactInterface::onset_kink(const Pass& pass, std::size_t p, const ContactInput& in,
+                                    double speed) const {
+  constexpr double kSqrt3 = 1.7320508075688772;
+  if (pass.state[p] == kReleased || pass.state[p] == kTied || in.vx.empty()) return 0.0;
+  const auto first = pass.candidates.offsets[p], last = pass.candidates.offsets[p + 1];
+  if (first == last || !(pass.approach_omega2[p] > 0.0)) return 0.0;
+  const double step = approach_spring_step(pass.approach_omega2[p]);
+  const Side& own = sides_[pass.own];
+  const Side& target = sides_[pass.target];
+  const Vec3 x = point_at(own, p, in);
+  const TargetFacets facets = target_facets(target, target.depth, in);
+  const PartnerRules rules = border_rules(own, p);
+  const double travel = 2.0 * (1.0 + kSqrt3) * speed * step;
+  const double sense = settings_.sense == ContactSense::Negative ? -1.0 : 1.0;
+  double kink = 0.0;
+  std::optional<PointFrame> frame_now;  // the point's velocity and area, once needed
+  for (auto k = first; k < last; ++k) {
+    const std::int32_t f = pass.candidates.facets[k];
+    if (!target.active[f]) continue;
+    const FacetBand& band = target.bands[static_cast<std::size_t>(f)];
+    if (!band.usable) continue;
+    const PairReach r = pair_reach(facets, f, rules);
+    const double d = std::sqrt(box_distance2(band.lo, band.hi, x));
+    if (d - r.reach > travel) continue;
+    const double height = sense * dot(x - band.centre, band.normal) - r.gap;
+    const double slack = band_slack(band, x);
+    if (height + slack < 0.0) continue;  // at or behind the facet without touching it: beside it
+    if (!frame_now) frame_now = frame(own, p, in);
+    Vec3 v_facet;
+    for (const std::int32_t node : target.surface.facets[f])
+      v_facet += Vec3{in.vx[node], in.vy[node], in.vz[node]} * 0.25;
+    const double w = -sense * dot(frame_now->v - v_facet, band.normal);
+    if (!(w > 0.0) || height - slack > w * step) continue;
+    const double k_spring = spring(own, p, frame_now->area, target, f);
+    kink = std::max(kink, 0.125 * k_spring * w * w);
+  }
+  return kink;
 }
 
 }  // namespace abut

@@ -29,11 +29,6 @@ FacetBand facet_band(const QuadCorners& c) {
   return band;
 }
 
-namespace {
-
-// sigma of penetration_zone.hpp plus a margin: the narrow phase's gap and the height are rounded
-// differently (both from coordinates of the facet's magnitude), so a point that touches exactly
-// (a node on a matched mesh) stays with the narrow phase.
 double band_slack(const FacetBand& band, const Vec3& x) {
   constexpr double kRoundOff = 1e-9, kCoordinateRoundOff = 1e-13;
   const double rho = norm(x - band.centre) + band.radius;
@@ -41,8 +36,6 @@ double band_slack(const FacetBand& band, const Vec3& x) {
       std::abs(band.centre.x) + std::abs(band.centre.y) + std::abs(band.centre.z);
   return band.warp + rho * band.tilt + kRoundOff * rho + kCoordinateRoundOff * magnitude;
 }
-
-}  // namespace
 
 bool outside_penetration_zone(const FacetBand& band, const Vec3& x, double g, double below,
                               double reach) {

@@ -3,11 +3,15 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "abut/contact/interface.hpp"
 #include "abut/contact/quad.hpp"
 
 namespace abut {
+namespace {
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+}  // namespace
 
 void ContactInterface::scatter(const ContactInput& in, ContactForces& out, bool near_bound) {
   const WearRateFunction* wear_rate[2] = {&settings_.wear_rate1, &settings_.wear_rate2};
@@ -15,6 +19,8 @@ void ContactInterface::scatter(const ContactInput& in, ContactForces& out, bool 
   // ContactStats::approach_step: the points that touch, and those near a facet (update_near_bound)
   // where their bound holds throughout.
   double omega2_max = 0.0, approach_omega2 = near_bound ? near_omega2_ : 0.0;
+  double kink = 0.0;   // sum of (1/8) k v_n^2 (ContactStats::kink_step)
+  double power = 0.0;  // of the contact forces on the nodes
   // Serial, in point order: the sums do not depend on the thread count.
   for (Pass& pass : passes_) {
     const Side& own = sides_[pass.own];
@@ -22,6 +28,7 @@ void ContactInterface::scatter(const ContactInput& in, ContactForces& out, bool 
     const double w = pass.weight;
     for (const std::int32_t awake : pass.awake) {  // a quiet point has no partner
       const auto p = static_cast<std::size_t>(awake);
+      kink += w * pass.kink[p];
       if (pass.released[p] != 0.0) {  // springs that let go in this step (evaluate_point)
         stats_.released_energy += w * pass.released[p];
         pass.released[p] = 0.0;
@@ -57,12 +64,20 @@ void ContactInterface::scatter(const ContactInput& in, ContactForces& out, bool 
           visit(target.surface.facets[pass.mortar_facet[slot]], &pass.mortar_target[4 * slot]);
         }
       };
+      Vec3 v_rel;  // the velocity of the force's own side relative to the other (its power)
+      for (int a = 0; a < 4 && !in.vx.empty(); ++a) {
+        const std::int32_t i = own_nodes[a];
+        v_rel += Vec3{in.vx[i], in.vy[i], in.vz[i]} * spread_own[a];
+      }
       each_target([&](const std::array<std::int32_t, 4>& nodes, const double* weights) {
         for (int a = 0; a < 4; ++a) {
           out.add(nodes[a], force * -weights[a]);
           add_damping(nodes[a], damping * -weights[a]);
+          if (!in.vx.empty())
+            v_rel -= Vec3{in.vx[nodes[a]], in.vy[nodes[a]], in.vz[nodes[a]]} * weights[a];
         }
       });
+      power += dot(force, v_rel);
       if (pass.own == 0) stats_.force += force;
       if (pass.target == 0) stats_.force -= force;
       stats_.normal_force += w * pass.normal_force[p];
@@ -103,6 +118,23 @@ void ContactInterface::scatter(const ContactInput& in, ContactForces& out, bool 
     }
   }
   if (omega2_max > 0.0) stats_.stable_step = spring_step(omega2_max);
+  // The step a kink asked for holds while the springs hold a noticeable share of the energy: a
+  // step that changes under a loaded stiff spring changes its energy too (central differences
+  // conserve (1/2) k x^2 + (1/2) m v^(n-1/2) v^(n+1/2) at each constant step, a quantity that
+  // differs from step to step by about (1/8) m a^2 dt^2).
+  double kink_step =
+      kink > 0.0 && kink_scale_ > 0.0 ? std::sqrt(kKinkShare * kink_scale_ / kink) : kInfinity;
+  // So it does while they load. Unloading, it grows by no more than a step dt' - dt that changes
+  // the energy by kKinkShare / 20 of the energy in play: a step that grows under forces F changes
+  // it at once by about F . v (dt' - dt) / 2 (the kick's impulse over the mean of the two steps),
+  // first order in F, however small the spring energy is just after the touch or before the last
+  // point lets go.
+  if (stats_.elastic_energy > kKinkShare * kink_scale_ || stats_.elastic_energy > kink_elastic_)
+    kink_step = std::min(kink_step, kink_hold_);
+  else if (std::abs(power) > 0.0)
+    kink_step = std::min(kink_step, kink_hold_ + 0.1 * kKinkShare * kink_scale_ / std::abs(power));
+  stats_.kink_step = kink_hold_ = kink_step;
+  kink_elastic_ = stats_.elastic_energy;
   if (approach_omega2 > 0.0)
     stats_.approach_step = std::min(stats_.approach_step, approach_spring_step(approach_omega2));
 }

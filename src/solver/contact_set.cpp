@@ -671,12 +671,15 @@ void ContactSet::erode(std::span<const std::uint8_t> eroded) {
   for (ContactInterface& c : interfaces_) c.erode(eroded);
 }
 
-double ContactSet::stable_step(std::int64_t* limiting_contact) const {
+double ContactSet::stable_step(std::int64_t* limiting_contact, double* springs) const {
   double step = std::numeric_limits<double>::infinity();
+  if (springs) *springs = step;
   for (std::size_t c = 0; c < slots_.size(); ++c) {
     const ContactStats& stats =
         slots_[c].tool ? tools_[slots_[c].index].stats() : interfaces_[slots_[c].index].stats();
-    const double s = std::min(stats.stable_step, stats.approach_step);
+    const double bound = std::min(stats.stable_step, stats.approach_step);
+    if (springs) *springs = std::min(*springs, bound);
+    const double s = std::min(bound, stats.kink_step);
     if (s < step) {
       step = s;
       if (limiting_contact) *limiting_contact = reports_[c].id;

@@ -60,8 +60,9 @@ class ContactSet {
     else
       interfaces_[slots_[c].index].mark_secondary_nodes_in_contact(touched);
   }
-  // Smallest stable step of the contact springs and the interface that sets it (-1: none).
-  double stable_step(std::int64_t* limiting_contact) const;
+  // Smallest stable step of the contact springs and the interface that sets it (-1: none), with
+  // the kink's bound (ContactStats::kink_step); `springs`: the smallest without it.
+  double stable_step(std::int64_t* limiting_contact, double* springs = nullptr) const;
   // Element erosion (ContactInterface::erode): `eroded` per element, hexes then shells.
   void erode(std::span<const std::uint8_t> eroded);
   double elastic_and_damping_energy() const;  // "contact" column of energy.csv

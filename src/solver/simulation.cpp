@@ -98,22 +98,27 @@ void Simulation::Impl::compute_forces(double dt) {
   // Contact forces act at x^{n} with the latest velocities v^{n-1/2} (damping, friction).
   const auto contact_start = std::chrono::steady_clock::now();
   switch_contacts();
-  contacts->apply({x, y, z, vhx, vhy, vhz, t, dt, {}}, fx, fy, fz);  // conduction: advance_heat
+  // conduction: advance_heat
+  contacts->apply({x, y, z, vhx, vhy, vhz, t, dt, {}, energy_scale}, fx, fy, fz);
   release_at_impact();
   if (heat && contacts->thermal()) gather_contact_heat(dt);
   contact_seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_start).count();
   std::int64_t contact_id = -1;
-  const double contact_step = contacts->stable_step(&contact_id);
+  double spring_step = 0.0;
+  const double contact_step = contacts->stable_step(&contact_id, &spring_step);
   limiting_contact = -1;
+  limiting_kink = false;
   const double element_step = stable;
   if (contact_step < stable) {
     stable = contact_step;
     limiting_contact = contact_id;
+    limiting_kink = contact_step < spring_step;
   }
   if (std::isfinite(element_step)) {
     step_sum += stable;
     element_step_sum += element_step;
+    kink_step_sum += std::min(element_step, spring_step) - stable;
   }
   energy.contact = contacts->elastic_and_damping_energy();
   energy.friction = contacts->friction_energy();
@@ -606,8 +611,14 @@ double Simulation::contact_step_loss() const {
   const Impl& s = *impl_;
   return s.element_step_sum > 0.0 ? 1.0 - s.step_sum / s.element_step_sum : 0.0;
 }
+double Simulation::contact_kink_step_loss() const {
+  const Impl& s = *impl_;
+  return s.element_step_sum > 0.0 ? s.kink_step_sum / s.element_step_sum : 0.0;
+}
 std::string Simulation::Impl::limit_description() const {
-  if (limiting_contact >= 0) return "contact " + std::to_string(limiting_contact) + " springs";
+  if (limiting_contact >= 0)
+    return "contact " + std::to_string(limiting_contact) +
+           (limiting_kink ? " springs touching or letting go together" : " springs");
   if (limiting_shell_block >= 0)
     return "shells of part " + std::to_string(shell_blocks[limiting_shell_block].part_id());
   if (limiting_block < 0) return "dt_max of *TIME";

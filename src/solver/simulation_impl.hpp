@@ -76,9 +76,11 @@ struct Simulation::Impl {
   std::size_t eroded_elements = 0;           // as last reported to the contacts
   std::vector<std::uint8_t> element_eroded;  // per element, hexes then shells
   std::int64_t limiting_contact = -1;
+  bool limiting_kink = false;    // the contact's kink bound (ContactStats::kink_step) sets the step
   double contact_seconds = 0.0;  // wall time spent in contact (for the summary)
-  // Sums over the cycles of the stable step and of the step the elements alone would allow.
-  double step_sum = 0.0, element_step_sum = 0.0;
+  // Sums over the cycles of the stable step and of the step the elements alone would allow, and
+  // of the part of the step the contacts' kink bound took beyond their springs' bound.
+  double step_sum = 0.0, element_step_sum = 0.0, kink_step_sum = 0.0;
 
   std::vector<RigidBody> bodies;
   std::vector<PartInfo> parts;

@@ -38,6 +38,10 @@ struct ContactInput {
   double time = 0.0;
   double dt = 0.0;  // step over which friction, damping work and wear are integrated
   std::span<const double> temperature;  // nodal temperatures; empty: no heat exchange
+  // The energy the host's balance is measured against (its largest total so far), the scale of
+  // ContactStats::kink_step; with 0 (or less) the contact takes the kinetic energy of its surface
+  // nodes plus its springs' energy.
+  double energy_scale = 0.0;
 };
 
 // Nodal force arrays owned by the caller; the contact forces are added to them.
@@ -53,6 +57,10 @@ struct ContactForces {
     fz[node] += f.z;
   }
 };
+
+// The share of the energy in play that the penalty's kink may do in one step (ContactStats::
+// kink_step).
+inline constexpr double kKinkShare = 0.01;
 
 struct ContactStats {
   Vec3 force;                     // total contact force acting on the nodes of surface 1
@@ -86,9 +94,20 @@ struct ContactStats {
   // the search margin from every facet: they cannot touch before the next broad-phase build sees
   // them while no surface node moves more than a quarter of the margin in a step
   // (margin / (4 v_max)). At rest, with edge-to-edge contact, or while the caller's step (dt) is
-  // below half the bound, the bound holds for every point with a candidate. A caller's step is
-  // min(stable_step, approach_step).
+  // below half the bound, the bound holds for every point with a candidate.
   double approach_step = std::numeric_limits<double>::infinity();
+  // The penalty's kink: a spring that engages or lets go part way through a step does the work of
+  // the whole step, up to (1/8) k (v_n dt)^2 for a point meeting its facet at normal speed v_n
+  // (half a step's travel each side of the touch). Where every point of a face touches in the same
+  // step (a flat impact) these errors add up instead of averaging out, and at the springs' full
+  // bound they reach several percent of the impact's energy (issue 27). kink_step holds their sum
+  // over the points that may start or stop touching in the next step to kKinkShare of the energy
+  // in play (ContactInput::energy_scale, at least the largest kinetic energy of the surface nodes
+  // plus spring energy so far):
+  // dt = sqrt(kKinkShare E / sum (1/8) k v_n^2), held while the springs load or hold more than
+  // kKinkShare E (scatter.cpp; docs/contact.md). Scattered touches (folds of a crushed tube)
+  // hardly lower it. A caller's step is min(stable_step, approach_step, kink_step).
+  double kink_step = std::numeric_limits<double>::infinity();
   // Work done on the nodes by a moving analytic tool so far (tool_contact.hpp): over each step,
   // the mean of its forces at the step's two ends times the tool's displacement at the nodes.
   // 0 for contacts between meshed surfaces (their motion's work is the solver's).
@@ -302,6 +321,9 @@ class ContactInterface {
     std::vector<double> area, pressure, slip_speed, normal_force, tangential_force;
     std::vector<double> energy, slip_work, penetration, omega2, pair_gap;
     std::vector<double> released;  // spring energy the point let go of in this step
+    // (1/8) k v_n^2 when the point may start or stop touching in the next step (its kink may do
+    // that times dt^2 of work), else 0 (ContactStats::kink_step). Written for every awake point.
+    std::vector<double> kink;
     // S2S (mortar.hpp): how the point's force spreads, as fractions of it: over its own facet's
     // nodes (4 per point) and over the nodes of each facet of the other surface its cell covers
     // (kMaxOverlaps facets of 4 per point; mortar_count of them used). Empty for node points.
@@ -441,6 +463,12 @@ class ContactInterface {
   // `least`, the least such step so far.
   double approach_limit(const Pass& pass, std::size_t p, const ContactInput& in, double speed,
                         double least) const;
+  // (1/8) k w^2 of an open point that may touch a candidate facet in the next step, w its speed
+  // towards the facet, else 0 (open_points.cpp; ContactStats::kink_step).
+  double onset_kink(const Pass& pass, std::size_t p, const ContactInput& in, double speed) const;
+  // Whether the kink is bounded at all: a unilateral contact without an adhesive zone (the
+  // others' springs do not engage at a touch) while the surfaces move.
+  bool bounds_kinks() const;
   Vec3 point_at(const Side& own, std::size_t p, const ContactInput& in) const;
   // `near_bound`: the bound before touching holds for every point with a candidate (at rest, with
   // edge-to-edge contact); otherwise only for the points that touch (apply takes the others).
@@ -509,6 +537,11 @@ class ContactInterface {
   bool awake_current_ = false;  // the passes' awake lists hold since the last build
   // The largest approach_omega2 of the points with a candidate facet at the last build.
   double near_omega2_ = 0.0;
+  // The energy in play for ContactStats::kink_step: the largest kinetic energy of the surface
+  // nodes plus spring energy at any apply so far.
+  double kink_scale_ = 0.0;
+  double kink_hold_ = std::numeric_limits<double>::infinity();  // the kink_step of the last apply
+  double kink_elastic_ = 0.0;  // the spring energy of the last apply (ContactStats::kink_step)
   std::vector<double> x0_, y0_, z0_;  // initial coordinates (Igap 2 only)
   ContactStats stats_;
 };

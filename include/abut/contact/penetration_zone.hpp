@@ -46,6 +46,11 @@ inline double box_distance2(const Vec3& lo, const Vec3& hi, const Vec3& x) {
   return d2;
 }
 
+// sigma above plus a margin: the narrow phase's gap and the height are rounded differently (both
+// from coordinates of the facet's magnitude), so a point that touches exactly (a node on a
+// matched mesh) stays with the narrow phase.
+double band_slack(const FacetBand& band, const Vec3& x);
+
 // True when point x cannot penetrate the facet, with pair gap g, detection depth below and reach
 // as in pair_reach (narrow_phase.hpp).
 bool outside_penetration_zone(const FacetBand& band, const Vec3& x, double g, double below,

@@ -77,6 +77,9 @@ class Simulation {
   // How much the contact springs shortened the stable step over the cycles so far:
   // 1 - sum(dt) / sum(dt of the elements alone); 0 when contact never limited it.
   double contact_step_loss() const;
+  // The part of it that the contacts' kink bound took beyond their springs' stable step
+  // (ContactStats::kink_step: points touching or letting go together).
+  double contact_kink_step_loss() const;
   std::string time_step_limit() const;  // what limits the step now (e.g. "part 2 element 17")
 
   const Model& model() const;
