@@ -171,6 +171,7 @@ SolidBlock::SolidBlock(std::int64_t part_id, const MaterialParams& material,
   m.hourglass.assign(Impl::batched_size(n, 12), 0.0);
   m.forces.assign(24 * n, 0.0);
   m.internal_work.assign(n, 0.0);
+  m.bulk_pressure.assign(n, 0.0);
   if (const auto* metal = std::get_if<MetalParams>(&material)) {
     m.history.assign(n, {});
     m.fails_by_damage = metal->failure.active;
@@ -312,8 +313,8 @@ void SolidBlock::archive(StateArchive& a) {
   a.expect(static_cast<std::uint64_t>(m.hexes.size()), "the element count of a solid block");
   a.expect(static_cast<std::uint64_t>(kLanes),
            "the SIMD width of the build (the elements' state is kept in batches of that many)");
-  a.fixed(m.stress, m.viscous, m.hourglass, m.forces, m.internal_work, m.history, m.eroded,
-          m.element_internal, m.element_hourglass, m.geometric_strain, m.volume_ratio,
+  a.fixed(m.stress, m.viscous, m.hourglass, m.forces, m.internal_work, m.bulk_pressure, m.history,
+          m.eroded, m.element_internal, m.element_hourglass, m.geometric_strain, m.volume_ratio,
           m.hourglass_work, m.stable, m.failure, m.element_temperature, m.element_plastic_work,
           m.element_thermal_work);
   a.values(m.eroded_energy, m.eroded_count, m.internal_energy, m.hourglass_energy,

@@ -74,6 +74,9 @@ struct SolidBlock::Impl {
   std::vector<double> hourglass;      // generalized hourglass forces, 12 per element, batched
   std::vector<double> forces;         // 24 per element
   std::vector<double> internal_work;  // per-element increments of the last step
+  // The bulk viscosity's pressure q of the last update, 1 per element: its work over a step is
+  // booked with the mean of q at the step's two ends (solid_block_kernel.cpp).
+  std::vector<double> bulk_pressure;
   std::vector<PointHistory> history;  // plastic strain and damage (metals)
   bool fails_by_damage = false;       // a metal with a damage property: erodes at D >= 1
   ErosionCriteria erosion;

@@ -49,6 +49,7 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
               report.wall_seconds > 0 ? sim.contact_seconds() / report.wall_seconds : 0.0);
   json.member("initial_time_step", sim.initial_time_step());
   json.member("time_step_lost_to_contact", sim.contact_step_loss());
+  json.member("time_step_lost_to_contact_kink", sim.contact_kink_step_loss());
   json.member("initial_time_step_limited_by", initial_limit);
   json.member("final_time_step_limited_by", sim.time_step_limit());
   const Energies e = sim.energies();

@@ -107,6 +107,9 @@ struct Simulation::Impl {
   // oscillation. energy.kinetic, (1/2) m |v^n|^2, differs from it by O(dt^2) and is never
   // negative, which this product is where a velocity turns within a step.
   double conserved_kinetic = 0.0;
+  // What the changes of the step so far took from that product without a change in the motion,
+  // (1/8) sum m |a^n|^2 (h_+^2 - h_-^2) over the cycles before (kick()).
+  double step_change_kinetic = 0.0;
   // energy.total() with the conserved kinetic energy: what the energy balance compares.
   double conserved_total() const {
     Energies e = energy;

@@ -18,10 +18,10 @@ void Simulation::archive(StateArchive& a) {
           s.rotary_inertia, s.inverse_rotary_inertia);
   // Time, step and what limits it, energies, the last good state.
   a.values(s.t, s.n, s.dt_prev, s.dt_next, s.stable, s.dt_initial, s.limiting_block,
-           s.limiting_shell_block, s.limiting_contact, s.energy, s.conserved_kinetic, s.total0,
-           s.energy_scale, s.external_work_done, s.good_x, s.good_y, s.good_z, s.good_t,
-           s.block_steps, s.shell_steps, s.step_sum, s.element_step_sum, s.kink_step_sum,
-           s.limiting_kink);
+           s.limiting_shell_block, s.limiting_contact, s.energy, s.conserved_kinetic,
+           s.step_change_kinetic, s.total0, s.energy_scale, s.external_work_done, s.good_x,
+           s.good_y, s.good_z, s.good_t, s.block_steps, s.shell_steps, s.step_sum,
+           s.element_step_sum, s.kink_step_sum, s.limiting_kink);
   a.values(s.blocks, s.shell_blocks, s.bodies);
   a.values(s.eroded_elements, s.element_eroded);  // element_eroded: filled at the first erosion
   s.contacts->archive(a);
