@@ -32,15 +32,17 @@ double ContactInterface::cell_gap(const Side& own, std::size_t p, const Side& ta
          h.pair_gap;
 }
 
-// Shells keep the point-wise rule for now: their contact surfaces lie a gap off the facets and
-// round their inner edges (narrow_phase.hpp), which a plane overlap does not see (a crushed tube's
-// folds lost 9% of the energy balance with it).
+// A shell's facets keep the point-wise rule as partners: their contact surfaces lie a gap off the
+// facets and round their inner edges (narrow_phase.hpp), which a plane overlap does not see (a
+// crushed tube's folds lost 9% of the energy balance with it). A shell's own points meet a
+// solid's facets by cell like any other (their gap is the pair's, h.pair_gap): a plate's cells
+// straddling a block's border saw 90-115% of the footprint point-wise (issue 27).
 bool ContactInterface::meet_by_cell(const Pass& pass, std::size_t p, const PointFrame& f,
                                     const ContactInput& in, Partner& h, CellOverlap& o) const {
   const Side& own = sides_[pass.own];
   const Side& target = sides_[pass.target];
   o = CellOverlap{};
-  if (own.surface.twin[own.point_facet[p]] >= 0) return false;
+  if (!target.solid_facets) return false;  // shells only: nothing to meet by cell
   auto faces = [&](const Partner& g) {
     return -dot(f.normal, g.normal) >= sharp_cos_ && target.surface.twin[g.facet] < 0;
   };

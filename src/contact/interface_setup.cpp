@@ -88,6 +88,9 @@ ContactInterface::ContactInterface(ContactSettings settings, ContactSurface surf
   sides_.resize(self ? 1 : 2);
   sides_[0].surface = std::move(surface1);
   if (!self) sides_[1].surface = std::move(surface2);
+  for (Side& side : sides_)
+    side.solid_facets = std::any_of(side.surface.twin.begin(), side.surface.twin.end(),
+                                    [](std::int32_t twin) { return twin < 0; });
   build_parts();
   build_sides(initial, secondary_nodes);
   build_passes();
