@@ -98,7 +98,8 @@ void Simulation::Impl::compute_forces(double dt) {
   // Contact forces act at x^{n} with the latest velocities v^{n-1/2} (damping, friction).
   const auto contact_start = std::chrono::steady_clock::now();
   switch_contacts();
-  // conduction: advance_heat
+  // No temperatures: the contacts' conduction is advance_heat's. The balance's energy scale sets
+  // the contacts' kink bound (ContactStats::kink_step).
   contacts->apply({x, y, z, vhx, vhy, vhz, t, dt, {}, energy_scale}, fx, fy, fz);
   release_at_impact();
   if (heat && contacts->thermal()) gather_contact_heat(dt);

@@ -540,8 +540,8 @@ class ContactInterface {
   bool awake_current_ = false;  // the passes' awake lists hold since the last build
   // The largest approach_omega2 of the points with a candidate facet at the last build.
   double near_omega2_ = 0.0;
-  // The energy in play for ContactStats::kink_step: the largest kinetic energy of the surface
-  // nodes plus spring energy at any apply so far.
+  // The energy in play for ContactStats::kink_step: the largest of the host's energy scale and
+  // the kinetic energy of the surface nodes plus spring energy at any apply so far.
   double kink_scale_ = 0.0;
   double kink_hold_ = std::numeric_limits<double>::infinity();  // the kink_step of the last apply
   double kink_elastic_ = 0.0;  // the spring energy of the last apply (ContactStats::kink_step)
