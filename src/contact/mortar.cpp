@@ -197,9 +197,8 @@ CellOverlap overlap_cell(const QuadCorners& own, const CellBounds& cell, const V
 CellOverlap cover_cell(const std::array<std::int32_t, 4>& own, const CellBounds& cell,
                        const Vec3& normal, std::int32_t partner,
                        std::span<const std::int32_t> candidates, const CoverFacets& other) {
-  constexpr std::size_t kMaxFacets = 64;
-  std::array<std::int32_t, kMaxFacets> ids{};
-  std::array<QuadCorners, kMaxFacets> corners{};
+  std::array<std::int32_t, kMaxCoverFacets> ids{};
+  std::array<QuadCorners, kMaxCoverFacets> corners{};
   std::size_t count = 0;
   auto touches_own = [&own](const std::array<std::int32_t, 4>& nodes) {
     for (const std::int32_t i : nodes)
@@ -208,7 +207,7 @@ CellOverlap cover_cell(const std::array<std::int32_t, 4>& own, const CellBounds&
   };
   auto add = [&](std::int32_t g) {
     const auto f = static_cast<std::size_t>(g);
-    if (count == kMaxFacets || (!other.active.empty() && !other.active[f]) ||
+    if (count == kMaxCoverFacets || (!other.active.empty() && !other.active[f]) ||
         (!other.twin.empty() && other.twin[f] >= 0) || touches_own(other.facets[f]))
       return;
     const QuadCorners c = quad_corners(other.facets[f], other.x, other.y, other.z);

@@ -19,17 +19,17 @@ bool share_a_node(const std::array<std::int32_t, 4>& a, const std::array<std::in
   return false;
 }
 
-// Igap 2: did a node of the facet lie within `distance` of the point at the start?
+}  // namespace
+
 bool initially_within(const PartnerRules& rules, const std::array<std::int32_t, 4>& nodes,
                       double distance) {
+  if (rules.x0.empty()) return false;
   for (const std::int32_t i : nodes) {
     const Vec3 d = Vec3{rules.x0[i], rules.y0[i], rules.z0[i]} - rules.initial_point;
     if (dot(d, d) < distance * distance) return true;
   }
   return false;
 }
-
-}  // namespace
 
 FacetVerdict judge_facet(const TargetFacets& target, std::int32_t f, const PairReach& pair,
                          const std::array<std::int32_t, 4>& own_nodes, const Vec3& x_p,
@@ -38,7 +38,7 @@ FacetVerdict judge_facet(const TargetFacets& target, std::int32_t f, const PairR
   const auto& nodes = target.nodes[f];
   const double g = pair.gap;
   if (share_a_node(own_nodes, nodes)) return v;
-  if (!rules.x0.empty() && initially_within(rules, nodes, 2.0 * g)) return v;
+  if (initially_within(rules, nodes, 2.0 * g)) return v;
   const bool banded = !target.bands.empty();
   const bool has_normal = n_p.x != 0.0 || n_p.y != 0.0 || n_p.z != 0.0;
   // The far side of a shell, decided before the projection where the band shows it

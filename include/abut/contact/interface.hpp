@@ -255,6 +255,7 @@ class ContactInterface {
     // Some facet is a solid's face, which the other side's cells may meet (cell_cover.cpp); from
     // the surface as given, not archived.
     bool solid_facets = false;
+    bool shell_facets = false;  // some facet is a shell's (cover() filters them)
     // Derived, not archived (open_points.cpp): the facets that are some point's candidate at the
     // last build, and their bands (boxes, mean planes) of this step, indexed by facet.
     std::vector<std::int32_t> near_facets;

@@ -65,6 +65,9 @@ struct CellOverlap {
 CellOverlap overlap_cell(const QuadCorners& own, const CellBounds& cell, const Vec3& normal,
                          std::span<const std::int32_t> ids, std::span<const QuadCorners> corners);
 
+// The most facets one cell is clipped against (further candidates are passed over).
+inline constexpr std::size_t kMaxCoverFacets = 64;
+
 // A facet turned further than about 84 degrees from a cell's normal is a wall to it, not cover.
 inline constexpr double kCoverMinCos = 0.1;
 

@@ -99,6 +99,11 @@ inline PairReach pair_reach(const TargetFacets& target, std::int32_t f, const Pa
   return r;
 }
 
+// Igap 2: whether a node of `nodes` lay within `distance` of the point at the start (false where
+// the rules hold no initial coordinates).
+bool initially_within(const PartnerRules& rules, const std::array<std::int32_t, 4>& nodes,
+                      double distance);
+
 // Last step's partner of a point and where the point lay on it.
 struct PartnerHint {
   std::int32_t facet = -1;
