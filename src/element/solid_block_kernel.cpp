@@ -230,9 +230,14 @@ void SolidBlock::Impl::batch(std::size_t first, const NodalState& s, double dt, 
         return (terms * index[l] + static_cast<std::size_t>(k)) * 6 +
                static_cast<std::size_t>(comp);
       };
+      // Filled through a plain array: g++ 12 at -march=native took a lane-wise fill of h for a
+      // partial one (-Wmaybe-uninitialized).
       Lanes h[6];
-      for (int comp = 0; comp < 6; ++comp)
-        for (int l = 0; l < kLanes; ++l) h[comp][l] = viscous[at(l, comp)];
+      for (int comp = 0; comp < 6; ++comp) {
+        double term[kLanes];
+        for (int l = 0; l < kLanes; ++l) term[l] = viscous[at(l, comp)];
+        std::memcpy(&h[comp], term, sizeof(Lanes));
+      }
       if (dt > 0.0) {
         Lanes hr[6];
         rotate_sym(rotation, h, hr);
