@@ -15,15 +15,6 @@
 
 namespace abut {
 
-// The thermal contact of a *CONTACT (laws/thermal.hpp): the conductance of fid_thermal (h of pres
-// and gap; a *CURVE: of pres) or of *CONTACT_THERMAL, and the friction heat split of fric_heat.
-ThermalContactSettings thermal_of(const Model& model, const ContactSpec& spec);
-
-// The tangential law of a *CONTACT (laws/tangential.hpp), for explicit and static steps:
-// *CONTACT_FRICTION, or seed 000's Coulomb mu (constant, or a *FUNCTION of the model's `table`
-// evaluated with term = `term`).
-TangentialLaw tangential_law_of(const ContactSpec& spec, const FunctionTable* table, double term);
-
 // Surface 1 of a contact or tie: its faces, and for a node set (node-to-surface) its nodes, the
 // faces being the contact faces (exterior faces of hexes, shells) that hold at least one of them
 // (InputError at the set if a node is on none). `exposed_faces`: as contact_faces.

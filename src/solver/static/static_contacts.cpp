@@ -8,6 +8,7 @@
 #include "abut/core/error.hpp"
 #include "abut/solver/contact_surfaces.hpp"
 #include "solver/contact_set.hpp"
+#include "solver/contact_settings_of.hpp"
 
 namespace abut::detail {
 

@@ -1,7 +1,7 @@
 #include "abut/solver/static_heat.hpp"
 
 #include "abut/core/error.hpp"
-#include "solver/contact_set.hpp"
+#include "solver/contact_settings_of.hpp"
 #include "steady_heat_balance.hpp"
 
 namespace abut {
