@@ -263,8 +263,10 @@ TEST(NonMatchingContact, TrescaStoppingDistanceIsExactOnAnyMeshAlignment) {
 // 10 um into the plane (0.01 m/s for 1 ms), then pulled off at 0.01 m/s, so that its face crosses
 // the adhesive zone (Gap / 2 = 0.1 mm) in 10 ms; no contact damping (it would add to the pull),
 // dt_max = 1e-5 s (the opening grows by 1e-3 of the zone per step).
-std::string adhesion_deck(bool one_way) {
-  return block_and_plane("0.014, 0.9, 0.0, 1.0e-5") + R"(*BC_MOTION
+std::string adhesion_deck(bool one_way, Plane plane) {
+  const std::string time = "0.014, 0.9, 0.0, 1.0e-5";
+  return (plane == Plane::Solid ? block_and_plane(time) : sheet_and_shell_plane(time)) +
+         R"(*BC_MOTION
 P, 2, XYZ, XYZ
 *CURVE
 3
@@ -286,21 +288,25 @@ P, 1, P, 2, , )" +
 TEST(NonMatchingContact, AdhesivePullOffIsSigMaxTimesTrueArea) {
   std::mt19937 random(2706);
   const double expected = 1.0e4 * kArea;
-  for (const bool one_way : {false, true})
-    for (int trial = 0; trial < 2; ++trial) {
-      const Placement at = random_placement(random);
-      const Model model = placed(adhesion_deck(one_way), at.angle, at.dx, at.dy);
-      Simulation sim(model);
-      double largest_pull = 0.0;
-      verification::run_to(sim, sim.end_time(), [&](const Simulation& s) {
-        largest_pull = std::max(largest_pull, -s.contact_reports()[0].stats.force.z);
-      });
-      std::cout << (one_way ? "one-way" : "symmetric") << ", turned " << at.angle << " rad, moved "
-                << at.dx << ", " << at.dy << ": largest pull " << largest_pull
-                << " N, SigMaxAdh A = " << expected << " N, error "
-                << 100.0 * (largest_pull - expected) / expected << "%\n";
-      EXPECT_NEAR(largest_pull, expected, 0.01 * expected);
-    }
+  // The block on the solid plane, two placements each, and the shell sheet on the shell plate
+  // (issue 27), one placement each.
+  for (const Plane plane : {Plane::Solid, Plane::ShellUnderSheet})
+    for (const bool one_way : {false, true})
+      for (int trial = 0; trial < (plane == Plane::Solid ? 2 : 1); ++trial) {
+        const Placement at = random_placement(random);
+        const Model model = placed(adhesion_deck(one_way, plane), at.angle, at.dx, at.dy);
+        Simulation sim(model);
+        double largest_pull = 0.0;
+        verification::run_to(sim, sim.end_time(), [&](const Simulation& s) {
+          largest_pull = std::max(largest_pull, -s.contact_reports()[0].stats.force.z);
+        });
+        std::cout << (plane == Plane::Solid ? "block, " : "shell sheet, ")
+                  << (one_way ? "one-way" : "symmetric") << ", turned " << at.angle
+                  << " rad, moved " << at.dx << ", " << at.dy << ": largest pull " << largest_pull
+                  << " N, SigMaxAdh A = " << expected << " N, error "
+                  << 100.0 * (largest_pull - expected) / expected << "%\n";
+        EXPECT_NEAR(largest_pull, expected, 0.01 * expected);
+      }
 }
 
 }  // namespace
