@@ -88,12 +88,9 @@ ContactInterface::ContactInterface(ContactSettings settings, ContactSurface surf
   sides_.resize(self ? 1 : 2);
   sides_[0].surface = std::move(surface1);
   if (!self) sides_[1].surface = std::move(surface2);
-  for (Side& side : sides_) {
-    const auto& twin = side.surface.twin;
-    side.solid_facets = std::any_of(twin.begin(), twin.end(), [](std::int32_t t) { return t < 0; });
-    side.shell_facets =
-        std::any_of(twin.begin(), twin.end(), [](std::int32_t t) { return t >= 0; });
-  }
+  for (Side& side : sides_)
+    side.shell_facets = std::any_of(side.surface.twin.begin(), side.surface.twin.end(),
+                                    [](std::int32_t twin) { return twin >= 0; });
   build_parts();
   build_sides(initial, secondary_nodes);
   build_passes();

@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <iostream>
 #include <random>
 #include <sstream>
@@ -168,23 +169,30 @@ Placement random_placement(std::mt19937& random) {
   return {0.6 * (fraction(random) - 0.5), fraction(random) * 0.5 / 13, fraction(random) * 0.2 / 7};
 }
 
-TEST(NonMatchingContact, RestingBlockSinksWeightOverPenaltyTimesTrueArea) {
-  std::mt19937 random(2704);
+// Rests the block (or sheet) on `plane` at two random placements (fixed `seed`), symmetric and
+// one-way, and expects each to sink F / (pfac A) within 1%.
+void expect_sinks_weight_over_penalty_times_true_area(std::uint32_t seed, Plane plane,
+                                                      const char* what) {
+  std::mt19937 random(seed);
   const double expected = kMass * kG / (kPfac * kArea);
   for (const bool one_way : {false, true})
     for (int trial = 0; trial < 2; ++trial) {
       const Placement at = random_placement(random);
-      const Model model = placed(deck(0.04, kG, 0.0, one_way, ""), at.angle, at.dx, at.dy);
+      const Model model = placed(deck(0.04, kG, 0.0, one_way, "", plane), at.angle, at.dx, at.dy);
       Simulation sim(model);
       const double z0 = sim.part_states()[0].centre_of_mass.z;
       verification::run_to(sim, sim.end_time());
       const double sink = z0 - sim.part_states()[0].centre_of_mass.z;
-      std::cout << (one_way ? "one-way" : "symmetric") << ", turned " << at.angle << " rad, moved "
-                << at.dx << ", " << at.dy << ": sinks " << sink << " m, F / (pfac A) = " << expected
-                << " m, error " << 100.0 * (sink - expected) / expected << "%, " << sim.cycle()
-                << " cycles\n";
-      EXPECT_NEAR(sink, expected, 0.01 * expected);
+      std::cout << what << ", " << (one_way ? "one-way" : "symmetric") << ", turned " << at.angle
+                << " rad, moved " << at.dx << ", " << at.dy << ": sinks " << sink
+                << " m, F / (pfac A) = " << expected << " m, error "
+                << 100.0 * (sink - expected) / expected << "%, " << sim.cycle() << " cycles\n";
+      EXPECT_NEAR(sink, expected, 0.01 * expected) << what << (one_way ? ", one-way" : "");
     }
+}
+
+TEST(NonMatchingContact, RestingBlockSinksWeightOverPenaltyTimesTrueArea) {
+  expect_sinks_weight_over_penalty_times_true_area(2704, Plane::Solid, "block");
 }
 
 // The plane as a shell plate (issue 27: the plate's points, on a shell, integrated point-wise
@@ -192,22 +200,7 @@ TEST(NonMatchingContact, RestingBlockSinksWeightOverPenaltyTimesTrueArea) {
 // shells of 7 to 13 per 0.2 m). The block's points lie inside the plate's border: each of its
 // cells is wholly over the plate.
 TEST(NonMatchingContact, BlockOnAShellPlaneSinksWeightOverPenaltyTimesTrueArea) {
-  std::mt19937 random(2712);
-  const double expected = kMass * kG / (kPfac * kArea);
-  for (const bool one_way : {false, true})
-    for (int trial = 0; trial < 2; ++trial) {
-      const Placement at = random_placement(random);
-      const Model model =
-          placed(deck(0.04, kG, 0.0, one_way, "", Plane::Shell), at.angle, at.dx, at.dy);
-      Simulation sim(model);
-      const double z0 = sim.part_states()[0].centre_of_mass.z;
-      verification::run_to(sim, sim.end_time());
-      const double sink = z0 - sim.part_states()[0].centre_of_mass.z;
-      std::cout << (one_way ? "one-way" : "symmetric") << " on shells, turned " << at.angle
-                << " rad, moved " << at.dx << ", " << at.dy << ": sinks " << sink << " m, error "
-                << 100.0 * (sink - expected) / expected << "%\n";
-      EXPECT_NEAR(sink, expected, 0.01 * expected);
-    }
+  expect_sinks_weight_over_penalty_times_true_area(2712, Plane::Shell, "block on shells");
 }
 
 // A shell sheet on the shell plate: in symmetric contact the plate's cells straddling the sheet's
@@ -215,22 +208,7 @@ TEST(NonMatchingContact, BlockOnAShellPlaneSinksWeightOverPenaltyTimesTrueArea) 
 // point-wise, -2.2% and -0.8% before 2026-12-03; the cells now meet a shell's facets by cell
 // where they reach its free border, cell_cover.cpp).
 TEST(NonMatchingContact, ShellSheetOnAShellPlaneSinksWeightOverPenaltyTimesTrueArea) {
-  std::mt19937 random(2713);
-  const double expected = kMass * kG / (kPfac * kArea);
-  for (const bool one_way : {false, true})
-    for (int trial = 0; trial < 2; ++trial) {
-      const Placement at = random_placement(random);
-      const Model model =
-          placed(deck(0.04, kG, 0.0, one_way, "", Plane::ShellUnderSheet), at.angle, at.dx, at.dy);
-      Simulation sim(model);
-      const double z0 = sim.part_states()[0].centre_of_mass.z;
-      verification::run_to(sim, sim.end_time());
-      const double sink = z0 - sim.part_states()[0].centre_of_mass.z;
-      std::cout << (one_way ? "one-way" : "symmetric") << " sheet on shells, turned " << at.angle
-                << " rad, moved " << at.dx << ", " << at.dy << ": sinks " << sink << " m, error "
-                << 100.0 * (sink - expected) / expected << "%\n";
-      EXPECT_NEAR(sink, expected, 0.01 * expected);
-    }
+  expect_sinks_weight_over_penalty_times_true_area(2713, Plane::ShellUnderSheet, "sheet on shells");
 }
 
 // Tresca: m_s = 1, m_d = 0.8, k = 1000 Pa: tau A = 8 N stops the block from 1 m/s after 0.0975 m.

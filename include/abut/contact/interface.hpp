@@ -252,10 +252,9 @@ class ContactInterface {
     double max_point_depth = 0.0;
     double max_km = 0.0;    // stiffest main segment (stable-step bound)
     double max_pfac = 0.0;  // stiffest facet penalty (stable-step bound)
-    // Some facet is a solid's face, which the other side's cells may meet (cell_cover.cpp); from
-    // the surface as given, not archived.
-    bool solid_facets = false;
-    bool shell_facets = false;  // some facet is a shell's (cover() filters them)
+    // Some facet is a shell's, whose facets the other side's cells meet by cell only near its
+    // free border (cell_cover.cpp); from the surface as given, not archived.
+    bool shell_facets = false;
     // Derived, not archived (open_points.cpp): the facets that are some point's candidate at the
     // last build, and their bands (boxes, mean planes) of this step, indexed by facet.
     std::vector<std::int32_t> near_facets;
