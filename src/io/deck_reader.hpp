@@ -103,7 +103,7 @@ struct PendingPartShell {
 // *PART_SOLID, applied once every *PART is known.
 struct PendingPartSolid {
   std::int64_t part = 0;
-  Part::SolidIntegration integration = Part::SolidIntegration::OnePoint;
+  Part::SolidIntegration integration = Part::SolidIntegration::Reduced;
   SourceLocation where;              // the pid field
   SourceLocation integration_where;  // the integration field
 };

@@ -94,9 +94,9 @@ void read_part_solid(DeckReader& d, Block& b) {
     s.where = r.where(0);
     s.integration_where = r.where(1);
     d.claim_id("*PART_SOLID of part", s.part, s.where);
-    s.integration = word_choice(r, 1, Part::SolidIntegration::OnePoint,
-                                {{"REDUCED", Part::SolidIntegration::OnePoint},
-                                 {"1", Part::SolidIntegration::OnePoint},
+    s.integration = word_choice(r, 1, Part::SolidIntegration::Reduced,
+                                {{"REDUCED", Part::SolidIntegration::Reduced},
+                                 {"1", Part::SolidIntegration::Reduced},
                                  {"FULL", Part::SolidIntegration::Full},
                                  {"8", Part::SolidIntegration::Full}},
                                 "REDUCED (or 1: one point) or FULL (or 8: 2 x 2 x 2 points)");

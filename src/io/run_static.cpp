@@ -38,15 +38,15 @@ namespace fs = std::filesystem;
 // Thrown from the increment callback to leave StaticSolver::run when a stop is requested.
 struct StopRequested {};
 
-// One ParaView state: displacement and nodal force (loads and reactions) at the nodes; per hex
-// the mean over its Gauss points of the stress tensor and of the von Mises stress, the largest
-// equivalent plastic strain of its points, and its strain energy.
-// With thermal properties also the steady temperature field of the state and the heat flowing
-// into each node by conduction (static_heat.hpp).
+// One ParaView state: displacement and nodal force (loads and reactions) at the nodes; per solid
+// element the mean over its integration points of the stress tensor and of the von Mises stress,
+// the largest equivalent plastic strain of its points, and its strain energy. With thermal
+// properties also the steady temperature field of the state and the heat flowing into each node by
+// conduction (static_heat.hpp).
 void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
                  const StaticSolver& solver, double time, const StaticHeat& heat) {
   const Mesh& mesh = model.mesh;
-  const std::size_t n = mesh.nodes.size(), nh = mesh.hex_count();
+  const std::size_t n = mesh.nodes.size(), nh = mesh.solid_count();
   std::vector<double> x(n), y(n), z(n), part(nh), stress(6 * nh, 0.0), mises(nh, 0.0),
       plastic(nh, 0.0);
   const auto u = solver.displacement();
@@ -57,16 +57,17 @@ void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
   }
   const auto s = solver.stress();
   for (std::size_t h = 0; h < nh; ++h) {
-    part[h] = static_cast<double>(mesh.hex_part[h]);
-    for (int p = 0; p < 8; ++p)
-      plastic[h] = std::max(plastic[h], solver.plastic_strain()[8 * h + p]);
-    for (int p = 0; p < 8; ++p) {
-      const double* v = &s[48 * h + 6 * p];
-      for (int k = 0; k < 6; ++k) stress[6 * h + k] += v[k] / 8.0;
+    part[h] = static_cast<double>(mesh.solid(h).part);
+    const int points = solver.integration_points(h);
+    for (int p = 0; p < points; ++p) {
+      const std::size_t q = solver.first_point(h) + static_cast<std::size_t>(p);
+      plastic[h] = std::max(plastic[h], solver.plastic_strain()[q]);
+      const double* v = &s[6 * q];
+      for (int k = 0; k < 6; ++k) stress[6 * h + k] += v[k] / points;
       const double dxy = v[0] - v[1], dyz = v[1] - v[2], dzx = v[2] - v[0];
       mises[h] += std::sqrt(0.5 * (dxy * dxy + dyz * dyz + dzx * dzx) +
                             3.0 * (v[3] * v[3] + v[4] * v[4] + v[5] * v[5])) /
-                  8.0;
+                  points;
     }
   }
   std::vector<double> energy(solver.element_energy().begin(), solver.element_energy().end());
@@ -81,7 +82,7 @@ void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
                                      {"plastic_strain", 1, plastic},
                                      {"strain_energy", 1, energy}};
   const std::string name = fmt::format("states/state_{:04d}.vtu", series.size());
-  write_vtu(dir / name, {x, y, z, mesh.hexes, mesh.shells}, points, cells);
+  write_vtu(dir / name, {x, y, z, mesh.hexes, mesh.shells, mesh.cells}, points, cells);
   series.add(time, name);
 }
 
@@ -144,8 +145,8 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
   StaticHeat heat(model);  // input errors before the output directory is touched
   const OutputDirectory output(dir);
   fs::create_directories(dir / "states");
-  log << fmt::format("abut: {} nodes, {} hexahedra, {} parts, {} contacts; {} static steps\n",
-                     model.mesh.nodes.size(), model.mesh.hex_count(), model.parts.size(),
+  log << fmt::format("abut: {} nodes, {} solid elements, {} parts, {} contacts; {} static steps\n",
+                     model.mesh.nodes.size(), model.mesh.solid_count(), model.parts.size(),
                      model.contacts.size(), model.static_steps.size());
   log << "abut: writing results to " << dir.string() << "\n" << std::flush;
   if (heat.active())
@@ -221,7 +222,7 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
   json.member("end_time", report.end_time).member("wall_seconds", report.wall_seconds);
   json.member("threads", threads);
   json.member("nodes", static_cast<std::int64_t>(model.mesh.nodes.size()));
-  json.member("elements", static_cast<std::int64_t>(model.mesh.hex_count()));
+  json.member("elements", static_cast<std::int64_t>(model.mesh.solid_count()));
   json.member("equations", st.equations).member("increments", st.increments);
   json.member("iterations", st.iterations).member("cutbacks", st.cutbacks);
   json.member("assembly_seconds", st.assembly_seconds).member("solve_seconds", st.solve_seconds);

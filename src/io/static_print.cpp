@@ -81,16 +81,20 @@ void print_nodes(std::ostream& out, const Model& model, const PrintRequest& r,
 
 void print_elements(std::ostream& out, const Model& model, const PrintRequest& r,
                     const StaticSolver& solver, double t) {
-  const std::vector<std::int32_t> hexes = members_or_all(r, model.mesh.hex_count());
+  const std::vector<std::int32_t> elements = members_or_all(r, model.mesh.solid_count());
+  const auto id = [&](std::int32_t e) { return model.mesh.solid(static_cast<std::size_t>(e)).id; };
+  const auto point = [&](std::int32_t e, int p) {
+    return solver.first_point(static_cast<std::size_t>(e)) + static_cast<std::size_t>(p);
+  };
   // Our Voigt order xx yy zz xy yz zx; CalculiX prints xx yy zz xy xz yz.
   static constexpr int kOrder[6] = {0, 1, 2, 3, 5, 4};
   auto tensor_block = [&](const char* title, std::span<const double> v, double shear) {
     out << fmt::format("\n {} for set {} and time {}\n\n", title, set_text(r), time_text(t));
-    for (const std::int32_t h : hexes)
+    for (const std::int32_t h : elements)
       for (int p = 0; p < solver.integration_points(static_cast<std::size_t>(h)); ++p) {
-        out << fmt::format("{:10d}{:4d}", model.mesh.hex_id[h], p + 1);
+        out << fmt::format("{:10d}{:4d}", id(h), p + 1);
         for (int k = 0; k < 6; ++k)
-          out << fmt::format("{:14.6E}", v[48 * h + 6 * p + kOrder[k]] * (k >= 3 ? shear : 1.0));
+          out << fmt::format("{:14.6E}", v[6 * point(h, p) + kOrder[k]] * (k >= 3 ? shear : 1.0));
         out << "\n";
       }
   };
@@ -106,10 +110,9 @@ void print_elements(std::ostream& out, const Model& model, const PrintRequest& r
   // "for").
   auto point_block = [&](const char* title, std::span<const double> v) {
     out << fmt::format("\n {}set {} and time {}\n\n", title, set_text(r), time_text(t));
-    for (const std::int32_t h : hexes)
+    for (const std::int32_t h : elements)
       for (int p = 0; p < solver.integration_points(static_cast<std::size_t>(h)); ++p)
-        out << fmt::format("{:10d}{:4d}{:14.6E}\n", model.mesh.hex_id[h], p + 1,
-                           v[8 * static_cast<std::size_t>(h) + p]);
+        out << fmt::format("{:10d}{:4d}{:14.6E}\n", id(h), p + 1, v[point(h, p)]);
   };
   if (wants(r, "ENER") && !r.totals_only)
     point_block("internal energy density (elem, integ.pnt.,energy) for ", solver.energy_density());
@@ -117,12 +120,12 @@ void print_elements(std::ostream& out, const Model& model, const PrintRequest& r
     point_block("equivalent plastic strain (elem, integ.pnt.,pe)for ", solver.plastic_strain());
   if (wants(r, "EVOL")) {
     double total = 0.0;
-    for (const std::int32_t h : hexes) total += solver.element_volume()[h];
+    for (const std::int32_t h : elements) total += solver.element_volume()[h];
     if (!r.totals_only) {
       out << fmt::format("\n volume (element, volume) for set {} and time {}\n\n", set_text(r),
                          time_text(t));
-      for (const std::int32_t h : hexes)
-        out << fmt::format("{:10d}{:14.6E}\n", model.mesh.hex_id[h], solver.element_volume()[h]);
+      for (const std::int32_t h : elements)
+        out << fmt::format("{:10d}{:14.6E}\n", id(h), solver.element_volume()[h]);
     }
     if (r.totals || r.totals_only)
       out << fmt::format("\n total volume for set {} and time {}\n\n{:20.6E}\n", set_text(r),
@@ -130,12 +133,12 @@ void print_elements(std::ostream& out, const Model& model, const PrintRequest& r
   }
   if (wants(r, "ELSE")) {
     double total = 0.0;
-    for (const std::int32_t h : hexes) total += solver.element_energy()[h];
+    for (const std::int32_t h : elements) total += solver.element_energy()[h];
     if (!r.totals_only) {
       out << fmt::format("\n internal energy (element, energy) for set {} and time {}\n\n",
                          set_text(r), time_text(t));
-      for (const std::int32_t h : hexes)
-        out << fmt::format("{:10d}{:14.6E}\n", model.mesh.hex_id[h], solver.element_energy()[h]);
+      for (const std::int32_t h : elements)
+        out << fmt::format("{:10d}{:14.6E}\n", id(h), solver.element_energy()[h]);
     }
     if (r.totals || r.totals_only)
       out << fmt::format("\n total internal energy for set {} and time {}\n\n{:20.6E}\n",

@@ -111,6 +111,15 @@ void check_grid(const HexGridView& grid) {
       }
     }
   }
+  for (const CellBlock& block : grid.cells) {
+    for (const std::int32_t node : block.nodes) {
+      if (node < 0 || static_cast<std::size_t>(node) >= n) {
+        throw std::invalid_argument("write_vtu: a " + std::string(topology(block.type).name) +
+                                    " cell refers to node index " + std::to_string(node) + " of " +
+                                    std::to_string(n) + " points");
+      }
+    }
+  }
   for (std::size_t e = 0; e < grid.shells.size(); ++e) {
     for (const std::int32_t node : grid.shells[e]) {
       if (node < 0 || static_cast<std::size_t>(node) >= n) {
@@ -159,8 +168,12 @@ void write_vtu(const std::filesystem::path& path, const HexGridView& grid,
                std::span<const FieldView> point_fields, std::span<const FieldView> cell_fields) {
   check_grid(grid);
   const std::size_t points = grid.x.size();
-  const std::size_t cells = grid.hexes.size() + grid.shells.size();
+  std::size_t cells = grid.hexes.size() + grid.shells.size();
   std::size_t connectivity = 8 * grid.hexes.size();
+  for (const CellBlock& block : grid.cells) {
+    cells += block.size();
+    connectivity += block.nodes.size();
+  }
   for (const Quad4& shell : grid.shells) connectivity += shell_corners(shell);
   for (const FieldView& f : point_fields) check_field(f, points, "point");
   for (const FieldView& f : cell_fields) check_field(f, cells, "cell");
@@ -192,6 +205,13 @@ void write_vtu(const std::filesystem::path& path, const HexGridView& grid,
                                      for (const Hex8& hex : grid.hexes)
                                        for (const std::int32_t node : hex)
                                          s.put(static_cast<std::int64_t>(node));
+                                     for (const CellBlock& block : grid.cells) {
+                                       const auto order = topology(block.type).vtk_order;
+                                       for (std::size_t c = 0; c < block.size(); ++c)
+                                         for (const std::int8_t k : order)
+                                           s.put(static_cast<std::int64_t>(
+                                               block.cell(c)[static_cast<std::size_t>(k)]));
+                                     }
                                      for (const Quad4& shell : grid.shells)
                                        for (std::size_t k = 0; k < shell_corners(shell); ++k)
                                          s.put(static_cast<std::int64_t>(shell[k]));
@@ -199,11 +219,17 @@ void write_vtu(const std::filesystem::path& path, const HexGridView& grid,
     write_data_array<std::int64_t>(out, "Int64", "offsets", 1, cells, [&](Base64Stream& s) {
       std::int64_t offset = 0;
       for (std::size_t e = 0; e < grid.hexes.size(); ++e) s.put(offset += 8);
+      for (const CellBlock& block : grid.cells)
+        for (std::size_t c = 0; c < block.size(); ++c)
+          s.put(offset += static_cast<std::int64_t>(block.nodes_per_cell()));
       for (const Quad4& shell : grid.shells)
         s.put(offset += static_cast<std::int64_t>(shell_corners(shell)));
     });
     write_data_array<std::uint8_t>(out, "UInt8", "types", 1, cells, [&](Base64Stream& s) {
       for (std::size_t e = 0; e < grid.hexes.size(); ++e) s.put(kVtkHexahedron);
+      for (const CellBlock& block : grid.cells)
+        for (std::size_t c = 0; c < block.size(); ++c)
+          s.put(static_cast<std::uint8_t>(topology(block.type).vtk_type));
       for (const Quad4& shell : grid.shells) s.put(is_triangle(shell) ? kVtkTriangle : kVtkQuad);
     });
     out << "      </Cells>\n";

@@ -9,7 +9,39 @@ std::int64_t Mesh::next_node_id() const {
 }
 
 std::int64_t Mesh::next_hex_id() const {
-  return hex_id.empty() ? 1 : *std::max_element(hex_id.begin(), hex_id.end()) + 1;
+  std::int64_t next = hex_id.empty() ? 1 : *std::max_element(hex_id.begin(), hex_id.end()) + 1;
+  for (const CellBlock& b : cells)
+    for (const std::int64_t id : b.id) next = std::max(next, id + 1);
+  return next;
+}
+
+std::size_t Mesh::solid_count() const {
+  std::size_t n = hexes.size();
+  for (const CellBlock& b : cells) n += b.size();
+  return n;
+}
+
+SolidRef Mesh::solid(std::size_t e) const {
+  if (e < hexes.size()) return {CellType::hex8, hexes[e], hex_id[e], hex_part[e]};
+  e -= hexes.size();
+  for (const CellBlock& b : cells) {
+    if (e < b.size()) return {b.type, b.cell(e), b.id[e], b.part[e]};
+    e -= b.size();
+  }
+  return {};
+}
+
+void Mesh::add_cell(CellType type, std::int64_t id, std::int64_t part,
+                    std::span<const std::int32_t> nodes_of_cell) {
+  auto block =
+      std::find_if(cells.begin(), cells.end(), [&](const CellBlock& b) { return b.type == type; });
+  if (block == cells.end()) {
+    cells.push_back({type, {}, {}, {}});
+    block = cells.end() - 1;
+  }
+  block->nodes.insert(block->nodes.end(), nodes_of_cell.begin(), nodes_of_cell.end());
+  block->id.push_back(id);
+  block->part.push_back(part);
 }
 
 std::int64_t Mesh::next_shell_id() const {

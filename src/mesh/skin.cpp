@@ -36,6 +36,14 @@ std::array<std::int32_t, 4> face_nodes(const Hex8& hex, int local) {
 
 std::vector<SkinFace> extract(const Mesh& mesh, bool all_parts, std::span<const std::int64_t> parts,
                               bool merge, const std::function<bool(std::int32_t)>& erodible) {
+  // Faces of the other cell types are not in the skin yet: a hexahedron's face shared with one
+  // of them would pass for exterior. Say so rather than build a wrong surface.
+  if (!mesh.cells.empty()) {
+    throw InputError("surfaces (contact, pressure) on a mesh with " +
+                     std::string(topology(mesh.cells.front().type).abaqus) +
+                     " elements are not supported yet: only meshes of "
+                     "8-node hexahedra and shells have them");
+  }
   std::vector<std::int64_t> selected(parts.begin(), parts.end());
   std::sort(selected.begin(), selected.end());
   auto is_selected = [&](std::int32_t hex) {

@@ -321,6 +321,11 @@ void Simulation::Impl::build_force_slots() {
 }
 
 Simulation::Simulation(const Model& model) : impl_(std::make_unique<Impl>(model)) {
+  if (!model.mesh.cells.empty())
+    throw InputError("explicit runs of " +
+                     std::string(topology(model.mesh.cells.front().type).abaqus) +
+                     " elements are not supported yet: elements other than 8-node hexahedra and "
+                     "shells run in static steps (*STATIC)");
   impl_->setup();
 }
 Simulation::~Simulation() = default;

@@ -386,9 +386,9 @@ TEST(DeckStatic, PartSolid) {
   EXPECT_EQ(model_of(kBlock + "*PART_SOLID\n1, 8\n*STATIC\n1.0\n").parts[0].solid_integration,
             Part::SolidIntegration::Full);
   EXPECT_EQ(model_of(kBlock + "*STATIC\n1.0\n").parts[0].solid_integration,
-            Part::SolidIntegration::OnePoint);
+            Part::SolidIntegration::Reduced);
   EXPECT_EQ(model_of(kBlock + "*TIME\n1.0\n*PART_SOLID\n1, REDUCED\n").parts[0].solid_integration,
-            Part::SolidIntegration::OnePoint);
+            Part::SolidIntegration::Reduced);
   expect_error(kBlock + "*TIME\n1.0\n*PART_SOLID\n1, FULL\n", "1, FULL",
                "fully integrated hexahedra (FULL) are for static steps (*STATIC) only",
                "integration");

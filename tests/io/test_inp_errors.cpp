@@ -147,15 +147,20 @@ TEST(InpErrors, Mesh) {
   expect_error(kModel + "*NODE\n3, 5., 5., 5.\n", {24, "node 3 is already defined at t.inp:4"});
   expect_error(kModel + "*ELEMENT, TYPE=C3D8\n2, 1, 2, 5, 4, 7, 8, 11, 10\n",
                {24, "element 2 is already defined at t.inp:16"});
-  expect_error(kModel + "*ELEMENT, TYPE=C3D20R\n3, 1, 2, 5, 4, 7, 8, 11, 10\n",
-               {23, "element type C3D20R is not supported yet", "TYPE"});
+  expect_error(kModel + "*ELEMENT, TYPE=C3D15\n3, 1, 2, 5, 4, 7, 8, 11, 10\n",
+               {23, "element type C3D15 is not supported yet", "TYPE"});
+  expect_error(kModel + "*CONTROLS, PARAMETERS=FIELD\n2., 0.01\n",
+               {24, "expected a tolerance between 0 and 1", "R_n"});
+  // CalculiX's C3D20 line: 16 entries, then the rest on the next line.
+  expect_error(kModel + "*ELEMENT, TYPE=C3D20\n3, 1, 2, 5, 4, 7, 8, 11, 10\n",
+               {24, "expected the element number and 20 node numbers (C3D20), got 9 fields"});
   expect_error(kModel + "*ELEMENT, TYPE=C3D8\n3, 1, 2, 5, 4, 7, 8, 11\n",
                {24, "expected the element number and 8 node numbers"});
   expect_error(kModel + "*ELEMENT, TYPE=C3D8, ELSET=EALL\n3, 1, 2, 5, 4, 7, 8, 11, 99\n" + kStep,
                {24, "node 99 of element 3 is not defined", "n8"});
   // Nodes 5-8 below 1-4: inside out.
   expect_error(kModel + "*ELEMENT, TYPE=C3D8, ELSET=EALL\n3, 7, 8, 11, 10, 1, 2, 5, 4\n" + kStep,
-               {24, "element 3 has a non-positive volume"});
+               {24, "element 3 (C3D8) is inside out or folded"});
   expect_error(kModel + "*ELEMENT, TYPE=C3D8\n3, 1, 2, 5, 4, 7, 8, 11, 10\n" + kStep,
                {24, "element 3 has no *SOLID SECTION"});
   expect_error(kModel + "*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL\n" + kStep,

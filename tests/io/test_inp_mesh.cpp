@@ -94,7 +94,7 @@ TEST(InpMesh, SectionsBecomePartsWithTheirIntegration) {
   ASSERT_EQ(m.parts.size(), 2u);
   EXPECT_EQ(m.parts[0].id, 1);
   EXPECT_EQ(m.parts[0].title, "RIGHT");
-  EXPECT_EQ(m.parts[0].solid_integration, Part::SolidIntegration::OnePoint);
+  EXPECT_EQ(m.parts[0].solid_integration, Part::SolidIntegration::Reduced);
   EXPECT_EQ(m.parts[1].title, "LEFT");
   EXPECT_EQ(m.parts[1].solid_integration, Part::SolidIntegration::Full);
   EXPECT_EQ(m.mesh.hex_part[0], 2);  // element 1 is in LEFT, the second section
@@ -139,7 +139,7 @@ TEST(InpMesh, OneSectionOverTwoElementTypesMakesTwoParts) {
 )" + kSection + kStep);
   ASSERT_EQ(m.parts.size(), 2u);
   EXPECT_EQ(m.parts[0].title, "EALL (C3D8R)");
-  EXPECT_EQ(m.parts[0].solid_integration, Part::SolidIntegration::OnePoint);
+  EXPECT_EQ(m.parts[0].solid_integration, Part::SolidIntegration::Reduced);
   EXPECT_EQ(m.parts[1].title, "EALL (C3D8)");
   EXPECT_EQ(m.parts[1].solid_integration, Part::SolidIntegration::Full);
   EXPECT_EQ(m.parts[0].material_id, m.parts[1].material_id);
@@ -248,7 +248,7 @@ u
 *EndStep
 )");
   EXPECT_EQ(m.mesh.hex_count(), 1u);
-  EXPECT_EQ(m.parts.at(0).solid_integration, Part::SolidIntegration::OnePoint);
+  EXPECT_EQ(m.parts.at(0).solid_integration, Part::SolidIntegration::Reduced);
   const StaticStep& s = m.static_steps.at(0);
   EXPECT_TRUE(s.nonlinear_geometry);
   EXPECT_TRUE(s.fixed_increments);

@@ -325,5 +325,35 @@ U
   EXPECT_TRUE(r.model.static_steps.at(0).prints.empty());
 }
 
+// *CONTROLS, PARAMETERS=FIELD sets R_n and C_n of the displacement field for this step and the
+// next ones until RESET (CalculiX User's Manual, *CONTROLS).
+TEST(InpSteps, FieldControlsSetTheNewtonTolerancesUntilReset) {
+  const DeckResult r = read_inp_string_with_notes(kModel + R"(*CONTROLS, PARAMETERS=FIELD
+1e-9, 2e-9
+*STEP
+*STATIC
+*END STEP
+*STEP
+*STATIC
+*CONTROLS, PARAMETERS=FIELD, FIELD=DISPLACEMENT
+, 1e-6
+*END STEP
+*STEP
+*STATIC
+*CONTROLS, RESET
+*END STEP
+)",
+                                                  "t.inp");
+  const auto& steps = r.model.static_steps;
+  ASSERT_EQ(steps.size(), 3u);
+  EXPECT_EQ(steps[0].force_tolerance, 1e-9);
+  EXPECT_EQ(steps[0].displacement_tolerance, 2e-9);
+  EXPECT_EQ(steps[1].force_tolerance, 1e-9);
+  EXPECT_EQ(steps[1].displacement_tolerance, 1e-6);
+  EXPECT_FALSE(steps[2].force_tolerance.has_value());
+  EXPECT_FALSE(steps[2].displacement_tolerance.has_value());
+  EXPECT_TRUE(r.notes.empty());
+}
+
 }  // namespace
 }  // namespace abut

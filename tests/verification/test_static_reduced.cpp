@@ -22,7 +22,7 @@ double reduced_tip(int along, int through) {
   Model m;
   generate_box(m.mesh, {1, along, through, 1, {0, 0, 0}, {kL, kH, kW}});
   m.materials.push_back(elastic());
-  m.parts.push_back(part(1, Part::SolidIntegration::OnePoint));
+  m.parts.push_back(part(1, Part::SolidIntegration::Reduced));
   clamp_and_load(m);
   StaticSolver s(m);
   s.run();

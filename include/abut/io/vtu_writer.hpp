@@ -1,5 +1,6 @@
 #pragma once
-// ParaView output: one VTK XML UnstructuredGrid file (.vtu) of 8-node hexahedra and 4-node shells
+// ParaView output: one VTK XML UnstructuredGrid file (.vtu) of solids (8-node hexahedra and the
+// cell blocks of the other types, as their VTK cells: mesh/topology.hpp) and 4-node shells
 // (quads, and triangles where n4 == n3) per state, and a
 // ParaView data collection (.pvd) that lists the states with their times.
 //
@@ -27,18 +28,20 @@ inline constexpr unsigned char kVtkTriangle = 5;
 // Base64 encoding with the standard alphabet and '=' padding (RFC 4648, section 4).
 std::string base64_encode(std::span<const std::byte> bytes);
 
-// Points (structure of arrays, as abut::Nodes), hexahedra and shells by node index. The cells of
-// the file are the hexahedra, then the shells (a shell with n4 == n3 is written as a triangle), so
-// cell fields hold the hex values first, then the shell values.
+// Points (structure of arrays, as abut::Nodes), hexahedra, shells and cell blocks by node index.
+// The cells of the file are the hexahedra, then the cells of each block (Mesh::solid numbering),
+// then the shells (a shell with n4 == n3 is written as a triangle), so cell fields hold the solid
+// values first, then the shell values.
 struct HexGridView {
   std::span<const double> x, y, z;
   std::span<const Hex8> hexes;
   std::span<const Quad4> shells;
+  std::span<const CellBlock> cells = {};
 };
 
 // The mesh in its reference configuration.
 inline HexGridView hex_grid(const Mesh& mesh) {
-  return {mesh.nodes.x, mesh.nodes.y, mesh.nodes.z, mesh.hexes, mesh.shells};
+  return {mesh.nodes.x, mesh.nodes.y, mesh.nodes.z, mesh.hexes, mesh.shells, mesh.cells};
 }
 
 // One named output field: `components` values per point (or per cell), interleaved, so a vector

@@ -4,10 +4,12 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <variant>
 #include <vector>
 
 #include "abut/core/vec3.hpp"
+#include "abut/mesh/topology.hpp"
 
 namespace abut {
 
@@ -33,11 +35,6 @@ struct Nodes {
 
 using Hex8 = std::array<std::int32_t, 8>;  // node indices (not user ids)
 
-// The six faces of a hex, nodes counter-clockwise seen from outside (right-hand normal outward):
-// bottom (zeta = -1), top (zeta = +1), eta = -1, xi = +1, eta = +1, xi = -1. This is also the
-// order of the faces S1..S6 of an Abaqus/CalculiX C3D8 (same node order), so face k is S(k+1).
-inline constexpr int kHexFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                        {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
 // 4-node shell (node indices, counter-clockwise about the shell normal (x3 - x1) x (x4 - x2)).
 // A triangle repeats its third node: n4 == n3.
 using Quad4 = std::array<std::int32_t, 4>;
@@ -86,6 +83,29 @@ using ComponentShape = std::variant<BoxShape, SphereShape, CylinderShape>;
 // The point of `shape` at grid coordinates `grid` of `block` (see HexCell).
 Vec3 shape_point(const ComponentShape& shape, std::int32_t block, const Vec3& grid);
 
+// Solid cells of one type other than the 8-node hexahedra (mesh/topology.hpp): connectivity
+// (topology(type).nodes node indices per cell, in the type's order), user ids and parts.
+struct CellBlock {
+  CellType type = CellType::tet4;
+  std::vector<std::int32_t> nodes;
+  std::vector<std::int64_t> id;
+  std::vector<std::int64_t> part;
+
+  std::size_t size() const { return id.size(); }
+  std::size_t nodes_per_cell() const { return static_cast<std::size_t>(topology(type).nodes); }
+  std::span<const std::int32_t> cell(std::size_t c) const {
+    return {nodes.data() + c * nodes_per_cell(), nodes_per_cell()};
+  }
+};
+
+// One solid element of any type, as the solid numbering of Mesh::solid() gives it.
+struct SolidRef {
+  CellType type = CellType::hex8;
+  std::span<const std::int32_t> nodes;
+  std::int64_t id = 0;
+  std::int64_t part = 0;
+};
+
 struct Mesh {
   Nodes nodes;
   std::vector<Hex8> hexes;
@@ -113,7 +133,18 @@ struct Mesh {
   std::vector<std::int64_t> shell_id;    // user element ids
   std::vector<std::int64_t> shell_part;  // user part id of each shell
 
+  // Solid cells of the other types, one block per type (docs/architecture.md, "Element
+  // families": the hexahedra move into blocks once the explicit solver takes them).
+  std::vector<CellBlock> cells;
+
   std::size_t hex_count() const { return hexes.size(); }
+  // Every solid element under one numbering: the hexahedra (0 .. hex_count() - 1), then the
+  // cells of each block in turn. The static solver, its printout and its output use it.
+  std::size_t solid_count() const;
+  SolidRef solid(std::size_t e) const;
+  // Appends a cell of `type` (not hex8: add_hex) to the block of its type.
+  void add_cell(CellType type, std::int64_t id, std::int64_t part,
+                std::span<const std::int32_t> nodes_of_cell);
   std::size_t shell_count() const { return shells.size(); }
   void add_shell(std::int64_t id, std::int64_t part, const Quad4& nodes_of_shell);
   std::int64_t next_shell_id() const;

@@ -60,9 +60,10 @@ struct Part {
   // *PART_SHELL: integration points through the thickness (odd) and hourglass coefficient.
   int shell_points = ShellSection{}.points;
   double shell_hourglass = ShellSection{}.hourglass;
-  // Integration of the part's hexes: one point with hourglass control (explicit; Abaqus C3D8R) or
-  // 2x2x2 points (static solver; Abaqus/CalculiX C3D8).
-  enum class SolidIntegration { OnePoint, Full } solid_integration = SolidIntegration::OnePoint;
+  // Integration of the part's solids: reduced (8-node hexahedra: one point with hourglass
+  // control, explicit and Abaqus C3D8R; 20-node: 2x2x2 points, C3D20R) or full (the static
+  // solver's C3D8, C3D20; tetrahedra and wedges have only this one).
+  enum class SolidIntegration { Reduced, Full } solid_integration = SolidIntegration::Reduced;
   SourceLocation where;
 };
 

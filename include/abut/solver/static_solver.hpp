@@ -72,10 +72,11 @@ class StaticSolver {
   void run(const std::function<void(const StaticIncrement&)>& on_increment = {});
 
   // The last converged state. Per node (3 values, node-major): displacement, and reaction force
-  // of the supports on the prescribed dofs (0 elsewhere). Per hex: Cauchy stress and strain (small
-  // or Green-Lagrange, engineering shears) at its 8 Gauss points (8 x 6, Voigt xx yy zz xy yz zx,
-  // CalculiX point order; a one-point C3D8R repeats its point in all 8), the equivalent plastic
-  // strain at the same points (8), and its energy (elastic, hourglass and plastic work).
+  // of the supports on the prescribed dofs (0 elsewhere). Per solid element (Mesh::solid
+  // numbering), at each of its integration points (CalculiX's point order; first_point(e) is the
+  // index of element e's first): Cauchy stress and strain (small or Green-Lagrange, engineering
+  // shears; 6 per point, Voigt xx yy zz xy yz zx), the equivalent plastic strain and the energy
+  // density; per element its energy (elastic, hourglass and plastic work) and volume.
   std::span<const double> displacement() const;
   std::span<const double> reaction() const;
   // The force of the elements on each node less the contact forces, i.e. the applied loads plus
@@ -84,10 +85,11 @@ class StaticSolver {
   std::span<const double> stress() const;
   std::span<const double> strain() const;
   std::span<const double> plastic_strain() const;
-  int integration_points(std::size_t hex) const;  // 8 (C3D8) or 1 (C3D8R)
+  int integration_points(std::size_t element) const;  // 8 (C3D8), 1 (C3D8R), 27 (C3D20), ...
+  std::size_t first_point(std::size_t element) const;
   std::span<const double> element_energy() const;
-  std::span<const double> energy_density() const;  // per Gauss point (8 per hex), as stress()
-  std::span<const double> element_volume() const;  // current volume per hex
+  std::span<const double> energy_density() const;  // per point
+  std::span<const double> element_volume() const;  // current volume per element
   const StaticStatistics& statistics() const;
   // The contact passes at the last converged state: for each contact of Model::contacts, in
   // order, one (surface 1's points on surface 2) or two (symmetric: also 2 on 1); contact_of(k)

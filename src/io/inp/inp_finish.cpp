@@ -1,9 +1,10 @@
-// The end of reading, part 1: elements with their nodes and sections into hexes and parts,
+// The end of reading, part 1: elements with their nodes and sections into solids and parts,
 // materials, node and element sets, surfaces into face sets and node sets. Then Reader::finish,
 // which runs the parts in order (contacts and steps: inp_finish_steps.cpp).
 #include <algorithm>
 #include <map>
 
+#include "abut/element/shape_functions.hpp"
 #include "abut/mesh/skin.hpp"
 #include "abut/solver/contact_surfaces.hpp"
 #include "inp_reader.hpp"
@@ -117,7 +118,8 @@ std::vector<std::int64_t> assign_parts(Reader& r) {
     }
     const IdSet& set = find_set(r, r.element_sets, r.element_set_names, sec.elset, sec.where,
                                 "*SOLID SECTION", "element");
-    std::int64_t part_ids[2] = {0, 0};  // C3D8, C3D8R
+    // One part per element name (C3D8, C3D20R, ...) in the section.
+    std::map<std::pair<CellType, bool>, std::int64_t> part_ids;
     for (const std::int32_t e : set.members) {
       const ElementRecord& el = r.elements[static_cast<std::size_t>(e)];
       std::int32_t& assigned = section_of[static_cast<std::size_t>(e)];
@@ -128,26 +130,25 @@ std::vector<std::int64_t> assign_parts(Reader& r) {
                              ": every element takes exactly one *SOLID SECTION");
       }
       assigned = static_cast<std::int32_t>(s);
-      std::int64_t& part = part_ids[el.reduced ? 1 : 0];
+      std::int64_t& part = part_ids[{el.type, el.reduced}];
       if (part == 0) {
         Part p;
         p.id = static_cast<std::int64_t>(r.model.parts.size()) + 1;
         p.title = set.name;
         p.material_id = static_cast<std::int64_t>(material->second) + 1;
         p.solid_integration =
-            el.reduced ? Part::SolidIntegration::OnePoint : Part::SolidIntegration::Full;
+            el.reduced ? Part::SolidIntegration::Reduced : Part::SolidIntegration::Full;
         p.where = r.where(sec.where, "*SOLID SECTION");
         r.model.parts.push_back(p);
         part = p.id;
       }
       part_of[static_cast<std::size_t>(e)] = part;
     }
-    // A section over both element types: say which part is which.
-    if (part_ids[0] != 0 && part_ids[1] != 0) {
-      for (Part& p : r.model.parts) {
-        if (p.id == part_ids[0]) p.title += " (C3D8)";
-        if (p.id == part_ids[1]) p.title += " (C3D8R)";
-      }
+    // A section over several element types: say which part is which.
+    if (part_ids.size() > 1) {
+      for (const auto& [kind, id] : part_ids)
+        r.model.parts[static_cast<std::size_t>(id - 1)].title +=
+            " (" + std::string(topology(kind.first).abaqus) + (kind.second ? "R)" : ")");
     }
   }
   for (std::size_t e = 0; e < n; ++e) {
@@ -160,30 +161,51 @@ std::vector<std::int64_t> assign_parts(Reader& r) {
   return part_of;
 }
 
-void make_hexes(Reader& r, const std::vector<std::int64_t>& part_of) {
+// The elements in the mesh's solid numbering (hexahedra, then one block per cell type in the
+// order of CellType): records are sorted so that a record's index is its solid index.
+void order_elements(Reader& r) {
+  std::stable_sort(r.elements.begin(), r.elements.end(),
+                   [](const ElementRecord& a, const ElementRecord& b) { return a.type < b.type; });
+  for (std::size_t e = 0; e < r.elements.size(); ++e) r.element_index[r.elements[e].id] = e;
+}
+
+void make_solids(Reader& r, const std::vector<std::int64_t>& part_of) {
   Mesh& mesh = r.model.mesh;
-  mesh.hexes.reserve(r.elements.size());
   for (std::size_t e = 0; e < r.elements.size(); ++e) {
     const ElementRecord& el = r.elements[e];
-    Hex8 hex;
-    for (std::size_t k = 0; k < 8; ++k) {
-      const auto it = r.node_index.find(el.nodes[k]);
+    const CellTopology& t = topology(el.type);
+    std::array<std::int32_t, kMaxCellNodes> nodes{};
+    std::array<double, 3 * kMaxCellNodes> X{};
+    for (int k = 0; k < t.nodes; ++k) {
+      const auto it = r.node_index.find(el.nodes[static_cast<std::size_t>(k)]);
       if (it == r.node_index.end()) {
         throw InputError(r.where(el.where, "*ELEMENT", "n" + std::to_string(k + 1)),
-                         "node " + std::to_string(el.nodes[k]) + " of element " +
-                             std::to_string(el.id) + " is not defined (no *NODE line)");
+                         "node " + std::to_string(el.nodes[static_cast<std::size_t>(k)]) +
+                             " of element " + std::to_string(el.id) +
+                             " is not defined (no *NODE line)");
       }
-      hex[k] = it->second;
+      nodes[static_cast<std::size_t>(k)] = it->second;
+      const Vec3 p = mesh.nodes.position(static_cast<std::size_t>(it->second));
+      X[3 * static_cast<std::size_t>(k)] = p.x;
+      X[3 * static_cast<std::size_t>(k) + 1] = p.y;
+      X[3 * static_cast<std::size_t>(k) + 2] = p.z;
     }
-    const double volume = hex_volume(mesh.nodes, hex);
-    if (!(volume > 0.0)) {
+    const double jacobian = min_jacobian(el.type, std::span<const double>(X.data(), 3 * t.nodes));
+    if (!(jacobian > 0.0)) {
       throw InputError(r.where(el.where, "*ELEMENT"),
-                       "element " + std::to_string(el.id) + " has a non-positive volume (" +
-                           std::to_string(volume) +
-                           "): its nodes must follow the C3D8 order (nodes 1-4 counter-clockwise "
-                           "seen from nodes 5-8, which lie above them)");
+                       "element " + std::to_string(el.id) + " (" + std::string(t.abaqus) +
+                           ") is inside out or folded (det J = " + std::to_string(jacobian) +
+                           " at an integration point): its nodes must follow the " +
+                           std::string(t.abaqus) + " order (" + std::string(t.node_order) + ")");
     }
-    mesh.add_hex(el.id, part_of[e], hex);
+    if (el.type == CellType::hex8) {
+      Hex8 hex;
+      std::copy(nodes.begin(), nodes.begin() + 8, hex.begin());
+      mesh.add_hex(el.id, part_of[e], hex);
+    } else {
+      mesh.add_cell(el.type, el.id, part_of[e],
+                    std::span<const std::int32_t>(nodes.data(), static_cast<std::size_t>(t.nodes)));
+    }
   }
 }
 
@@ -210,6 +232,7 @@ void make_surfaces(Reader& r) {
     std::map<std::pair<std::int32_t, std::int8_t>, bool> seen;
     for (std::size_t k = 0; k < s.items.size(); ++k) {
       for (const std::int32_t hex : hexes_of(r, s.items[k], "*SURFACE")) {
+        require_hexahedron(r, hex, s.items[k].where, "*SURFACE");
         if (seen.emplace(std::make_pair(hex, s.faces[k]), true).second)
           set.faces.push_back({hex, s.faces[k]});
       }
@@ -242,6 +265,17 @@ std::vector<std::int32_t> nodes_of(const Reader& r, const Item& item, const std:
   return {it->second};
 }
 
+void require_hexahedron(const Reader& r, std::int32_t element, Loc where,
+                        const std::string& keyword) {
+  const ElementRecord& e = r.elements[static_cast<std::size_t>(element)];
+  if (e.type == CellType::hex8) return;
+  throw InputError(r.where(where, keyword),
+                   "element " + std::to_string(e.id) + " is a " +
+                       std::string(topology(e.type).abaqus) +
+                       ": faces of elements other than C3D8/C3D8R in surfaces and pressure loads "
+                       "are not supported yet");
+}
+
 std::vector<std::int32_t> hexes_of(const Reader& r, const Item& item, const std::string& keyword) {
   if (!item.name.empty()) return element_set_members(r, item.name, item.where, keyword);
   const auto it = r.element_index.find(item.id);
@@ -255,11 +289,13 @@ std::vector<std::int32_t> hexes_of(const Reader& r, const Item& item, const std:
 void finish_mesh(Reader& r) {
   if (r.elements.empty()) {  // at the end of the input, like a missing *STEP
     throw InputError(r.where(r.last_card.line > 0 ? r.last_card : Loc{0, 1}, ""),
-                     "the input has no *ELEMENT: abut needs C3D8 or C3D8R hexahedra");
+                     "the input has no *ELEMENT: abut needs solid elements (C3D8, C3D8R, C3D20, "
+                     "C3D20R, C3D4, C3D10 or C3D6)");
   }
+  order_elements(r);
   resolve_sets(r);
   make_materials(r);
-  make_hexes(r, assign_parts(r));
+  make_solids(r, assign_parts(r));
   make_surfaces(r);
 }
 

@@ -66,6 +66,7 @@ void apply(const Reader& r, const LoadCard& card, State& state) {
                                                   ? hexes_of(r, line.target, keyword)
                                                   : nodes_of(r, line.target, keyword);
     for (const std::int32_t t : targets) {
+      if (card.kind == LoadKind::Pressure) require_hexahedron(r, t, line.target.where, keyword);
       for (int k = line.first; k <= line.last; ++k) {
         Entry& e = state[{t, k}];
         const bool add = card.kind != LoadKind::Boundary && e.this_step;
@@ -122,8 +123,8 @@ PrintRequest print_request(const Reader& r, const PrintCard& p) {
       if (!p.set.empty()) {
         q.members = element_set_members(r, p.set, p.where, q.where.keyword);
       } else {
-        for (std::size_t h = 0; h < m.mesh.hex_count(); ++h)
-          q.members.push_back(static_cast<std::int32_t>(h));
+        for (std::size_t e = 0; e < m.mesh.solid_count(); ++e)
+          q.members.push_back(static_cast<std::int32_t>(e));
       }
       break;
     case PrintRequest::Kind::Contact:  // empty: every slave node
@@ -316,6 +317,8 @@ void finish_steps(Reader& r) {
     step.max_increment = rec.max_increment.value_or(rec.period);
     step.fixed_increments = rec.direct;
     step.max_increments = rec.max_increments;
+    step.force_tolerance = rec.force_tolerance;
+    step.displacement_tolerance = rec.displacement_tolerance;
     for (const auto& [key, e] : boundaries) {
       const auto dep = dependent.find(key);
       if (dep != dependent.end()) {

@@ -1,14 +1,31 @@
 // *HEADING, *NODE, *ELEMENT, *NSET, *ELSET and *SURFACE: the mesh, its sets and surfaces, kept
 // with user ids and names until finish_mesh (inp_finish.cpp) resolves them.
+#include <optional>
+#include <utility>
+
 #include "../deck_text.hpp"
+#include "abut/element/shape_functions.hpp"
 #include "inp_reader.hpp"
 
 namespace abut::inp {
 namespace {
 
 constexpr std::string_view kSupportedTypes =
-    "abut reads the 8-node hexahedra C3D8 (full 2x2x2 integration) and C3D8R (one point with "
-    "hourglass control)";
+    "abut reads the solid elements C3D8 (8-node hexahedron, 2x2x2 points), C3D8R (one point with "
+    "hourglass control), C3D20 (20-node hexahedron, 3x3x3 points), C3D20R (2x2x2 points), C3D4 "
+    "(4-node tetrahedron), C3D10 (10-node tetrahedron, 4 points) and C3D6 (6-node wedge)";
+
+// The cell type and rule of an element name: each type's full-integration name (C3D20) and, for
+// a type with a reduced rule, the name with R (C3D20R).
+std::optional<std::pair<CellType, bool>> element_type(const std::string& name) {
+  for (const CellType type : kCellTypes) {
+    const std::string full(topology(type).abaqus);
+    if (name == full) return std::make_pair(type, false);
+    if (name == full + "R" && !quadrature(type, Integration::reduced).empty())
+      return std::make_pair(type, true);
+  }
+  return std::nullopt;
+}
 
 // The ids and set names of the data lines of a *NSET / *ELSET (or its GENERATE ranges), added
 // to sets[target]. The sets named on a line are copied as they are now (CalculiX).
@@ -95,17 +112,19 @@ void read_element(Reader& r, const Card& c) {
   check_parameters(
       r, c, {{"TYPE"}, {"ELSET"}, {"INPUT", ParameterRule::Kind::Unsupported, "use *INCLUDE"}});
   const std::string type = deck::upper(required_parameter(r, c, "TYPE"));
-  if (type != "C3D8" && type != "C3D8R") {
+  const auto cell = element_type(type);
+  if (!cell) {
     throw InputError(r.where(c, "TYPE"), "element type " + type + " is not supported yet: " +
                                              std::string(kSupportedTypes));
   }
-  const bool reduced = type == "C3D8R";
+  const std::size_t count = static_cast<std::size_t>(topology(cell->first).nodes) + 1;
   IdSet* set = nullptr;
   if (const auto name = parameter_value(c, "ELSET")) set = &r.element_set(*name, r.loc(c));
   for (std::size_t i = 0; i < c.data.size(); ++i) {
     const DataLine& first = c.data[i];
     const SourceLocation where = r.where(Reader::loc(first), c.keyword);
-    // A line ending with a comma continues on the next line (8 nodes may be split).
+    // A line ending with a comma continues on the next line (CalculiX's C3D20 takes 16 entries
+    // on its first line and the rest on the next, with or without the comma).
     std::vector<std::string> fields;
     const DataLine* line = &first;
     while (true) {
@@ -113,22 +132,25 @@ void read_element(Reader& r, const Card& c) {
       const bool continues = line->text.back() == ',';
       if (continues) more.pop_back();
       fields.insert(fields.end(), more.begin(), more.end());
-      if (!continues || fields.size() >= 9 || i + 1 >= c.data.size()) break;
+      if (fields.size() >= count || i + 1 >= c.data.size()) break;
+      if (!continues && fields.size() < 16) break;
       line = &c.data[++i];
     }
     const auto field_where = [&](const std::string& name) {
       SourceLocation w = r.where(Reader::loc(*line), c.keyword, name);
       return w;
     };
-    if (fields.size() != 9) {
-      throw InputError(where, "expected the element number and 8 node numbers (" + type +
-                                  "), got " + std::to_string(fields.size()) +
+    if (fields.size() != count) {
+      throw InputError(where, "expected the element number and " + std::to_string(count - 1) +
+                                  " node numbers (" + type + "), got " +
+                                  std::to_string(fields.size()) +
                                   " fields; a line ending with a comma continues on the next");
     }
     ElementRecord e;
-    e.reduced = reduced;
+    e.type = cell->first;
+    e.reduced = cell->second;
     e.where = Reader::loc(first);
-    for (std::size_t k = 0; k < 9; ++k) {
+    for (std::size_t k = 0; k < count; ++k) {
       const std::string name = k == 0 ? "element" : "n" + std::to_string(k);
       const auto v = deck::parse_integer(fields[k]);
       if (!v || *v <= 0) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "abut/io/deck.hpp"
+#include "abut/mesh/topology.hpp"
 #include "inp_lines.hpp"
 
 namespace abut::inp {
@@ -43,8 +44,9 @@ struct IdSet {
 
 struct ElementRecord {
   std::int64_t id = 0;
-  bool reduced = false;  // C3D8R
-  std::array<std::int64_t, 8> nodes{};
+  CellType type = CellType::hex8;
+  bool reduced = false;                             // C3D8R, C3D20R
+  std::array<std::int64_t, kMaxCellNodes> nodes{};  // the first topology(type).nodes
   Loc where;
 };
 
@@ -173,6 +175,7 @@ struct StepRecord {
   bool direct = false;
   double initial = 1.0, period = 1.0;
   std::optional<double> min_increment, max_increment;
+  std::optional<double> force_tolerance, displacement_tolerance;  // *CONTROLS, FIELD
   std::vector<LoadCard> loads;
   std::vector<PrintCard> prints;
   std::vector<ChangeRecord> changes;
@@ -225,6 +228,8 @@ class Reader {
 
   // Context of the card being read.
   bool in_step = false;
+  // The Newton tolerances of *CONTROLS, PARAMETERS=FIELD in force (unset: abut's defaults).
+  std::optional<double> force_tolerance, displacement_tolerance;
   std::optional<std::size_t> material;     // the *MATERIAL block being read
   std::optional<std::size_t> interaction;  // the *SURFACE INTERACTION block being read
   bool change_friction = false;            // a *CHANGE FRICTION waits for its *FRICTION
@@ -355,9 +360,14 @@ void finish_contacts(Reader& r);
 void finish_ties(
     Reader& r);  // *TIE -> Model::ties  // amplitudes' curves are made first (finish_steps)
 void finish_steps(Reader& r);     // amplitudes, equations, static steps
-// The indices of a node / element item (an id or a set name); InputError at the item.
+// The indices of a node / element item (an id or a set name); InputError at the item. Element
+// indices are the mesh's solid numbering (Mesh::solid).
 std::vector<std::int32_t> nodes_of(const Reader& r, const Item& item, const std::string& keyword);
 std::vector<std::int32_t> hexes_of(const Reader& r, const Item& item, const std::string& keyword);
+// InputError at `where` unless element (a solid index) is an 8-node hexahedron: the element
+// faces of surfaces and pressure loads are hexahedron faces yet.
+void require_hexahedron(const Reader& r, std::int32_t element, Loc where,
+                        const std::string& keyword);
 // Node set / element set contents as indices (sorted, unique); InputError at `at` if undefined.
 std::vector<std::int32_t> node_set_members(const Reader& r, const std::string& name, Loc at,
                                            const std::string& keyword);

@@ -147,6 +147,8 @@ void read_step(Reader& r, const Card& c) {
   }
   s.title = parameter_value(c, "NAME").value_or(c.data.empty() ? "" : c.data.front().text);
   if (s.title.empty()) s.title = "Step " + std::to_string(r.steps.size() + 1);
+  s.force_tolerance = r.force_tolerance;
+  s.displacement_tolerance = r.displacement_tolerance;
   r.steps.push_back(std::move(s));
   r.in_step = true;
 }
@@ -243,6 +245,13 @@ void read_contact_print(Reader& r, const Card& c) {
   read_print(r, c, PrintRequest::Kind::Contact);
 }
 
+// *CONTROLS, PARAMETERS=FIELD sets the Newton tolerances of the displacement field: R_n, the
+// largest residual over the average force, and C_n, the largest correction over the largest
+// displacement increment (CalculiX User's Manual, "*CONTROLS" and section "Convergence criteria";
+// defaults 0.005 and 0.02, abut's). They hold from here on, in this step and the next ones, until
+// RESET; the further values of the line (q0, qu, R_P, epsilon, C_epsilon, R_l) are not used by
+// abut's Newton and are skipped with a note. Other PARAMETERS (TIME INCREMENTATION, LINE SEARCH)
+// are skipped: abut uses its own increment controls.
 void read_controls(Reader& r, const Card& c) {
   check_parameters(r, c,
                    {{"PARAMETERS", Kind::FlagOrValue},
@@ -250,7 +259,46 @@ void read_controls(Reader& r, const Card& c) {
                     {"FIELD", Kind::FlagOrValue},
                     {"ANALYSIS", Kind::FlagOrValue},
                     {"TYPE", Kind::FlagOrValue}});
-  r.note(c, "*CONTROLS skipped: abut uses its own Newton and increment controls");
+  const auto apply = [&r] {
+    if (r.in_step) {
+      r.step().force_tolerance = r.force_tolerance;
+      r.step().displacement_tolerance = r.displacement_tolerance;
+    }
+  };
+  if (has_parameter(c, "RESET")) {
+    r.force_tolerance.reset();
+    r.displacement_tolerance.reset();
+    apply();
+    return;
+  }
+  const std::string parameters = deck::upper(parameter_value(c, "PARAMETERS").value_or(""));
+  const std::string field = deck::upper(parameter_value(c, "FIELD").value_or("DISPLACEMENT"));
+  if (parameters != "FIELD" || field != "DISPLACEMENT") {
+    r.note(c,
+           "*CONTROLS skipped: abut uses its own increment controls and sets only the "
+           "Newton tolerances of the displacement field (PARAMETERS=FIELD)");
+    return;
+  }
+  if (c.data.empty()) return;
+  const Fields f(r, c, c.data.front());
+  const auto tolerance = [&](std::size_t i, const char* name, std::optional<double>& out) {
+    if (!f.given(i)) return;
+    const double v = f.number(i, name);
+    if (!(v > 0.0 && v < 1.0)) f.fail(name, "expected a tolerance between 0 and 1");
+    out = v;
+  };
+  tolerance(0, "R_n", r.force_tolerance);
+  tolerance(1, "C_n", r.displacement_tolerance);
+  for (std::size_t i = 2; i < f.size(); ++i)
+    if (f.given(i)) {
+      r.note(c,
+             "*CONTROLS: only R_n and C_n act in abut; the further values of the line are "
+             "skipped");
+      break;
+    }
+  if (c.data.size() > 1)
+    r.note(c, "*CONTROLS: the lines after the first (line search, cutbacks) are skipped");
+  apply();
 }
 
 }  // namespace abut::inp

@@ -13,6 +13,12 @@ StaticHeat::StaticHeat(const Model& model) : model_(model) {
                        "thermal expansion in static steps is not supported yet (the steady "
                        "temperature of a static analysis does not act on the mechanics): give "
                        "alpha = 0");
+  if (!model.thermal.properties.empty() && !model.mesh.cells.empty())
+    throw InputError(model.thermal.properties.front().where,
+                     "heat conduction in " +
+                         std::string(topology(model.mesh.cells.front().type).abaqus) +
+                         " elements is not supported yet: only 8-node hexahedra and shells "
+                         "conduct heat");
   check_thermal_contacts(model);
   flow_.assign(model.contacts.size(), 0.0);
   no_flow_.assign(model.mesh.nodes.size(), 0.0);

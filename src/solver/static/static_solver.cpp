@@ -452,8 +452,11 @@ std::span<const double> StaticSolver::strain() const { return impl_->elements.st
 std::span<const double> StaticSolver::plastic_strain() const {
   return impl_->elements.plastic_strain();
 }
-int StaticSolver::integration_points(std::size_t hex) const {
-  return impl_->elements.integration_points(hex);
+int StaticSolver::integration_points(std::size_t element) const {
+  return impl_->elements.integration_points(element);
+}
+std::size_t StaticSolver::first_point(std::size_t element) const {
+  return impl_->elements.first_point(element);
 }
 std::span<const double> StaticSolver::element_energy() const { return impl_->elements.energy(); }
 std::span<const double> StaticSolver::energy_density() const {

@@ -1,0 +1,57 @@
+#pragma once
+// Shape functions of every cell type (mesh/topology.hpp) and the integration rules of the solid
+// elements that use them: the isoparametric interpolation x(xi) = sum_a N_a(xi) x_a.
+//
+// Shape functions (Zienkiewicz, Taylor & Zhu, The Finite Element Method: Its Basis and
+// Fundamentals, 7th ed., 2013, sections 6.3-6.6; the same as CalculiX's shape8h, shape20h,
+// shape4tet, shape10tet and shape6w):
+//  hex8   N_a = (1 + xi xi_a)(1 + eta eta_a)(1 + zeta zeta_a) / 8
+//  hex20  corners N_a = (1 + xi xi_a)(1 + eta eta_a)(1 + zeta zeta_a)(xi xi_a + eta eta_a +
+//         zeta zeta_a - 2) / 8; midside node with xi_a = 0: (1 - xi^2)(1 + eta eta_a)(1 + zeta
+//         zeta_a) / 4, and likewise along eta and zeta (serendipity)
+//  tet4   N = L0, L1, L2, L3 with L0 = 1 - xi - eta - zeta, L1 = xi, L2 = eta, L3 = zeta
+//  tet10  corners L_a (2 L_a - 1), midside node of edge (a, b) 4 L_a L_b
+//  wedge6 triangle (1 - xi - eta, xi, eta) times (1 - zeta) / 2 (nodes 0-2), (1 + zeta) / 2 (3-5)
+#include <span>
+
+#include "abut/mesh/topology.hpp"
+
+namespace abut {
+
+// n[a] = N_a(xi) and dn[a][r] = dN_a / dxi_r for a < topology(type).nodes.
+void shape_functions(CellType type, const double xi[3], double* n, double (*dn)[3]);
+
+struct QuadraturePoint {
+  double xi[3];
+  double weight;
+};
+
+// Full integration as Abaqus/CalculiX C3D8, C3D20, C3D4, C3D10, C3D6; reduced as C3D20R (and
+// the one-point hexahedron of the explicit solver). Points are in the order CalculiX prints
+// them (*EL PRINT), which the static printout follows.
+enum class Integration { full, reduced };
+
+// The points of `type` under `rule`; empty when the cell has no such rule (a reduced
+// tetrahedron or wedge).
+//  hex8   full 2x2x2 Gauss, reduced 1 point; hex20 full 3x3x3, reduced 2x2x2 (tensor products,
+//         xi fastest, then eta, then zeta)
+//  tet4   1 point at the centroid, weight 1/6
+//  tet10  4 points at L = a, b, b, b (each corner in turn), a = (5 + 3 sqrt 5) / 20,
+//         b = (5 - sqrt 5) / 20, weights 1/24 (degree 2; Zienkiewicz et al., table 6.3)
+//  wedge6 6 points: the triangle's 3-point rule (degree 2, at (1/6, 1/6), (2/3, 1/6), (1/6, 2/3),
+//         weights 1/6) on the 2 Gauss levels zeta = -+1/sqrt 3. The 2-point rule (the triangle's
+//         centroid on each level) leaves a spurious zero-energy mode, the two triangles turning
+//         opposite ways about the wedge's axis (7 zero eigenvalues, measured).
+std::span<const QuadraturePoint> quadrature(CellType type, Integration rule);
+
+// At natural point xi of a cell with coordinates X (3 per node): the shape functions n, their
+// natural derivatives dn and their gradients grad[a][i] = dN_a/dX_i = sum_r dN_a/dxi_r (J^-1)_ri
+// with J_ir = dX_i/dxi_r; returns det J (grad is meaningless where it is 0).
+double shape_gradients(CellType type, std::span<const double> X, const double xi[3], double* n,
+                       double (*dn)[3], double (*grad)[3]);
+
+// The smallest det(dX/dxi) over the points of the full rule of a cell with coordinates X
+// (3 per node): <= 0 for a cell whose nodes are not in the type's order (or that is folded).
+double min_jacobian(CellType type, std::span<const double> X);
+
+}  // namespace abut

@@ -1,0 +1,208 @@
+// Shape functions and integration rules of every cell type: see shape_functions.hpp.
+#include "abut/element/shape_functions.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace abut {
+namespace {
+
+void hex8(const double xi[3], double* n, double (*dn)[3]) {
+  const auto& nat = topology(CellType::hex8).natural;
+  for (int a = 0; a < 8; ++a) {
+    const double x = 1.0 + xi[0] * nat[a][0], y = 1.0 + xi[1] * nat[a][1],
+                 z = 1.0 + xi[2] * nat[a][2];
+    n[a] = 0.125 * x * y * z;
+    dn[a][0] = 0.125 * nat[a][0] * y * z;
+    dn[a][1] = 0.125 * nat[a][1] * x * z;
+    dn[a][2] = 0.125 * nat[a][2] * x * y;
+  }
+}
+
+void hex20(const double xi[3], double* n, double (*dn)[3]) {
+  const auto& nat = topology(CellType::hex20).natural;
+  for (int a = 0; a < 20; ++a) {
+    const double xa = nat[a][0], ya = nat[a][1], za = nat[a][2];
+    const double x = 1.0 + xi[0] * xa, y = 1.0 + xi[1] * ya, z = 1.0 + xi[2] * za;
+    if (a < 8) {
+      const double s = xi[0] * xa + xi[1] * ya + xi[2] * za - 2.0;
+      n[a] = 0.125 * x * y * z * s;
+      dn[a][0] = 0.125 * xa * y * z * (s + x);
+      dn[a][1] = 0.125 * ya * x * z * (s + y);
+      dn[a][2] = 0.125 * za * x * y * (s + z);
+    } else if (xa == 0.0) {
+      const double q = 1.0 - xi[0] * xi[0];
+      n[a] = 0.25 * q * y * z;
+      dn[a][0] = -0.5 * xi[0] * y * z;
+      dn[a][1] = 0.25 * q * ya * z;
+      dn[a][2] = 0.25 * q * y * za;
+    } else if (ya == 0.0) {
+      const double q = 1.0 - xi[1] * xi[1];
+      n[a] = 0.25 * x * q * z;
+      dn[a][0] = 0.25 * xa * q * z;
+      dn[a][1] = -0.5 * xi[1] * x * z;
+      dn[a][2] = 0.25 * x * q * za;
+    } else {
+      const double q = 1.0 - xi[2] * xi[2];
+      n[a] = 0.25 * x * y * q;
+      dn[a][0] = 0.25 * xa * y * q;
+      dn[a][1] = 0.25 * x * ya * q;
+      dn[a][2] = -0.5 * xi[2] * x * y;
+    }
+  }
+}
+
+// Volume coordinates L0..L3 and their derivatives dL_a / dxi_r.
+constexpr double kTetDl[4][3] = {{-1, -1, -1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+
+void tet4(const double xi[3], double* n, double (*dn)[3]) {
+  n[0] = 1.0 - xi[0] - xi[1] - xi[2];
+  n[1] = xi[0];
+  n[2] = xi[1];
+  n[3] = xi[2];
+  for (int a = 0; a < 4; ++a)
+    for (int r = 0; r < 3; ++r) dn[a][r] = kTetDl[a][r];
+}
+
+void tet10(const double xi[3], double* n, double (*dn)[3]) {
+  const double l[4] = {1.0 - xi[0] - xi[1] - xi[2], xi[0], xi[1], xi[2]};
+  for (int a = 0; a < 4; ++a) {
+    n[a] = l[a] * (2.0 * l[a] - 1.0);
+    for (int r = 0; r < 3; ++r) dn[a][r] = (4.0 * l[a] - 1.0) * kTetDl[a][r];
+  }
+  for (const EdgeTopology& e : topology(CellType::tet10).edges) {
+    n[e.mid] = 4.0 * l[e.a] * l[e.b];
+    for (int r = 0; r < 3; ++r)
+      dn[e.mid][r] = 4.0 * (kTetDl[e.a][r] * l[e.b] + l[e.a] * kTetDl[e.b][r]);
+  }
+}
+
+void wedge6(const double xi[3], double* n, double (*dn)[3]) {
+  const double t[3] = {1.0 - xi[0] - xi[1], xi[0], xi[1]};
+  const double dt[3][2] = {{-1, -1}, {1, 0}, {0, 1}};
+  for (int a = 0; a < 6; ++a) {
+    const int k = a % 3;
+    const double side = a < 3 ? -1.0 : 1.0;
+    const double h = 0.5 * (1.0 + side * xi[2]);
+    n[a] = t[k] * h;
+    dn[a][0] = dt[k][0] * h;
+    dn[a][1] = dt[k][1] * h;
+    dn[a][2] = 0.5 * side * t[k];
+  }
+}
+
+// Tensor-product Gauss-Legendre rule of m points per direction on [-1, 1]^3, xi fastest.
+template <int M>
+constexpr std::array<QuadraturePoint, M * M * M> gauss_cube(const double (&x)[M],
+                                                            const double (&w)[M]) {
+  std::array<QuadraturePoint, M * M * M> out{};
+  for (int k = 0; k < M; ++k)
+    for (int j = 0; j < M; ++j)
+      for (int i = 0; i < M; ++i)
+        out[i + M * (j + M * k)] = {{x[i], x[j], x[k]}, w[i] * w[j] * w[k]};
+  return out;
+}
+
+constexpr double kG1[1] = {0.0}, kW1[1] = {2.0};
+constexpr double kG2[2] = {-0.57735026918962576451, 0.57735026918962576451}, kW2[2] = {1.0, 1.0};
+constexpr double kG3[3] = {-0.77459666924148337704, 0.0, 0.77459666924148337704},
+                 kW3[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+
+constexpr auto kCube1 = gauss_cube(kG1, kW1);
+constexpr auto kCube2 = gauss_cube(kG2, kW2);
+constexpr auto kCube3 = gauss_cube(kG3, kW3);
+
+constexpr std::array<QuadraturePoint, 1> kTet1 = {{{{0.25, 0.25, 0.25}, 1.0 / 6.0}}};
+constexpr double kTetA = 0.58541019662496845446, kTetB = 0.13819660112501051518;
+constexpr std::array<QuadraturePoint, 4> kTet4Points = {{{{kTetB, kTetB, kTetB}, 1.0 / 24.0},
+                                                         {{kTetA, kTetB, kTetB}, 1.0 / 24.0},
+                                                         {{kTetB, kTetA, kTetB}, 1.0 / 24.0},
+                                                         {{kTetB, kTetB, kTetA}, 1.0 / 24.0}}};
+// Wedge: the triangle's 3-point rule at (1/6, 1/6), (2/3, 1/6), (1/6, 2/3) (degree 2, weights
+// 1/6) on each of the 2 Gauss levels zeta = -+1/sqrt 3, the triangle fastest.
+constexpr double kW = 1.0 / 6.0, kWg = 0.57735026918962576451;
+constexpr std::array<QuadraturePoint, 6> kWedge6Points = {{{{kW, kW, -kWg}, kW},
+                                                           {{4 * kW, kW, -kWg}, kW},
+                                                           {{kW, 4 * kW, -kWg}, kW},
+                                                           {{kW, kW, kWg}, kW},
+                                                           {{4 * kW, kW, kWg}, kW},
+                                                           {{kW, 4 * kW, kWg}, kW}}};
+
+}  // namespace
+
+void shape_functions(CellType type, const double xi[3], double* n, double (*dn)[3]) {
+  switch (type) {
+    case CellType::hex8:
+      return hex8(xi, n, dn);
+    case CellType::hex20:
+      return hex20(xi, n, dn);
+    case CellType::tet4:
+      return tet4(xi, n, dn);
+    case CellType::tet10:
+      return tet10(xi, n, dn);
+    case CellType::wedge6:
+      return wedge6(xi, n, dn);
+  }
+}
+
+std::span<const QuadraturePoint> quadrature(CellType type, Integration rule) {
+  const bool full = rule == Integration::full;
+  switch (type) {
+    case CellType::hex8:
+      return full ? std::span<const QuadraturePoint>(kCube2) : kCube1;
+    case CellType::hex20:
+      return full ? std::span<const QuadraturePoint>(kCube3) : kCube2;
+    case CellType::tet4:
+      return full ? std::span<const QuadraturePoint>(kTet1) : std::span<const QuadraturePoint>();
+    case CellType::tet10:
+      return full ? std::span<const QuadraturePoint>(kTet4Points)
+                  : std::span<const QuadraturePoint>();
+    case CellType::wedge6:
+      return full ? std::span<const QuadraturePoint>(kWedge6Points)
+                  : std::span<const QuadraturePoint>();
+  }
+  return {};
+}
+
+double shape_gradients(CellType type, std::span<const double> X, const double xi[3], double* n,
+                       double (*dn)[3], double (*grad)[3]) {
+  const int nodes = topology(type).nodes;
+  shape_functions(type, xi, n, dn);
+  double j[3][3] = {};
+  for (int a = 0; a < nodes; ++a)
+    for (int i = 0; i < 3; ++i)
+      for (int r = 0; r < 3; ++r) j[i][r] += X[static_cast<std::size_t>(3 * a + i)] * dn[a][r];
+  const double det = j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1]) -
+                     j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0]) +
+                     j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
+  const double inv_det = 1.0 / det;
+  double inv[3][3];  // inv[r][i] = (J^-1)_ri, by cofactors
+  inv[0][0] = (j[1][1] * j[2][2] - j[1][2] * j[2][1]) * inv_det;
+  inv[0][1] = (j[0][2] * j[2][1] - j[0][1] * j[2][2]) * inv_det;
+  inv[0][2] = (j[0][1] * j[1][2] - j[0][2] * j[1][1]) * inv_det;
+  inv[1][0] = (j[1][2] * j[2][0] - j[1][0] * j[2][2]) * inv_det;
+  inv[1][1] = (j[0][0] * j[2][2] - j[0][2] * j[2][0]) * inv_det;
+  inv[1][2] = (j[0][2] * j[1][0] - j[0][0] * j[1][2]) * inv_det;
+  inv[2][0] = (j[1][0] * j[2][1] - j[1][1] * j[2][0]) * inv_det;
+  inv[2][1] = (j[0][1] * j[2][0] - j[0][0] * j[2][1]) * inv_det;
+  inv[2][2] = (j[0][0] * j[1][1] - j[0][1] * j[1][0]) * inv_det;
+  for (int a = 0; a < nodes; ++a)
+    for (int i = 0; i < 3; ++i)
+      grad[a][i] = dn[a][0] * inv[0][i] + dn[a][1] * inv[1][i] + dn[a][2] * inv[2][i];
+  return det;
+}
+
+double min_jacobian(CellType type, std::span<const double> X) {
+  double n[kMaxCellNodes], dn[kMaxCellNodes][3], grad[kMaxCellNodes][3];
+  double smallest = 0.0;
+  bool first = true;
+  for (const QuadraturePoint& q : quadrature(type, Integration::full)) {
+    const double det = shape_gradients(type, X, q.xi, n, dn, grad);
+    smallest = first ? det : std::min(smallest, det);
+    first = false;
+  }
+  return smallest;
+}
+
+}  // namespace abut
