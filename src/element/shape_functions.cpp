@@ -129,7 +129,125 @@ constexpr std::array<QuadraturePoint, 6> kWedge6Points = {{{{kW, kW, -kWg}, kW},
                                                            {{4 * kW, kW, kWg}, kW},
                                                            {{kW, 4 * kW, kWg}, kW}}};
 
+// Face rules.
+constexpr std::array<FacePoint, 4> kQuad2x2 = {
+    {{{-0.57735026918962576451, -0.57735026918962576451}, 1.0},
+     {{0.57735026918962576451, -0.57735026918962576451}, 1.0},
+     {{-0.57735026918962576451, 0.57735026918962576451}, 1.0},
+     {{0.57735026918962576451, 0.57735026918962576451}, 1.0}}};
+constexpr std::array<FacePoint, 9> quad_3x3() {
+  std::array<FacePoint, 9> out{};
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) out[i + 3 * j] = {{kG3[i], kG3[j]}, kW3[i] * kW3[j]};
+  return out;
+}
+constexpr auto kQuad3x3 = quad_3x3();
+constexpr std::array<FacePoint, 1> kTri1 = {{{{1.0 / 3.0, 1.0 / 3.0}, 0.5}}};
+// Dunavant's degree-4 rule: weights of the unit-area rule halved for the reference triangle.
+constexpr double kDa = 0.445948490915965, kDb = 0.091576213509771;
+constexpr double kDwa = 0.5 * 0.223381589678011, kDwb = 0.5 * 0.109951743655322;
+constexpr std::array<FacePoint, 6> kTri6Points = {{{{kDa, kDa}, kDwa},
+                                                   {{1.0 - 2.0 * kDa, kDa}, kDwa},
+                                                   {{kDa, 1.0 - 2.0 * kDa}, kDwa},
+                                                   {{kDb, kDb}, kDwb},
+                                                   {{1.0 - 2.0 * kDb, kDb}, kDwb},
+                                                   {{kDb, 1.0 - 2.0 * kDb}, kDwb}}};
+
+constexpr double kQuadCorner[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+
 }  // namespace
+
+void face_shape_functions(FaceType type, const double xi[2], double* n, double (*dn)[2]) {
+  const double x = xi[0], y = xi[1];
+  switch (type) {
+    case FaceType::quad4:
+      for (int a = 0; a < 4; ++a) {
+        const double xa = kQuadCorner[a][0], ya = kQuadCorner[a][1];
+        n[a] = 0.25 * (1 + xa * x) * (1 + ya * y);
+        dn[a][0] = 0.25 * xa * (1 + ya * y);
+        dn[a][1] = 0.25 * ya * (1 + xa * x);
+      }
+      return;
+    case FaceType::quad8:
+      for (int a = 0; a < 4; ++a) {
+        const double xa = kQuadCorner[a][0], ya = kQuadCorner[a][1];
+        const double s = xa * x + ya * y - 1.0;
+        n[a] = 0.25 * (1 + xa * x) * (1 + ya * y) * s;
+        dn[a][0] = 0.25 * xa * (1 + ya * y) * (s + 1 + xa * x);
+        dn[a][1] = 0.25 * ya * (1 + xa * x) * (s + 1 + ya * y);
+      }
+      for (int k = 0; k < 4; ++k) {  // midside of corners k, k + 1
+        const double xm = 0.5 * (kQuadCorner[k][0] + kQuadCorner[(k + 1) % 4][0]);
+        const double ym = 0.5 * (kQuadCorner[k][1] + kQuadCorner[(k + 1) % 4][1]);
+        if (xm == 0.0) {
+          n[4 + k] = 0.5 * (1 - x * x) * (1 + ym * y);
+          dn[4 + k][0] = -x * (1 + ym * y);
+          dn[4 + k][1] = 0.5 * (1 - x * x) * ym;
+        } else {
+          n[4 + k] = 0.5 * (1 + xm * x) * (1 - y * y);
+          dn[4 + k][0] = 0.5 * xm * (1 - y * y);
+          dn[4 + k][1] = -y * (1 + xm * x);
+        }
+      }
+      return;
+    case FaceType::tri3:
+    case FaceType::tri6: {
+      const double l[3] = {1.0 - x - y, x, y};
+      constexpr double dl[3][2] = {{-1, -1}, {1, 0}, {0, 1}};
+      if (type == FaceType::tri3) {
+        for (int a = 0; a < 3; ++a) {
+          n[a] = l[a];
+          dn[a][0] = dl[a][0];
+          dn[a][1] = dl[a][1];
+        }
+        return;
+      }
+      for (int a = 0; a < 3; ++a) {
+        n[a] = l[a] * (2 * l[a] - 1);
+        for (int r = 0; r < 2; ++r) dn[a][r] = (4 * l[a] - 1) * dl[a][r];
+        const int b = (a + 1) % 3;
+        n[3 + a] = 4 * l[a] * l[b];
+        for (int r = 0; r < 2; ++r) dn[3 + a][r] = 4 * (dl[a][r] * l[b] + l[a] * dl[b][r]);
+      }
+      return;
+    }
+  }
+}
+
+std::span<const FacePoint> face_quadrature(FaceType type) {
+  switch (type) {
+    case FaceType::quad4:
+      return kQuad2x2;
+    case FaceType::quad8:
+      return kQuad3x3;
+    case FaceType::tri3:
+      return kTri1;
+    case FaceType::tri6:
+      return kTri6Points;
+  }
+  return {};
+}
+
+void face_pressure_forces(FaceType type, std::span<const double> x, double p, std::span<double> f) {
+  const int nodes = face_node_count(type);
+  double n[8], dn[8][2];
+  std::fill(f.begin(), f.begin() + 3 * nodes, 0.0);
+  for (const FacePoint& q : face_quadrature(type)) {
+    face_shape_functions(type, q.xi, n, dn);
+    double t1[3] = {0, 0, 0}, t2[3] = {0, 0, 0};
+    for (int a = 0; a < nodes; ++a)
+      for (int i = 0; i < 3; ++i) {
+        t1[i] += x[static_cast<std::size_t>(3 * a + i)] * dn[a][0];
+        t2[i] += x[static_cast<std::size_t>(3 * a + i)] * dn[a][1];
+      }
+    // Outward normal times the area per unit natural area.
+    const double area[3] = {t1[1] * t2[2] - t1[2] * t2[1], t1[2] * t2[0] - t1[0] * t2[2],
+                            t1[0] * t2[1] - t1[1] * t2[0]};
+    for (int a = 0; a < nodes; ++a)
+      for (int i = 0; i < 3; ++i)
+        f[static_cast<std::size_t>(3 * a + i)] -= p * q.weight * n[a] * area[i];
+  }
+}
 
 void shape_functions(CellType type, const double xi[3], double* n, double (*dn)[3]) {
   switch (type) {

@@ -50,6 +50,31 @@ std::span<const QuadraturePoint> quadrature(CellType type, Integration rule);
 double shape_gradients(CellType type, std::span<const double> X, const double xi[3], double* n,
                        double (*dn)[3], double (*grad)[3]);
 
+// Faces (FaceType of mesh/topology.hpp), in natural coordinates of their own: quadrilaterals on
+// [-1, 1]^2 with corners (-1,-1), (1,-1), (1,1), (-1,1); triangles with area coordinates, corners
+// (0,0), (1,0), (0,1); midside nodes halfway along the edges corner 0-1, 1-2, ... The shape
+// functions are the 2-D members of the families above: bilinear quad4, serendipity quad8
+// (corners (1 + xi xi_a)(1 + eta eta_a)(xi xi_a + eta eta_a - 1) / 4, midsides (1 - xi^2)(1 + eta
+// eta_a) / 2 and likewise), linear tri3, quadratic tri6 (corners L (2L - 1), midsides 4 L_a L_b).
+void face_shape_functions(FaceType type, const double xi[2], double* n, double (*dn)[2]);
+
+struct FacePoint {
+  double xi[2];
+  double weight;
+};
+
+// Rules that integrate a uniform pressure's nodal forces on a curved face exactly (the integrand
+// N_a (x_xi x x_eta) has degree 2p per direction for a face of order p): quad4 2x2 and quad8 3x3
+// Gauss points; tri3 its centroid (weight 1/2); tri6 Dunavant's 6-point rule of degree 4 (D. A.
+// Dunavant, "High degree efficient symmetrical Gaussian quadrature rules for the triangle",
+// IJNME 21, 1985, table of degree 4).
+std::span<const FacePoint> face_quadrature(FaceType type);
+
+// The nodal forces of a uniform pressure p (positive pushing into the cell) on a face whose nodes
+// (face order) are at x (3 per node): f_a = -p int N_a (x_xi x x_eta) dxi deta, written to f (3
+// per node). The face's nodes run counter-clockwise seen from outside, so x_xi x x_eta points out.
+void face_pressure_forces(FaceType type, std::span<const double> x, double p, std::span<double> f);
+
 // The smallest det(dX/dxi) over the points of the full rule of a cell with coordinates X
 // (3 per node): <= 0 for a cell whose nodes are not in the type's order (or that is folded).
 double min_jacobian(CellType type, std::span<const double> X);

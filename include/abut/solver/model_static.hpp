@@ -13,8 +13,9 @@
 
 namespace abut {
 
-// A face of a hex: its index in Mesh::hexes and its local face 0..5 (kHexFaces in mesh.hpp,
-// which is the order of the Abaqus faces S1..S6: face = S number - 1).
+// A face of a solid element: its index in the Mesh::solid numbering (for a hexahedron its index in
+// Mesh::hexes) and its local face (topology(type).faces, the order of the Abaqus faces S1..Sn:
+// face = S number - 1). Contact surfaces take hexahedron faces only yet.
 struct HexFace {
   std::int32_t hex = 0;
   std::int8_t face = 0;

@@ -272,8 +272,18 @@ void require_hexahedron(const Reader& r, std::int32_t element, Loc where,
   throw InputError(r.where(where, keyword),
                    "element " + std::to_string(e.id) + " is a " +
                        std::string(topology(e.type).abaqus) +
-                       ": faces of elements other than C3D8/C3D8R in surfaces and pressure loads "
-                       "are not supported yet");
+                       ": contact surfaces on faces of elements other than C3D8/C3D8R are not "
+                       "supported yet");
+}
+
+void require_face(const Reader& r, std::int32_t element, int face, Loc where) {
+  const ElementRecord& e = r.elements[static_cast<std::size_t>(element)];
+  const CellTopology& t = topology(e.type);
+  if (face < static_cast<int>(t.faces.size())) return;
+  throw InputError(r.where(where, "*DLOAD"),
+                   "element " + std::to_string(e.id) + " is a " + std::string(t.abaqus) +
+                       ", which has the faces 1 to " + std::to_string(t.faces.size()) +
+                       " only: use P1 to P" + std::to_string(t.faces.size()));
 }
 
 std::vector<std::int32_t> hexes_of(const Reader& r, const Item& item, const std::string& keyword) {

@@ -66,7 +66,7 @@ void apply(const Reader& r, const LoadCard& card, State& state) {
                                                   ? hexes_of(r, line.target, keyword)
                                                   : nodes_of(r, line.target, keyword);
     for (const std::int32_t t : targets) {
-      if (card.kind == LoadKind::Pressure) require_hexahedron(r, t, line.target.where, keyword);
+      if (card.kind == LoadKind::Pressure) require_face(r, t, line.first, line.target.where);
       for (int k = line.first; k <= line.last; ++k) {
         Entry& e = state[{t, k}];
         const bool add = card.kind != LoadKind::Boundary && e.this_step;

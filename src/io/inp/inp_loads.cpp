@@ -251,8 +251,8 @@ void read_dload(Reader& r, const Card& c) {
       f.fail("load type",
              "load type '" + f.text(1) +
                  "' is not supported yet by abut: it reads uniform pressures P1 to P6 on the "
-                 "faces S1 to S6 of hexahedra (gravity, centrifugal, edge and non-uniform loads "
-                 "are not supported yet)");
+                 "faces S1 to S6 of solid elements (gravity, centrifugal, edge and non-uniform "
+                 "loads are not supported yet)");
     }
     f.at_most(3, "element or element set, Pn, magnitude");
     line.first = line.last = label[1] - '1';

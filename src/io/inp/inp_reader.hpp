@@ -365,9 +365,12 @@ void finish_steps(Reader& r);     // amplitudes, equations, static steps
 std::vector<std::int32_t> nodes_of(const Reader& r, const Item& item, const std::string& keyword);
 std::vector<std::int32_t> hexes_of(const Reader& r, const Item& item, const std::string& keyword);
 // InputError at `where` unless element (a solid index) is an 8-node hexahedron: the element
-// faces of surfaces and pressure loads are hexahedron faces yet.
+// faces of contact surfaces are hexahedron faces yet.
 void require_hexahedron(const Reader& r, std::int32_t element, Loc where,
                         const std::string& keyword);
+// InputError at `where` (a *DLOAD line) unless element (a solid index) has the face 0-based
+// `face`.
+void require_face(const Reader& r, std::int32_t element, int face, Loc where);
 // Node set / element set contents as indices (sorted, unique); InputError at `at` if undefined.
 std::vector<std::int32_t> node_set_members(const Reader& r, const std::string& name, Loc at,
                                            const std::string& keyword);

@@ -5,32 +5,13 @@
 #include <string>
 
 #include "abut/core/vec3.hpp"
+#include "abut/element/shape_functions.hpp"
 
 namespace abut::detail {
 
 namespace {
 
 std::int64_t face_key(const HexFace& f) { return 6 * static_cast<std::int64_t>(f.hex) + f.face; }
-
-// Nodal forces of a uniform pressure p on a bilinear face (nodes counter-clockwise seen from
-// outside): f_a = -p int N_a (x_xi x x_eta) dxi deta, 2 x 2 Gauss points (exact for a flat face,
-// whose integrand is then bilinear times constant).
-void add_pressure(const std::array<Vec3, 4>& x, double p, std::array<Vec3, 4>& f) {
-  static constexpr double kXi[4] = {-1, 1, 1, -1}, kEta[4] = {-1, -1, 1, 1};
-  const double g = 1.0 / std::sqrt(3.0);
-  for (const double xi : {-g, g})
-    for (const double eta : {-g, g}) {
-      Vec3 dxi{}, deta{};
-      double shape[4];
-      for (int a = 0; a < 4; ++a) {
-        shape[a] = 0.25 * (1 + kXi[a] * xi) * (1 + kEta[a] * eta);
-        dxi = dxi + x[a] * (0.25 * kXi[a] * (1 + kEta[a] * eta));
-        deta = deta + x[a] * (0.25 * kEta[a] * (1 + kXi[a] * xi));
-      }
-      const Vec3 area = cross(dxi, deta);  // outward normal times the area per unit xi, eta
-      for (int a = 0; a < 4; ++a) f[a] = f[a] - area * (p * shape[a]);
-    }
-}
 
 }  // namespace
 
@@ -96,20 +77,22 @@ void StepLoads::add_external_forces(double tau, std::span<const double> u, bool 
   for (const Ramp& r : pressures_) {
     const double p = value(r, tau);
     if (p == 0.0) continue;
-    const Hex8& hex = mesh.hexes[r.key / 6];
-    const int* face = kHexFaces[r.key % 6];
-    std::array<Vec3, 4> x, nodal{};
-    for (int a = 0; a < 4; ++a) {
-      const auto n = static_cast<std::size_t>(hex[face[a]]);
-      x[a] = mesh.nodes.position(n);
-      if (nonlinear_geometry) x[a] = x[a] + Vec3{u[3 * n], u[3 * n + 1], u[3 * n + 2]};
+    // The face's nodal forces on its current (NLGEOM) or reference position.
+    const SolidRef solid = mesh.solid(static_cast<std::size_t>(r.key / 6));
+    const FaceTopology& face = topology(solid.type).faces[static_cast<std::size_t>(r.key % 6)];
+    std::array<double, 24> x{}, nodal{};
+    for (int a = 0; a < face.size(); ++a) {
+      const auto n = static_cast<std::size_t>(solid.nodes[static_cast<std::size_t>(face.nodes[a])]);
+      const Vec3 p0 = mesh.nodes.position(n);
+      const double at[3] = {p0.x, p0.y, p0.z};
+      for (std::size_t i = 0; i < 3; ++i)
+        x[3 * static_cast<std::size_t>(a) + i] = at[i] + (nonlinear_geometry ? u[3 * n + i] : 0.0);
     }
-    add_pressure(x, p, nodal);
-    for (int a = 0; a < 4; ++a) {
-      const auto n = static_cast<std::size_t>(hex[face[a]]);
-      f[3 * n] += nodal[a].x;
-      f[3 * n + 1] += nodal[a].y;
-      f[3 * n + 2] += nodal[a].z;
+    face_pressure_forces(face.type, x, p, nodal);
+    for (int a = 0; a < face.size(); ++a) {
+      const auto n = static_cast<std::size_t>(solid.nodes[static_cast<std::size_t>(face.nodes[a])]);
+      for (std::size_t i = 0; i < 3; ++i)
+        f[3 * n + i] += nodal[3 * static_cast<std::size_t>(a) + i];
     }
   }
 }
