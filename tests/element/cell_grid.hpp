@@ -3,7 +3,9 @@
 // hexahedra whose corners may be moved, each hexahedron kept (hex8, hex20), split into 6
 // tetrahedra around its main diagonal (Freudenthal-Kuhn; conforming between neighbours because
 // every cube is split the same way) or into 2 wedges along the diagonal 0-2 of its bottom face.
-// Midside nodes sit halfway along their (straight) edge and are shared between neighbours.
+// Midside nodes sit halfway along their (straight) edge and are shared between neighbours. With
+// `map`, every node (midside nodes included) is then taken from the box to map(position): the
+// quadratic cells of a curved body have their midside nodes on it.
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -23,7 +25,8 @@ struct CellGrid {
 };
 
 inline CellGrid cell_grid(CellType type, int nx, int ny, int nz, Vec3 size,
-                          const std::function<Vec3(int, int, int, Vec3)>& move = {}) {
+                          const std::function<Vec3(int, int, int, Vec3)>& move = {},
+                          const std::function<Vec3(Vec3)>& map = {}) {
   CellGrid g;
   const auto id = [&](int i, int j, int k) {
     return static_cast<std::int32_t>(i + (nx + 1) * (j + (ny + 1) * k));
@@ -89,6 +92,13 @@ inline CellGrid cell_grid(CellType type, int nx, int ny, int nz, Vec3 size,
             break;
         }
       }
+  if (map)
+    for (std::size_t a = 0; a < g.nodes.size(); ++a) {
+      const Vec3 p = map(g.nodes.position(a));
+      g.nodes.x[a] = p.x;
+      g.nodes.y[a] = p.y;
+      g.nodes.z[a] = p.z;
+    }
   return g;
 }
 
