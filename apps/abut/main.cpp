@@ -31,19 +31,26 @@ fs::path default_output_dir(const fs::path& deck) {
   return deck.parent_path() / (deck.stem().string() + "_out");
 }
 
+// "40 hexahedra" or "40 hexahedra, 96 C3D10": the solids of a mesh by type.
+std::string solids_of(const abut::Mesh& mesh) {
+  std::string s = fmt::format("{} hexahedra", mesh.hex_count());
+  for (const abut::CellBlock& b : mesh.cells)
+    s += fmt::format(", {} {}", b.size(), abut::topology(b.type).abaqus);
+  return s;
+}
+
 // A static model: its parts, contacts and steps (no time step to report).
 void print_static_info(const abut::Model& model, std::ostream& out) {
   const abut::StaticSolver solver(model);  // validates it
   out << fmt::format("deck:       {}\n", model.deck_path);
   if (!model.title.empty()) out << fmt::format("title:      {}\n", model.title);
-  out << fmt::format("mesh:       {} nodes, {} hexahedra\n", model.mesh.nodes.size(),
-                     model.mesh.hex_count());
+  out << fmt::format("mesh:       {} nodes, {}\n", model.mesh.nodes.size(), solids_of(model.mesh));
   out << "parts:\n";
   for (const abut::Part& p : model.parts)
     out << fmt::format(
         "  {:>6}  {:<20} material {}, {} integration\n", p.id, p.title.empty() ? "-" : p.title,
         p.material_id,
-        p.solid_integration == abut::Part::SolidIntegration::Full ? "full (C3D8)" : "one-point");
+        p.solid_integration == abut::Part::SolidIntegration::Full ? "full" : "reduced");
   out << fmt::format("contacts:   {}\n", model.contacts.size());
   for (const abut::ContactSpec& c : model.contacts)
     out << fmt::format("  {:>6}  {} ({})\n", c.id, c.title.empty() ? "-" : c.title,
@@ -164,9 +171,9 @@ int main(int argc, char** argv) {
     if (*check && !model.static_steps.empty()) {
       const abut::StaticSolver solver(model);  // validates what the static solver needs
       std::cout << fmt::format(
-          "{}: OK ({} nodes, {} hexahedra, {} parts, {} contacts, {} static "
+          "{}: OK ({} nodes, {}, {} parts, {} contacts, {} static "
           "steps)\n",
-          deck, model.mesh.nodes.size(), model.mesh.hex_count(), model.parts.size(),
+          deck, model.mesh.nodes.size(), solids_of(model.mesh), model.parts.size(),
           model.contacts.size(), model.static_steps.size());
       return 0;
     }

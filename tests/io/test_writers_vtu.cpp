@@ -155,6 +155,35 @@ TEST(VtuWriter, WritesHexesThenShellsForParaView) {
   EXPECT_THROW(write_vtu(output_dir() / "bad.vtu", mesh.view(), {}, {}), std::invalid_argument);
 }
 
+// Cell blocks follow the hexahedra, each cell in VTK's node order: a wedge's triangles turn the
+// other way in VTK (mesh/topology.hpp), a 10-node tetrahedron keeps the Abaqus order.
+TEST(VtuWriter, WritesCellBlocksInVtkOrderAfterTheHexahedra) {
+  TwoHexes mesh(0.0);
+  HexGridView view = mesh.view();
+  std::vector<CellBlock> blocks(2);
+  blocks[0].type = CellType::wedge6;
+  blocks[0].nodes = {0, 1, 3, 6, 7, 9};
+  blocks[0].id = {3};
+  blocks[0].part = {1};
+  blocks[1].type = CellType::tet10;
+  blocks[1].nodes = {0, 1, 3, 6, 2, 4, 5, 7, 8, 9};
+  blocks[1].id = {4};
+  blocks[1].part = {1};
+  view.cells = blocks;
+  const auto path = output_dir() / "blocks.vtu";
+  write_vtu(path, view, {}, {});
+  const std::string vtu = file_text(path);
+  EXPECT_NE(vtu.find("<Piece NumberOfPoints=\"12\" NumberOfCells=\"4\">"), std::string::npos);
+  const auto connectivity = data_array<std::int64_t>(vtu, "connectivity");
+  ASSERT_EQ(connectivity.size(), 16u + 6u + 10u);
+  EXPECT_EQ(std::vector<std::int64_t>(connectivity.begin() + 16, connectivity.end()),
+            (std::vector<std::int64_t>{0, 3, 1, 6, 9, 7, 0, 1, 3, 6, 2, 4, 5, 7, 8, 9}));
+  EXPECT_EQ(data_array<std::int64_t>(vtu, "offsets"), (std::vector<std::int64_t>{8, 16, 22, 32}));
+  EXPECT_EQ(data_array<std::uint8_t>(vtu, "types"), (std::vector<std::uint8_t>{12, 12, 13, 24}));
+  blocks[1].nodes[9] = 12;  // one past the last node
+  EXPECT_THROW(write_vtu(output_dir() / "bad.vtu", view, {}, {}), std::invalid_argument);
+}
+
 TEST(VtuWriter, RejectsInconsistentInput) {
   const auto dir =
       std::filesystem::temp_directory_path() / ("abut_test_vtu_" + std::to_string(::getpid()));
