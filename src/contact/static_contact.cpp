@@ -22,11 +22,15 @@ Vec3 tangential(const Vec3& v, const Vec3& n) { return v - n * dot(v, n); }
 
 StaticContact::StaticContact(StaticContactSettings settings, ContactSurface secondary,
                              ContactSurface main, std::span<const std::int32_t> secondary_nodes,
-                             const ContactInput& initial)
-    : settings_(settings), secondary_(std::move(secondary)), main_(std::move(main)) {
-  x0_.assign(initial.x.begin(), initial.x.end());
-  y0_.assign(initial.y.begin(), initial.y.end());
-  z0_.assign(initial.z.begin(), initial.z.end());
+                             const ContactInput& initial, DependentNodes dependents)
+    : settings_(settings),
+      secondary_(std::move(secondary)),
+      main_(std::move(main)),
+      dependents_(std::move(dependents)) {
+  const ContactInput reference = extended(initial);
+  x0_.assign(reference.x.begin(), reference.x.end());
+  y0_.assign(reference.y.begin(), reference.y.end());
+  z0_.assign(reference.z.begin(), reference.z.end());
   xc_ = x0_, yc_ = y0_, zc_ = z0_;
   const std::size_t nf = main_.size();
   main_sharp_ = sharp_edges(main_, x0_, y0_, z0_, settings_.edge_angle, &main_free_);
@@ -108,7 +112,16 @@ void StaticContact::initial_gaps(const ContactInput& initial) {
   elements_.clear();
 }
 
-void StaticContact::evaluate(const ContactInput& in) {
+ContactInput StaticContact::extended(const ContactInput& host) {
+  if (dependents_.empty()) return host;
+  dependents_.extend(host.x, host.y, host.z, ex_, ey_, ez_);
+  ContactInput in = host;
+  in.x = ex_, in.y = ey_, in.z = ez_;
+  return in;
+}
+
+void StaticContact::evaluate(const ContactInput& host) {
+  const ContactInput in = extended(host);
   const std::size_t np = point_facet_.size();
   const double search =
       std::max(settings_.search_distance, reach_at_clearance(settings_.normal)) + settings_.padding;
@@ -310,6 +323,7 @@ void StaticContact::evaluate(const ContactInput& in) {
       const auto phi = quad_shape(xi, eta);
       for (int a = 0; a < 4; ++a) wt.add(main_.facets[facet][a], -phi[a]);
     }
+    wt = dependents_.expand(wt);  // host nodes only
     out.weights = wt;
     out.partner = facet;
     // Relative motion since the last converged state.

@@ -233,19 +233,19 @@ void DeckReader::finish_static_steps() {
 
   // *LOAD_PRESSURE on the exterior hex faces, in every step.
   for (const PressureLoad& p : model.pressures) {
-    const PressureHexFaces faces = pressure_hex_faces(model, p);
+    const PressureSolidFaces faces = pressure_solid_faces(model, p);
     if (!faces.shells.empty())
       throw InputError(
           p.entity.where,
           "a pressure on shells (part " +
               std::to_string(mesh.shell_part[static_cast<std::size_t>(faces.shells.front())]) +
               ") is not supported in static steps yet");
-    for (const HexFace& f : faces.faces)
+    for (const SolidFace& f : faces.faces)
       for (std::size_t s = 0; s < n_steps; ++s)
-        add_load(pressures[s], 6 * static_cast<std::int64_t>(f.hex) + f.face,
+        add_load(pressures[s], 6 * static_cast<std::int64_t>(f.solid) + f.face,
                  Entry{p.scale, p.curve, p.where},
-                 "face " + std::to_string(f.face + 1) + " of hexahedron " +
-                     std::to_string(mesh.hex_id[static_cast<std::size_t>(f.hex)]));
+                 "face " + std::to_string(f.face + 1) + " of element " +
+                     std::to_string(mesh.solid(static_cast<std::size_t>(f.solid)).id));
   }
 
   // *LOAD_GRAVITY: the weight of each node's lumped mass (the explicit solver's, rho V / 8 per

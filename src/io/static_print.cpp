@@ -39,19 +39,26 @@ void tangent_basis(const Vec3& n, Vec3& t1, Vec3& t2) {
   t2 = cross(n, t1);
 }
 
-// The hex and its face (S number) of a secondary facet, for surface-to-surface rows.
+// The solid and its face (S number) of a secondary facet, for surface-to-surface rows: the face
+// that holds all of the facet's nodes (a facet of a quadratic face holds some of them).
 void element_face(const Model& model, const ContactSurface& s, std::int32_t facet,
                   std::int64_t& element, int& face) {
-  const std::int32_t hex = s.element[static_cast<std::size_t>(facet)];
-  element = hex >= 0 ? model.mesh.hex_id[static_cast<std::size_t>(hex)] : 0;
+  const std::int32_t solid = s.element[static_cast<std::size_t>(facet)];
+  element = 0;
   face = 0;
-  if (hex < 0) return;
-  const Hex8& h = model.mesh.hexes[static_cast<std::size_t>(hex)];
-  for (int f = 0; f < 6 && face == 0; ++f) {
-    int shared = 0;
-    for (const int a : kHexFaces[f])
-      for (const std::int32_t n : s.facets[static_cast<std::size_t>(facet)]) shared += h[a] == n;
-    if (shared >= 4) face = f + 1;
+  if (solid < 0 || static_cast<std::size_t>(solid) >= model.mesh.solid_count()) return;
+  const SolidRef cell = model.mesh.solid(static_cast<std::size_t>(solid));
+  element = cell.id;
+  const auto& faces = topology(cell.type).faces;
+  for (std::size_t f = 0; f < faces.size() && face == 0; ++f) {
+    bool all = true;
+    for (const std::int32_t n : s.facets[static_cast<std::size_t>(facet)]) {
+      bool on_face = false;
+      for (int a = 0; a < faces[f].size(); ++a)
+        on_face = on_face || cell.nodes[static_cast<std::size_t>(faces[f].nodes[a])] == n;
+      all = all && on_face;
+    }
+    if (all) face = static_cast<int>(f) + 1;
   }
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "abut/core/error.hpp"
+#include "abut/mesh/shape_functions.hpp"
 
 namespace abut {
 namespace {
@@ -22,48 +23,79 @@ constexpr std::array<std::array<double, 3>, 8> kHexCorners{{
 }};
 
 struct FaceRecord {
-  std::array<std::int32_t, 4> key;  // sorted node indices: equal for the two sides of a face
-  std::int32_t hex;
+  std::array<std::int32_t, 4> key;  // sorted corners (-1 first for a triangle): equal for the
+                                    // two sides of a face
+  std::int32_t solid;
   std::int32_t local;
-  std::int32_t exposed_by = -1;  // an interior face: the hex on its other side
+  std::int32_t exposed_by = -1;  // an interior face: the solid on its other side
 };
 
-std::array<std::int32_t, 4> face_nodes(const Hex8& hex, int local) {
-  std::array<std::int32_t, 4> f{};
-  for (int k = 0; k < 4; ++k) f[k] = hex[kHexFaces[local][k]];
-  return f;
+std::array<std::int32_t, 4> face_key(const SolidRef& cell, const FaceTopology& face) {
+  std::array<std::int32_t, 4> key{-1, -1, -1, -1};
+  const int corners = face_corner_count(face.type);
+  for (int k = 0; k < corners; ++k) key[k] = cell.nodes[static_cast<std::size_t>(face.nodes[k])];
+  std::sort(key.begin(), key.end());
+  return key;
+}
+
+// A solid's volume, which must be positive (nodes in the type's order).
+double positive_volume(const Mesh& mesh, const SolidRef& cell) {
+  double volume = 0.0;
+  if (cell.type == CellType::hex8) {
+    Hex8 hex;
+    std::copy(cell.nodes.begin(), cell.nodes.end(), hex.begin());
+    volume = hex_volume(mesh.nodes, hex);
+  } else {
+    double X[3 * kMaxCellNodes];
+    for (std::size_t a = 0; a < cell.nodes.size(); ++a) {
+      const Vec3 p = mesh.nodes.position(static_cast<std::size_t>(cell.nodes[a]));
+      X[3 * a] = p.x, X[3 * a + 1] = p.y, X[3 * a + 2] = p.z;
+    }
+    volume = cell_volume(cell.type, std::span<const double>(X, 3 * cell.nodes.size()));
+  }
+  if (!(volume > 0.0))
+    throw InputError("element " + std::to_string(cell.id) +
+                     " has a non-positive volume: expected " +
+                     std::string(topology(cell.type).node_order));
+  return volume;
+}
+
+// The area of a solid's face, through all of its nodes.
+double area_of_face(const Mesh& mesh, const SolidRef& cell, const FaceTopology& face) {
+  double x[3 * 8];
+  for (int a = 0; a < face.size(); ++a) {
+    const Vec3 p = mesh.nodes.position(static_cast<std::size_t>(cell.nodes[face.nodes[a]]));
+    x[3 * a] = p.x, x[3 * a + 1] = p.y, x[3 * a + 2] = p.z;
+  }
+  return face_area(face.type,
+                   std::span<const double>(x, 3 * static_cast<std::size_t>(face.size())));
 }
 
 std::vector<SkinFace> extract(const Mesh& mesh, bool all_parts, std::span<const std::int64_t> parts,
                               bool merge, const std::function<bool(std::int32_t)>& erodible) {
-  // Faces of the other cell types are not in the skin yet: a hexahedron's face shared with one
-  // of them would pass for exterior. Say so rather than build a wrong surface.
-  if (!mesh.cells.empty()) {
-    throw InputError("surfaces (contact, pressure) on a mesh with " +
-                     std::string(topology(mesh.cells.front().type).abaqus) +
-                     " elements are not supported yet: only meshes of "
-                     "8-node hexahedra and shells have them");
-  }
   std::vector<std::int64_t> selected(parts.begin(), parts.end());
   std::sort(selected.begin(), selected.end());
-  auto is_selected = [&](std::int32_t hex) {
-    return all_parts || std::binary_search(selected.begin(), selected.end(), mesh.hex_part[hex]);
+  const std::size_t solids = mesh.solid_count();
+  std::vector<std::int64_t> part_of(solids);
+  for (std::size_t e = 0; e < solids; ++e) part_of[e] = mesh.solid(e).part;
+  auto is_selected = [&](std::int32_t solid) {
+    return all_parts || std::binary_search(selected.begin(), selected.end(), part_of[solid]);
   };
 
-  // Sorting the faces of all hexes by their node set pairs up the two sides of interior faces
+  // Sorting the faces of all solids by their corners pairs up the two sides of interior faces
   // in O(n log n), deterministically.
   std::vector<FaceRecord> records;
-  records.reserve(mesh.hexes.size() * 6);
-  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
-    for (int local = 0; local < 6; ++local) {
-      auto key = face_nodes(mesh.hexes[h], local);
-      std::sort(key.begin(), key.end());
-      records.push_back({key, static_cast<std::int32_t>(h), local});
-    }
+  records.reserve(solids * 6);
+  for (std::size_t e = 0; e < solids; ++e) {
+    const SolidRef cell = mesh.solid(e);
+    const auto& faces = topology(cell.type).faces;
+    for (std::size_t local = 0; local < faces.size(); ++local)
+      records.push_back({face_key(cell, faces[local]), static_cast<std::int32_t>(e),
+                         static_cast<std::int32_t>(local)});
   }
   std::sort(records.begin(), records.end(), [](const FaceRecord& a, const FaceRecord& b) {
     if (a.key != b.key) return a.key < b.key;
-    return a.hex != b.hex ? a.hex < b.hex : a.local < b.local;
+    return a.solid != b.solid ? a.solid < b.solid : a.local < b.local;
   });
 
   std::vector<FaceRecord> kept;
@@ -72,15 +104,14 @@ std::vector<SkinFace> extract(const Mesh& mesh, bool all_parts, std::span<const 
     while (j < records.size() && records[j].key == records[i].key) ++j;
     const std::size_t users = j - i;
     if (users == 1) {
-      if (is_selected(records[i].hex)) kept.push_back(records[i]);
-    } else if (users == 2 && merge &&
-               mesh.hex_part[records[i].hex] != mesh.hex_part[records[i + 1].hex]) {
+      if (is_selected(records[i].solid)) kept.push_back(records[i]);
+    } else if (users == 2 && merge && part_of[records[i].solid] != part_of[records[i + 1].solid]) {
       for (std::size_t k = i; k < j; ++k)
-        if (is_selected(records[k].hex)) kept.push_back(records[k]);
+        if (is_selected(records[k].solid)) kept.push_back(records[k]);
     } else if (users == 2 && erodible) {  // each side, exposed when the other one erodes
       for (std::size_t k = i; k < j; ++k) {
-        const std::int32_t other = records[k == i ? i + 1 : i].hex;
-        if (is_selected(records[k].hex) && erodible(other)) {
+        const std::int32_t other = records[k == i ? i + 1 : i].solid;
+        if (is_selected(records[k].solid) && erodible(other)) {
           kept.push_back(records[k]);
           kept.back().exposed_by = other;
         }
@@ -89,7 +120,7 @@ std::vector<SkinFace> extract(const Mesh& mesh, bool all_parts, std::span<const 
     i = j;
   }
   std::sort(kept.begin(), kept.end(), [](const FaceRecord& a, const FaceRecord& b) {
-    return a.hex != b.hex ? a.hex < b.hex : a.local < b.local;
+    return a.solid != b.solid ? a.solid < b.solid : a.local < b.local;
   });
 
   std::vector<SkinFace> faces;
@@ -97,26 +128,35 @@ std::vector<SkinFace> extract(const Mesh& mesh, bool all_parts, std::span<const 
   std::int32_t volume_of = -1;
   double volume = 0.0;
   for (const FaceRecord& r : kept) {
-    if (r.hex != volume_of) {
-      volume_of = r.hex;
-      volume = hex_volume(mesh.nodes, mesh.hexes[r.hex]);
-      if (!(volume > 0.0))
-        throw InputError("element " + std::to_string(mesh.hex_id[r.hex]) +
-                         " has a non-positive volume: expected nodes n1-n4 counter-clockwise on "
-                         "the bottom face seen from above, n5-n8 above them");
+    if (r.solid != volume_of) {
+      volume_of = r.solid;
+      volume = positive_volume(mesh, mesh.solid(static_cast<std::size_t>(r.solid)));
     }
-    SkinFace f;
-    f.nodes = face_nodes(mesh.hexes[r.hex], r.local);
-    f.hex = r.hex;
-    f.part = mesh.hex_part[r.hex];
-    f.thickness = volume / quad_area(mesh.nodes, f.nodes);
-    f.exposed_by = r.exposed_by;
-    faces.push_back(f);
+    const std::size_t first = faces.size();
+    append_facets(mesh, r.solid, r.local, volume, faces);
+    for (std::size_t k = first; k < faces.size(); ++k) faces[k].exposed_by = r.exposed_by;
   }
   return faces;
 }
 
 }  // namespace
+
+void append_facets(const Mesh& mesh, std::int32_t solid, int face, double volume,
+                   std::vector<SkinFace>& out) {
+  const SolidRef cell = mesh.solid(static_cast<std::size_t>(solid));
+  const FaceTopology& ft = topology(cell.type).faces[static_cast<std::size_t>(face)];
+  if (volume <= 0.0) volume = positive_volume(mesh, cell);
+  SkinFace f;
+  f.solid = solid;
+  f.face = static_cast<std::int8_t>(face);
+  f.part = cell.part;
+  f.thickness = volume / area_of_face(mesh, cell, ft);
+  for (const auto& facet : linear_facets(ft.type)) {
+    for (int a = 0; a < 4; ++a)
+      f.nodes[a] = cell.nodes[static_cast<std::size_t>(ft.nodes[facet[a]])];
+    out.push_back(f);
+  }
+}
 
 std::vector<SkinFace> exterior_faces(const Mesh& mesh, std::span<const std::int64_t> parts,
                                      bool merge,

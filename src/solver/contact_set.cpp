@@ -119,7 +119,7 @@ double element_step(const Model& model, const SkinFace& f) {
     const double length = shell4_critical_length(shell4_geometry(p), f.nodes[2] == f.nodes[3]);
     return length / std::sqrt(young / (density_of(material) * (1.0 - nu * nu)));
   }
-  const Hex8& hex = model.mesh.hexes[static_cast<std::size_t>(f.hex)];
+  const Hex8& hex = model.mesh.hexes[static_cast<std::size_t>(f.solid)];
   const double length =
       hex8_critical_length(hex8_modal_gradient_at(hex, model.mesh.nodes), lambda, m.shear);
   return length / std::sqrt((lambda + 2.0 * m.shear) / density_of(material));

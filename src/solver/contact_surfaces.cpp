@@ -9,8 +9,23 @@
 
 #include "abut/contact/adjust.hpp"
 #include "abut/core/error.hpp"
+#include "abut/mesh/shape_functions.hpp"
 
 namespace abut {
+
+namespace {
+
+double solid_volume(const Mesh& mesh, std::int32_t solid) {
+  const SolidRef cell = mesh.solid(static_cast<std::size_t>(solid));
+  std::vector<double> X(3 * cell.nodes.size());
+  for (std::size_t a = 0; a < cell.nodes.size(); ++a) {
+    const Vec3 p = mesh.nodes.position(static_cast<std::size_t>(cell.nodes[a]));
+    X[3 * a] = p.x, X[3 * a + 1] = p.y, X[3 * a + 2] = p.z;
+  }
+  return cell_volume(cell.type, X);
+}
+
+}  // namespace
 
 ContactSurface contact_surface(
     const Mesh& mesh, std::span<const SkinFace> faces,
@@ -33,8 +48,7 @@ ContactSurface contact_surface(
       s.element.end()[-1] = s.element.end()[-2] = element_index(mesh, f);
       continue;
     }
-    const double volume =
-        moduli_of_part ? hex_volume(mesh.nodes, mesh.hexes[static_cast<std::size_t>(f.hex)]) : 0.0;
+    const double volume = moduli_of_part ? solid_volume(mesh, f.solid) : 0.0;
     s.add(f.nodes, f.part, penalty_of_face(f), f.thickness, m.bulk, volume);
     s.element.back() = element_index(mesh, f);
     s.exposed_by.back() = f.exposed_by;
@@ -43,7 +57,7 @@ ContactSurface contact_surface(
 }
 
 std::int32_t element_index(const Mesh& mesh, const SkinFace& f) {
-  return f.shell >= 0 ? static_cast<std::int32_t>(mesh.hex_count()) + f.shell : f.hex;
+  return f.shell >= 0 ? static_cast<std::int32_t>(mesh.solid_count()) + f.shell : f.solid;
 }
 
 bool part_can_erode(const Model& model, std::int64_t part) {
@@ -57,11 +71,11 @@ std::vector<SkinFace> contact_faces(const Model& model, const EntityRef& entity,
                                     bool exposed_faces) {
   std::vector<SkinFace> faces;
   std::vector<std::int64_t> parts;
-  // Interior faces next to hexes that can erode, when erosion may expose them.
-  std::vector<std::uint8_t> erodible(model.mesh.hex_count(), 0);
+  // Interior faces next to solids that can erode, when erosion may expose them.
+  std::vector<std::uint8_t> erodible(model.mesh.solid_count(), 0);
   if (exposed_faces)
-    for (std::size_t h = 0; h < erodible.size(); ++h)
-      erodible[h] = part_can_erode(model, model.mesh.hex_part[h]) ? 1 : 0;
+    for (std::size_t e = 0; e < erodible.size(); ++e)
+      erodible[e] = part_can_erode(model, model.mesh.solid(e).part) ? 1 : 0;
   std::function<bool(std::int32_t)> exposable;
   if (std::find(erodible.begin(), erodible.end(), 1) != erodible.end())
     exposable = [&erodible](std::int32_t h) { return erodible[h] != 0; };
@@ -82,15 +96,11 @@ std::vector<SkinFace> contact_faces(const Model& model, const EntityRef& entity,
     parts = model.parts_of(entity);
     faces = located([&] { return exterior_faces(model.mesh, parts, merge, exposable); });
   } else if (entity.type == EntityType::FaceSet) {
-    for (const HexFace& hf : model.face_set(entity).faces) {
-      SkinFace f;
-      const Hex8& hex = model.mesh.hexes[hf.hex];
-      for (int a = 0; a < 4; ++a) f.nodes[a] = hex[kHexFaces[hf.face][a]];
-      f.hex = hf.hex;
-      f.part = model.mesh.hex_part[hf.hex];
-      f.thickness = hex_volume(model.mesh.nodes, hex) / quad_area(model.mesh.nodes, f.nodes);
-      faces.push_back(f);
-    }
+    located([&] {
+      for (const SolidFace& sf : model.face_set(entity).faces)
+        append_facets(model.mesh, sf.solid, sf.face, 0.0, faces);
+      return 0;
+    });
   } else {
     throw InputError(entity.where,
                      "a contact surface is a part (P), a part set (PS), ALL or element faces");

@@ -149,8 +149,12 @@ std::vector<std::int32_t> Model::nodes_of(const EntityRef& entity) const {
                        "expected nodes here, not the analytic tool " + std::to_string(entity.id));
     case EntityType::FaceSet: {
       const FaceSet& set = face_set(entity);
-      for (const HexFace& f : set.faces)
-        for (const int a : kHexFaces[f.face]) nodes.push_back(mesh.hexes[f.hex][a]);
+      for (const SolidFace& f : set.faces) {
+        const SolidRef cell = mesh.solid(static_cast<std::size_t>(f.solid));
+        const FaceTopology& face = topology(cell.type).faces[static_cast<std::size_t>(f.face)];
+        for (int a = 0; a < face.size(); ++a)
+          nodes.push_back(cell.nodes[static_cast<std::size_t>(face.nodes[a])]);
+      }
       break;
     }
   }

@@ -93,27 +93,22 @@ std::vector<Quad4> pressure_faces(const Model& model, const PressureLoad& load) 
   return faces;
 }
 
-PressureHexFaces pressure_hex_faces(const Model& model, const PressureLoad& load) {
+PressureSolidFaces pressure_solid_faces(const Model& model, const PressureLoad& load) {
   const Mesh& mesh = model.mesh;
   std::vector<SkinFace> skin;
   std::vector<std::uint8_t> shell_selected;
   select_faces(model, load, skin, shell_selected);
-  PressureHexFaces out;
+  PressureSolidFaces out;
   for (std::size_t s = 0; s < mesh.shell_count(); ++s)
     if (shell_selected[s]) out.shells.push_back(static_cast<std::int32_t>(s));
   for (const SkinFace& f : skin) {
     Quad4 q = f.nodes;
     if (!normalise_face(q)) continue;  // no area, as in pressure_faces
-    // The skin lists a face's nodes in the order of kHexFaces: that identifies the local face.
-    const Hex8& hex = mesh.hexes[static_cast<std::size_t>(f.hex)];
-    for (std::int8_t local = 0; local < 6; ++local) {
-      bool same = true;
-      for (int a = 0; a < 4 && same; ++a) same = hex[kHexFaces[local][a]] == f.nodes[a];
-      if (same) {
-        out.faces.push_back({f.hex, local});
-        break;
-      }
-    }
+    // A quadratic face comes as several facets: load the face once.
+    const SolidFace face{f.solid, f.face};
+    if (out.faces.empty() || out.faces.back().solid != face.solid ||
+        out.faces.back().face != face.face)
+      out.faces.push_back(face);
   }
   if (out.faces.empty() && out.shells.empty()) no_faces(load);
   return out;

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <vector>
 
-#include "abut/element/shape_functions.hpp"
+#include "abut/mesh/shape_functions.hpp"
 
 namespace abut {
 namespace {

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "abut/element/hex8_full.hpp"
-#include "abut/element/shape_functions.hpp"
 #include "abut/element/solid_full.hpp"
+#include "abut/mesh/shape_functions.hpp"
 #include "cell_grid.hpp"
 
 namespace abut {

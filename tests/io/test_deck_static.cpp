@@ -325,7 +325,7 @@ ALL, 0, 1, 2.0
     EXPECT_DOUBLE_EQ(p.value, 5.0);  // two loads of one curve add up
     EXPECT_TRUE(p.amplitude.total_time);
     // An exterior face: its centre lies on the block's boundary.
-    const Hex8& hex = m.mesh.hexes[static_cast<std::size_t>(p.face.hex)];
+    const Hex8& hex = m.mesh.hexes[static_cast<std::size_t>(p.face.solid)];
     double c[3] = {0, 0, 0};
     for (const int a : kHexFaces[p.face.face]) {
       const Vec3 x = m.mesh.nodes.position(static_cast<std::size_t>(hex[a]));

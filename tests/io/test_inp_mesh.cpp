@@ -50,10 +50,10 @@ std::set<std::int64_t> node_ids(const Model& m, const std::vector<std::int32_t>&
   return ids;
 }
 
-std::set<std::int64_t> face_ids(const Model& m, const HexFace& f) {
+std::set<std::int64_t> face_ids(const Model& m, const SolidFace& f) {
   std::set<std::int64_t> ids;
   for (const int a : kHexFaces[f.face])
-    ids.insert(m.mesh.nodes.id[static_cast<std::size_t>(m.mesh.hexes[f.hex][a])]);
+    ids.insert(m.mesh.nodes.id[static_cast<std::size_t>(m.mesh.hexes[f.solid][a])]);
   return ids;
 }
 
@@ -189,7 +189,7 @@ TEST(InpMesh, SurfaceFacesS1ToS6AreTheCalculixFaces) {
     EXPECT_EQ(s.name, "F" + std::to_string(k + 1));
     EXPECT_EQ(s.id, k + 1);
     ASSERT_EQ(s.faces.size(), 1u);
-    EXPECT_EQ(s.faces[0].hex, 0);
+    EXPECT_EQ(s.faces[0].solid, 0);
     EXPECT_EQ(s.faces[0].face, k);
     std::set<std::int64_t> expected;
     for (const int a : calculix[k]) expected.insert(element[a - 1]);
@@ -208,7 +208,7 @@ TOP
 )" + kStep);
   ASSERT_EQ(m.face_sets.size(), 1u);
   ASSERT_EQ(m.face_sets[0].faces.size(), 2u);
-  EXPECT_EQ(m.face_sets[0].faces[1].hex, 1);
+  EXPECT_EQ(m.face_sets[0].faces[1].solid, 1);
   EXPECT_EQ(face_ids(m, m.face_sets[0].faces[1]), (std::set<std::int64_t>{2, 3, 5, 6}));
   // NALL, TOP, then the node surface as a node set of its own.
   ASSERT_EQ(m.node_sets.size(), 3u);

@@ -53,7 +53,7 @@ std::map<std::pair<std::int64_t, int>, double> by_face(const Model& m,
                                                        const std::vector<StepPressure>& list) {
   std::map<std::pair<std::int64_t, int>, double> out;
   for (const StepPressure& p : list)
-    out[{m.mesh.hex_id[static_cast<std::size_t>(p.face.hex)], p.face.face}] = p.value;
+    out[{m.mesh.hex_id[static_cast<std::size_t>(p.face.solid)], p.face.face}] = p.value;
   return out;
 }
 

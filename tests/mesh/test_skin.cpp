@@ -1,11 +1,12 @@
-#include "abut/mesh/skin.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
 
+#include "../element/cell_grid.hpp"
 #include "abut/core/error.hpp"
+#include "abut/mesh/shape_functions.hpp"
+#include "abut/mesh/skin.hpp"
 
 namespace abut {
 namespace {
@@ -61,7 +62,7 @@ TEST(Skin, BoxHasOutwardExteriorFacesWithElementThickness) {
     EXPECT_EQ(f.part, 7);
     const Vec3 n = normal(mesh, f);
     const Vec3 c = centroid(mesh, f);
-    EXPECT_GT(dot(n, c - body_centre), 0.0) << "face of hex " << f.hex << " points inward";
+    EXPECT_GT(dot(n, c - body_centre), 0.0) << "face of hex " << f.solid << " points inward";
     // Thickness = element edge along the normal (hx, hy or hz).
     const double expected = std::abs(n.x) * 0.5 + std::abs(n.y) * 0.25 + std::abs(n.z) * 0.1;
     EXPECT_NEAR(f.thickness, expected, 1e-12);
@@ -111,6 +112,90 @@ TEST(Skin, InvertedHexIsAnInputError) {
   mesh.hexes[0] = {h[4], h[5], h[6], h[7], h[0], h[1], h[2], h[3]};  // top and bottom swapped: mirrored
   EXPECT_THROW(exterior_faces(mesh, false), InputError);
 }
+
+// Every cell type: the skin of a box of 2 x 3 x 2 cells whose inner grid nodes are moved by
+// random fractions of a cell (fixed seed; the box's faces stay plane). Reference values are the
+// box's own: the facets close (vector areas sum to 0), cover the faces (their areas sum to
+// 2(ab + bc + ca)), enclose its volume (divergence theorem, (1/3) sum of x_c . A, exact for plane
+// facets), and point out of it; every facet's nodes lie on the face it names, and its thickness
+// is its cell's volume over that face's area.
+class SkinOfCells : public ::testing::TestWithParam<CellType> {};
+
+TEST_P(SkinOfCells, ClosesCoversAndEnclosesTheBox) {
+  const CellType type = GetParam();
+  const Vec3 size{1.0, 1.5, 0.8};
+  std::uint64_t seed = 12345;
+  const auto random = [&seed] {  // in [-0.5, 0.5)
+    seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(seed >> 11) / 9007199254740992.0 - 0.5;
+  };
+  const auto move = [&](int i, int j, int k, Vec3 p) {
+    if (i == 0 || j == 0 || k == 0 || i == 2 || j == 3 || k == 2) return p;
+    return p + Vec3{0.3 * random() * 0.5, 0.3 * random() * 0.5, 0.3 * random() * 0.4};
+  };
+  const test::CellGrid g = test::cell_grid(type, 2, 3, 2, size, move);
+  Mesh mesh;
+  mesh.nodes = g.nodes;
+  for (std::size_t c = 0; c < g.cells.size(); ++c) {
+    const auto id = static_cast<std::int64_t>(c) + 1;
+    if (type == CellType::hex8) {
+      Hex8 h;
+      std::copy(g.cells[c].begin(), g.cells[c].end(), h.begin());
+      mesh.add_hex(id, 3, h);
+    } else {
+      mesh.add_cell(type, id, 3, g.cells[c]);
+    }
+  }
+  const auto faces = exterior_faces(mesh, false);
+  const CellTopology& t = topology(type);
+  // Boundary faces per cube face: 1 (hexahedra), 2 triangles (tetrahedra, and the wedges' ends);
+  // the wedges' sides are quadrilaterals.
+  const int facets_per_face = static_cast<int>(linear_facets(t.faces[0].type).size());
+  const int cube_faces = 2 * (2 * 3 + 3 * 2 + 2 * 2);
+  std::size_t expected = 0;
+  if (t.corners == 8) expected = static_cast<std::size_t>(cube_faces * facets_per_face);
+  if (t.corners == 4) expected = static_cast<std::size_t>(2 * cube_faces * facets_per_face);
+  if (type == CellType::wedge6) expected = 2 * 2 * 3 * 2 + 2 * (2 * 2 + 3 * 2);  // ends, sides
+  EXPECT_EQ(faces.size(), expected);
+  Vec3 closure;
+  double area = 0.0, volume = 0.0;
+  const Vec3 centre = size * 0.5;
+  for (const SkinFace& f : faces) {
+    const Vec3 a = mesh.nodes.position(f.nodes[0]), b = mesh.nodes.position(f.nodes[1]),
+               c = mesh.nodes.position(f.nodes[2]), d = mesh.nodes.position(f.nodes[3]);
+    const Vec3 vector_area = cross(c - a, d - b) * 0.5;  // (a, b, c, c) for a triangle
+    closure += vector_area;
+    area += norm(vector_area);
+    const Vec3 xc = f.nodes[2] == f.nodes[3] ? (a + b + c) / 3.0 : (a + b + c + d) * 0.25;
+    volume += dot(xc, vector_area) / 3.0;
+    EXPECT_GT(dot(vector_area, xc - centre), 0.0) << "a facet of cell " << f.solid << " points in";
+    // The facet lies on the face it names, and its thickness is volume / face area.
+    const SolidRef cell = mesh.solid(static_cast<std::size_t>(f.solid));
+    const FaceTopology& face = t.faces[static_cast<std::size_t>(f.face)];
+    std::vector<double> x, X;
+    std::vector<std::int32_t> on_face;
+    for (int k = 0; k < face.size(); ++k) {
+      on_face.push_back(cell.nodes[static_cast<std::size_t>(face.nodes[k])]);
+      const Vec3 p = mesh.nodes.position(on_face.back());
+      x.insert(x.end(), {p.x, p.y, p.z});
+    }
+    for (const std::int32_t n : cell.nodes) {
+      const Vec3 p = mesh.nodes.position(n);
+      X.insert(X.end(), {p.x, p.y, p.z});
+    }
+    for (const std::int32_t n : f.nodes)
+      EXPECT_NE(std::find(on_face.begin(), on_face.end(), n), on_face.end());
+    EXPECT_NEAR(f.thickness, cell_volume(type, X) / face_area(face.type, x), 1e-12);
+  }
+  EXPECT_NEAR(norm(closure), 0.0, 1e-12);
+  EXPECT_NEAR(area, 2.0 * (size.x * size.y + size.y * size.z + size.z * size.x), 1e-12);
+  EXPECT_NEAR(volume, size.x * size.y * size.z, 1e-12);
+}
+
+INSTANTIATE_TEST_SUITE_P(Types, SkinOfCells, ::testing::ValuesIn(kCellTypes),
+                         [](const ::testing::TestParamInfo<CellType>& p) {
+                           return std::string(topology(p.param).name);
+                         });
 
 }  // namespace
 }  // namespace abut

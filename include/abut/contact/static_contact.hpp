@@ -43,6 +43,7 @@
 #include <vector>
 
 #include "abut/contact/broad_phase.hpp"
+#include "abut/contact/dependent_nodes.hpp"
 #include "abut/contact/interface.hpp"
 #include "abut/contact/laws/adhesion.hpp"
 #include "abut/contact/laws/normal.hpp"
@@ -140,9 +141,12 @@ class StaticContact {
  public:
   // `secondary_nodes` (node-to-surface only): the nodes that act as points; empty: every node of
   // the secondary facets. The coordinates of `initial` are the reference configuration: tied and
-  // small-sliding pairs are formed there, once.
+  // small-sliding pairs are formed there, once. `dependents`: facet corners of curved faces that
+  // are not host nodes (dependent_nodes.hpp); the inputs give the host's nodes only, and the
+  // elements and points name host nodes only.
   StaticContact(StaticContactSettings settings, ContactSurface secondary, ContactSurface main,
-                std::span<const std::int32_t> secondary_nodes, const ContactInput& initial);
+                std::span<const std::int32_t> secondary_nodes, const ContactInput& initial,
+                DependentNodes dependents = {});
 
   // Evaluates every point at the coordinates of `in`.
   void evaluate(const ContactInput& in);
@@ -192,8 +196,13 @@ class StaticContact {
   void initial_gaps(const ContactInput& initial);
   void find_partners(const ContactInput& in);
 
+  // The host's coordinates extended by those of the dependent nodes (evaluate's input).
+  ContactInput extended(const ContactInput& host);
+
   StaticContactSettings settings_;
   ContactSurface secondary_, main_;
+  DependentNodes dependents_;
+  std::vector<double> ex_, ey_, ez_;  // extended coordinates of the current evaluation
   std::vector<std::uint8_t> main_sharp_, main_active_, main_free_;
   std::vector<double> main_depth_, main_gap_, main_min_edge_;
   std::vector<std::int32_t> main_twin_;

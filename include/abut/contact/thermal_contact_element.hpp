@@ -11,10 +11,13 @@
 namespace abut {
 
 // The nodes of a contact element with their weights, repeated nodes merged (a triangle repeats
-// its third node; a node-to-surface point is one node). At most the 4 nodes of the point's own
-// facet and 4 of each facet of the other surface its cell covers (mortar.hpp).
+// its third node; a node-to-surface point is one node). At most the nodes of the point's own
+// face and of each face of the other surface its cell covers (mortar.hpp): 4 each for linear
+// facets, up to 8 for the facets of a quadratic face once its dependent corners are replaced by
+// the face's nodes (dependent_nodes.hpp).
 struct ContactWeights {
-  static constexpr int kCapacity = 4 + 4 * kMaxOverlaps;
+  static constexpr int kMaxFaceNodes = 8;
+  static constexpr int kCapacity = kMaxFaceNodes * (1 + kMaxOverlaps);
   std::array<std::int32_t, kCapacity> nodes{};
   std::array<double, kCapacity> weights{};
   int count = 0;

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "abut/element/hex8_full.hpp"
-#include "abut/element/shape_functions.hpp"
+#include "abut/mesh/shape_functions.hpp"
 
 namespace abut {
 

@@ -47,6 +47,13 @@ constexpr int face_node_count(FaceType t) {
   return 0;
 }
 
+// A face as linear facets through its own nodes (face-local node indices, counter-clockwise like
+// the face; a triangle repeats its third node, as contact surfaces store one): a linear face is
+// its own facet; tri6 is 4 triangles (one at each corner, one of the midside nodes); quad8 the 4
+// corner triangles and the quadrilateral of its midside nodes. Contact surfaces use them: forces
+// go to real nodes with positive shares (docs/architecture.md, "Element families").
+std::span<const std::array<std::int8_t, 4>> linear_facets(FaceType type);
+
 struct FaceTopology {
   FaceType type = FaceType::quad4;
   std::array<std::int8_t, 8> nodes{};  // local node indices; the first face_node_count(type)

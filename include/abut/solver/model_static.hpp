@@ -15,18 +15,18 @@ namespace abut {
 
 // A face of a solid element: its index in the Mesh::solid numbering (for a hexahedron its index in
 // Mesh::hexes) and its local face (topology(type).faces, the order of the Abaqus faces S1..Sn:
-// face = S number - 1). Contact surfaces take hexahedron faces only yet.
-struct HexFace {
-  std::int32_t hex = 0;
+// face = S number - 1).
+struct SolidFace {
+  std::int32_t solid = 0;
   std::int8_t face = 0;
 };
 
-// A set of hex faces (Abaqus *SURFACE, TYPE=ELEMENT): a contact surface or a pressure load.
+// A set of solid faces (Abaqus *SURFACE, TYPE=ELEMENT): a contact surface or a pressure load.
 // Contacts refer to it with EntityType::FaceSet and its id.
 struct FaceSet {
   std::int64_t id = 0;
   std::string name;
-  std::vector<HexFace> faces;
+  std::vector<SolidFace> faces;
   SourceLocation where;
 };
 
@@ -75,7 +75,7 @@ struct StepForce {
 // A uniform pressure on a hex face (*DLOAD with load type Pn): positive pushes against the
 // face's outward normal (compresses the element), as in Abaqus.
 struct StepPressure {
-  HexFace face;
+  SolidFace face;
   double value = 0.0;
   StepAmplitude amplitude;
   SourceLocation where;

@@ -24,14 +24,15 @@ namespace abut {
 // when a part, part set or geometry does not exist.
 std::vector<Quad4> pressure_faces(const Model& model, const PressureLoad& load);
 
-// The same faces for the static steps, which load hex faces (model_static.hpp): the solid faces as
-// (hex, local face) in the order of pressure_faces, and the indices of the shells of the entity.
+// The same faces for the static steps, which load element faces (model_static.hpp): the solid
+// faces as (solid, local face) in the order of pressure_faces (a quadratic face once), and the
+// indices of the shells of the entity.
 // The same InputError when there is neither.
-struct PressureHexFaces {
-  std::vector<HexFace> faces;
+struct PressureSolidFaces {
+  std::vector<SolidFace> faces;
   std::vector<std::int32_t> shells;
 };
-PressureHexFaces pressure_hex_faces(const Model& model, const PressureLoad& load);
+PressureSolidFaces pressure_solid_faces(const Model& model, const PressureLoad& load);
 
 // Vector area of a face: (1/2) (x3 - x1) x (x4 - x2), exact for a warped quad too (the vector
 // area of a closed polygon depends on its boundary only); for a triangle (1/2) (x2 - x1) x

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <map>
 
-#include "abut/element/shape_functions.hpp"
+#include "abut/mesh/shape_functions.hpp"
 #include "abut/mesh/skin.hpp"
 #include "abut/solver/contact_surfaces.hpp"
 #include "inp_reader.hpp"
@@ -231,10 +231,10 @@ void make_surfaces(Reader& r) {
     set.where = where;
     std::map<std::pair<std::int32_t, std::int8_t>, bool> seen;
     for (std::size_t k = 0; k < s.items.size(); ++k) {
-      for (const std::int32_t hex : hexes_of(r, s.items[k], "*SURFACE")) {
-        require_hexahedron(r, hex, s.items[k].where, "*SURFACE");
-        if (seen.emplace(std::make_pair(hex, s.faces[k]), true).second)
-          set.faces.push_back({hex, s.faces[k]});
+      for (const std::int32_t solid : solids_of(r, s.items[k], "*SURFACE")) {
+        require_face(r, solid, s.faces[k], s.items[k].where, "*SURFACE");
+        if (seen.emplace(std::make_pair(solid, s.faces[k]), true).second)
+          set.faces.push_back({solid, s.faces[k]});
       }
     }
     if (set.faces.empty()) throw InputError(where, "surface " + s.name + " has no faces");
@@ -265,28 +265,19 @@ std::vector<std::int32_t> nodes_of(const Reader& r, const Item& item, const std:
   return {it->second};
 }
 
-void require_hexahedron(const Reader& r, std::int32_t element, Loc where,
-                        const std::string& keyword) {
-  const ElementRecord& e = r.elements[static_cast<std::size_t>(element)];
-  if (e.type == CellType::hex8) return;
-  throw InputError(r.where(where, keyword),
-                   "element " + std::to_string(e.id) + " is a " +
-                       std::string(topology(e.type).abaqus) +
-                       ": contact surfaces on faces of elements other than C3D8/C3D8R are not "
-                       "supported yet");
-}
-
-void require_face(const Reader& r, std::int32_t element, int face, Loc where) {
+void require_face(const Reader& r, std::int32_t element, int face, Loc where,
+                  const std::string& keyword) {
   const ElementRecord& e = r.elements[static_cast<std::size_t>(element)];
   const CellTopology& t = topology(e.type);
   if (face < static_cast<int>(t.faces.size())) return;
-  throw InputError(r.where(where, "*DLOAD"),
+  const char* label = keyword == "*DLOAD" ? "P" : "S";
+  throw InputError(r.where(where, keyword),
                    "element " + std::to_string(e.id) + " is a " + std::string(t.abaqus) +
                        ", which has the faces 1 to " + std::to_string(t.faces.size()) +
-                       " only: use P1 to P" + std::to_string(t.faces.size()));
+                       " only: use " + label + "1 to " + label + std::to_string(t.faces.size()));
 }
 
-std::vector<std::int32_t> hexes_of(const Reader& r, const Item& item, const std::string& keyword) {
+std::vector<std::int32_t> solids_of(const Reader& r, const Item& item, const std::string& keyword) {
   if (!item.name.empty()) return element_set_members(r, item.name, item.where, keyword);
   const auto it = r.element_index.find(item.id);
   if (it == r.element_index.end()) {

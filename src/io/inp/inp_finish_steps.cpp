@@ -63,10 +63,11 @@ void apply(const Reader& r, const LoadCard& card, State& state) {
   const int amplitude = amplitude_of(r, card, keyword);
   for (const LoadLine& line : card.lines) {
     const std::vector<std::int32_t> targets = card.kind == LoadKind::Pressure
-                                                  ? hexes_of(r, line.target, keyword)
+                                                  ? solids_of(r, line.target, keyword)
                                                   : nodes_of(r, line.target, keyword);
     for (const std::int32_t t : targets) {
-      if (card.kind == LoadKind::Pressure) require_face(r, t, line.first, line.target.where);
+      if (card.kind == LoadKind::Pressure)
+        require_face(r, t, line.first, line.target.where, "*DLOAD");
       for (int k = line.first; k <= line.last; ++k) {
         Entry& e = state[{t, k}];
         const bool add = card.kind != LoadKind::Boundary && e.this_step;
@@ -336,7 +337,7 @@ void finish_steps(Reader& r) {
                              r.where(e.where, "*CLOAD")});
     }
     for (const auto& [key, e] : pressures) {
-      step.pressures.push_back({HexFace{key.first, static_cast<std::int8_t>(key.second)}, e.value,
+      step.pressures.push_back({SolidFace{key.first, static_cast<std::int8_t>(key.second)}, e.value,
                                 step_amplitude(r, e.amplitude), r.where(e.where, "*DLOAD")});
     }
 

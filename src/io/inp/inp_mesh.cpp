@@ -4,7 +4,7 @@
 #include <utility>
 
 #include "../deck_text.hpp"
-#include "abut/element/shape_functions.hpp"
+#include "abut/mesh/shape_functions.hpp"
 #include "inp_reader.hpp"
 
 namespace abut::inp {
@@ -244,7 +244,7 @@ void read_surface(Reader& r, const Card& c) {
     }
     const std::string label = deck::upper(f.text(1));
     if (label.size() != 2 || label[0] != 'S' || label[1] < '1' || label[1] > '6') {
-      f.fail("face", "expected a hexahedron face label S1 to S6, got '" + f.text(1) + "'");
+      f.fail("face", "expected a face label S1 to S6, got '" + f.text(1) + "'");
     }
     s.faces.push_back(static_cast<std::int8_t>(label[1] - '1'));
   }

@@ -363,14 +363,11 @@ void finish_steps(Reader& r);     // amplitudes, equations, static steps
 // The indices of a node / element item (an id or a set name); InputError at the item. Element
 // indices are the mesh's solid numbering (Mesh::solid).
 std::vector<std::int32_t> nodes_of(const Reader& r, const Item& item, const std::string& keyword);
-std::vector<std::int32_t> hexes_of(const Reader& r, const Item& item, const std::string& keyword);
-// InputError at `where` unless element (a solid index) is an 8-node hexahedron: the element
-// faces of contact surfaces are hexahedron faces yet.
-void require_hexahedron(const Reader& r, std::int32_t element, Loc where,
-                        const std::string& keyword);
-// InputError at `where` (a *DLOAD line) unless element (a solid index) has the face 0-based
-// `face`.
-void require_face(const Reader& r, std::int32_t element, int face, Loc where);
+std::vector<std::int32_t> solids_of(const Reader& r, const Item& item, const std::string& keyword);
+// InputError at `where` (a line of `keyword`) unless element (a solid index) has the face 0-based
+// `face` (S1 to S6 on hexahedra, S5 on wedges, S4 on tetrahedra).
+void require_face(const Reader& r, std::int32_t element, int face, Loc where,
+                  const std::string& keyword);
 // Node set / element set contents as indices (sorted, unique); InputError at `at` if undefined.
 std::vector<std::int32_t> node_set_members(const Reader& r, const std::string& name, Loc at,
                                            const std::string& keyword);

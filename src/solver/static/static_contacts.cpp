@@ -7,6 +7,7 @@
 
 #include "abut/core/error.hpp"
 #include "abut/solver/contact_surfaces.hpp"
+#include "abut/solver/curved_faces.hpp"
 #include "solver/contact_set.hpp"
 #include "solver/contact_settings_of.hpp"
 
@@ -138,8 +139,11 @@ StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side&
   const auto no_penalty = [](const SkinFace&) { return 0.0; };
   const Nodes& nodes = mesh.nodes;
   const ContactInput initial{nodes.x, nodes.y, nodes.z, {}, {}, {}, 0.0, 0.0, {}};
-  return StaticContact(std::move(s), contact_surface(mesh, own.faces, no_penalty),
-                       contact_surface(mesh, target.faces, no_penalty), own.nodes, initial);
+  CurvedFaces curved(mesh);  // quadratic faces: facets on the true face
+  ContactSurface secondary = contact_surface(mesh, curved.facets(own.faces), no_penalty);
+  ContactSurface main = contact_surface(mesh, curved.facets(target.faces), no_penalty);
+  return StaticContact(std::move(s), std::move(secondary), std::move(main), own.nodes, initial,
+                       curved.dependents());
 }
 
 }  // namespace

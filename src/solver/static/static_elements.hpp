@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "abut/element/hex8_full.hpp"
-#include "abut/element/shape_functions.hpp"
 #include "abut/material/j2_strain_point.hpp"
+#include "abut/mesh/shape_functions.hpp"
 #include "abut/solver/model.hpp"
 
 namespace abut::detail {

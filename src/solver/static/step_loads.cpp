@@ -5,13 +5,15 @@
 #include <string>
 
 #include "abut/core/vec3.hpp"
-#include "abut/element/shape_functions.hpp"
+#include "abut/mesh/shape_functions.hpp"
 
 namespace abut::detail {
 
 namespace {
 
-std::int64_t face_key(const HexFace& f) { return 6 * static_cast<std::int64_t>(f.hex) + f.face; }
+std::int64_t face_key(const SolidFace& f) {
+  return 6 * static_cast<std::int64_t>(f.solid) + f.face;
+}
 
 }  // namespace
 

@@ -1,5 +1,5 @@
 // Shape functions and integration rules of every cell type: see shape_functions.hpp.
-#include "abut/element/shape_functions.hpp"
+#include "abut/mesh/shape_functions.hpp"
 
 #include <algorithm>
 #include <array>
@@ -321,6 +321,57 @@ double min_jacobian(CellType type, std::span<const double> X) {
     first = false;
   }
   return smallest;
+}
+
+double cell_volume(CellType type, std::span<const double> X) {
+  double n[kMaxCellNodes], dn[kMaxCellNodes][3], grad[kMaxCellNodes][3];
+  double volume = 0.0;
+  for (const QuadraturePoint& q : quadrature(type, Integration::full))
+    volume += q.weight * shape_gradients(type, X, q.xi, n, dn, grad);
+  return volume;
+}
+
+double face_area(FaceType type, std::span<const double> x) {
+  const int nodes = face_node_count(type);
+  double n[8], dn[8][2];
+  double area = 0.0;
+  for (const FacePoint& q : face_quadrature(type)) {
+    face_shape_functions(type, q.xi, n, dn);
+    double t1[3] = {0, 0, 0}, t2[3] = {0, 0, 0};
+    for (int a = 0; a < nodes; ++a)
+      for (int i = 0; i < 3; ++i) {
+        t1[i] += x[static_cast<std::size_t>(3 * a + i)] * dn[a][0];
+        t2[i] += x[static_cast<std::size_t>(3 * a + i)] * dn[a][1];
+      }
+    const double c[3] = {t1[1] * t2[2] - t1[2] * t2[1], t1[2] * t2[0] - t1[0] * t2[2],
+                         t1[0] * t2[1] - t1[1] * t2[0]};
+    area += q.weight * std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  }
+  return area;
+}
+
+FaceSubdivision subdivide_face(FaceType type, int n) {
+  FaceSubdivision out;
+  const auto at = [n](int i, int j) { return static_cast<std::int32_t>(i + (n + 1) * j); };
+  const bool quad = face_corner_count(type) == 4;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double s = static_cast<double>(i) / n, t = static_cast<double>(j) / n;
+      out.corners.push_back(quad ? std::array<double, 2>{-1.0 + 2.0 * s, -1.0 + 2.0 * t}
+                                 : std::array<double, 2>{s, t});
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      if (quad) {
+        out.facets.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+        continue;
+      }
+      if (i + j >= n) continue;  // beyond the hypotenuse
+      out.facets.push_back({at(i, j), at(i + 1, j), at(i, j + 1), at(i, j + 1)});
+      if (i + j + 1 < n)
+        out.facets.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1), at(i, j + 1)});
+    }
+  return out;
 }
 
 }  // namespace abut

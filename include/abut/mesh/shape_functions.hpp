@@ -12,7 +12,10 @@
 //  tet4   N = L0, L1, L2, L3 with L0 = 1 - xi - eta - zeta, L1 = xi, L2 = eta, L3 = zeta
 //  tet10  corners L_a (2 L_a - 1), midside node of edge (a, b) 4 L_a L_b
 //  wedge6 triangle (1 - xi - eta, xi, eta) times (1 - zeta) / 2 (nodes 0-2), (1 + zeta) / 2 (3-5)
+#include <array>
+#include <cstdint>
 #include <span>
+#include <vector>
 
 #include "abut/mesh/topology.hpp"
 
@@ -78,5 +81,24 @@ void face_pressure_forces(FaceType type, std::span<const double> x, double p, st
 // The smallest det(dX/dxi) over the points of the full rule of a cell with coordinates X
 // (3 per node): <= 0 for a cell whose nodes are not in the type's order (or that is folded).
 double min_jacobian(CellType type, std::span<const double> X);
+
+// A face divided into n x n facets in its natural coordinates: quadrilaterals on the grid
+// xi, eta = -1 + 2i/n; triangles on the grid of area coordinates (i/n, j/n), each cell split into
+// its two triangles (a triangle repeats its third corner). Corners counter-clockwise like the
+// face's. Contact surfaces of curved faces use it (dependent_nodes.hpp of the contact library).
+struct FaceSubdivision {
+  std::vector<std::array<double, 2>> corners;       // natural coordinates
+  std::vector<std::array<std::int32_t, 4>> facets;  // indices into corners
+};
+FaceSubdivision subdivide_face(FaceType type, int n);
+
+// The volume of a cell with coordinates X (3 per node): det J integrated by the full rule, exact
+// for straight-edged cells (det J then has the degree the rule integrates) and to the rule's
+// order for curved ones.
+double cell_volume(CellType type, std::span<const double> X);
+
+// The area of a face whose nodes (face order) are at x (3 per node), by face_quadrature (exact
+// for a flat face; to the rule's order for a curved one).
+double face_area(FaceType type, std::span<const double> x);
 
 }  // namespace abut
