@@ -6,6 +6,7 @@
 #include "abut/element/hex8.hpp"
 #include "abut/element/hex8_gauss.hpp"
 #include "abut/material/j2_strain_point.hpp"
+#include "abut/mesh/shape_functions.hpp"
 
 namespace abut {
 
@@ -56,27 +57,7 @@ constexpr int kVoigtJ[6] = {0, 1, 2, 1, 2, 0};
 }  // namespace
 
 double hex8_gauss_gradient(const double X[8][3], int p, double grad[8][3]) {
-  const auto& dn = kHex8GaussTable.dn[p];
-  double j[3][3] = {};
-  for (int a = 0; a < 8; ++a)
-    for (int i = 0; i < 3; ++i)
-      for (int r = 0; r < 3; ++r) j[i][r] += X[a][i] * dn[a][r];
-  const double det = det3(j);
-  const double inv_det = 1.0 / det;
-  double inv[3][3];  // inv[r][i] = (J^-1)_ri, by cofactors
-  inv[0][0] = (j[1][1] * j[2][2] - j[1][2] * j[2][1]) * inv_det;
-  inv[0][1] = (j[0][2] * j[2][1] - j[0][1] * j[2][2]) * inv_det;
-  inv[0][2] = (j[0][1] * j[1][2] - j[0][2] * j[1][1]) * inv_det;
-  inv[1][0] = (j[1][2] * j[2][0] - j[1][0] * j[2][2]) * inv_det;
-  inv[1][1] = (j[0][0] * j[2][2] - j[0][2] * j[2][0]) * inv_det;
-  inv[1][2] = (j[0][2] * j[1][0] - j[0][0] * j[1][2]) * inv_det;
-  inv[2][0] = (j[1][0] * j[2][1] - j[1][1] * j[2][0]) * inv_det;
-  inv[2][1] = (j[0][1] * j[2][0] - j[0][0] * j[2][1]) * inv_det;
-  inv[2][2] = (j[0][0] * j[1][1] - j[0][1] * j[1][0]) * inv_det;
-  for (int a = 0; a < 8; ++a)
-    for (int i = 0; i < 3; ++i)
-      grad[a][i] = dn[a][0] * inv[0][i] + dn[a][1] * inv[1][i] + dn[a][2] * inv[2][i];
-  return det;
+  return natural_to_spatial(8, kHex8GaussTable.dn[p], &X[0][0], grad);
 }
 
 template <Hex8MaterialPoint M>

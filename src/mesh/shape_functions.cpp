@@ -228,21 +228,33 @@ std::span<const FacePoint> face_quadrature(FaceType type) {
   return {};
 }
 
+namespace {
+
+// At a point of a face with nodes at x: its shape functions n and x_xi x x_eta, the outward normal
+// times the area per unit natural area.
+void face_point(FaceType type, std::span<const double> x, const double xi[2], double* n,
+                double area[3]) {
+  double dn[8][2];
+  face_shape_functions(type, xi, n, dn);
+  double t1[3] = {0, 0, 0}, t2[3] = {0, 0, 0};
+  for (int a = 0; a < face_node_count(type); ++a)
+    for (int i = 0; i < 3; ++i) {
+      t1[i] += x[static_cast<std::size_t>(3 * a + i)] * dn[a][0];
+      t2[i] += x[static_cast<std::size_t>(3 * a + i)] * dn[a][1];
+    }
+  area[0] = t1[1] * t2[2] - t1[2] * t2[1];
+  area[1] = t1[2] * t2[0] - t1[0] * t2[2];
+  area[2] = t1[0] * t2[1] - t1[1] * t2[0];
+}
+
+}  // namespace
+
 void face_pressure_forces(FaceType type, std::span<const double> x, double p, std::span<double> f) {
   const int nodes = face_node_count(type);
-  double n[8], dn[8][2];
+  double n[8], area[3];
   std::fill(f.begin(), f.begin() + 3 * nodes, 0.0);
   for (const FacePoint& q : face_quadrature(type)) {
-    face_shape_functions(type, q.xi, n, dn);
-    double t1[3] = {0, 0, 0}, t2[3] = {0, 0, 0};
-    for (int a = 0; a < nodes; ++a)
-      for (int i = 0; i < 3; ++i) {
-        t1[i] += x[static_cast<std::size_t>(3 * a + i)] * dn[a][0];
-        t2[i] += x[static_cast<std::size_t>(3 * a + i)] * dn[a][1];
-      }
-    // Outward normal times the area per unit natural area.
-    const double area[3] = {t1[1] * t2[2] - t1[2] * t2[1], t1[2] * t2[0] - t1[0] * t2[2],
-                            t1[0] * t2[1] - t1[1] * t2[0]};
+    face_point(type, x, q.xi, n, area);
     for (int a = 0; a < nodes; ++a)
       for (int i = 0; i < 3; ++i)
         f[static_cast<std::size_t>(3 * a + i)] -= p * q.weight * n[a] * area[i];
@@ -285,30 +297,8 @@ std::span<const QuadraturePoint> quadrature(CellType type, Integration rule) {
 
 double shape_gradients(CellType type, std::span<const double> X, const double xi[3], double* n,
                        double (*dn)[3], double (*grad)[3]) {
-  const int nodes = topology(type).nodes;
   shape_functions(type, xi, n, dn);
-  double j[3][3] = {};
-  for (int a = 0; a < nodes; ++a)
-    for (int i = 0; i < 3; ++i)
-      for (int r = 0; r < 3; ++r) j[i][r] += X[static_cast<std::size_t>(3 * a + i)] * dn[a][r];
-  const double det = j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1]) -
-                     j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0]) +
-                     j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
-  const double inv_det = 1.0 / det;
-  double inv[3][3];  // inv[r][i] = (J^-1)_ri, by cofactors
-  inv[0][0] = (j[1][1] * j[2][2] - j[1][2] * j[2][1]) * inv_det;
-  inv[0][1] = (j[0][2] * j[2][1] - j[0][1] * j[2][2]) * inv_det;
-  inv[0][2] = (j[0][1] * j[1][2] - j[0][2] * j[1][1]) * inv_det;
-  inv[1][0] = (j[1][2] * j[2][0] - j[1][0] * j[2][2]) * inv_det;
-  inv[1][1] = (j[0][0] * j[2][2] - j[0][2] * j[2][0]) * inv_det;
-  inv[1][2] = (j[0][2] * j[1][0] - j[0][0] * j[1][2]) * inv_det;
-  inv[2][0] = (j[1][0] * j[2][1] - j[1][1] * j[2][0]) * inv_det;
-  inv[2][1] = (j[0][1] * j[2][0] - j[0][0] * j[2][1]) * inv_det;
-  inv[2][2] = (j[0][0] * j[1][1] - j[0][1] * j[1][0]) * inv_det;
-  for (int a = 0; a < nodes; ++a)
-    for (int i = 0; i < 3; ++i)
-      grad[a][i] = dn[a][0] * inv[0][i] + dn[a][1] * inv[1][i] + dn[a][2] * inv[2][i];
-  return det;
+  return natural_to_spatial(topology(type).nodes, dn, X.data(), grad);
 }
 
 double min_jacobian(CellType type, std::span<const double> X) {
@@ -332,19 +322,10 @@ double cell_volume(CellType type, std::span<const double> X) {
 }
 
 double face_area(FaceType type, std::span<const double> x) {
-  const int nodes = face_node_count(type);
-  double n[8], dn[8][2];
+  double n[8], c[3];
   double area = 0.0;
   for (const FacePoint& q : face_quadrature(type)) {
-    face_shape_functions(type, q.xi, n, dn);
-    double t1[3] = {0, 0, 0}, t2[3] = {0, 0, 0};
-    for (int a = 0; a < nodes; ++a)
-      for (int i = 0; i < 3; ++i) {
-        t1[i] += x[static_cast<std::size_t>(3 * a + i)] * dn[a][0];
-        t2[i] += x[static_cast<std::size_t>(3 * a + i)] * dn[a][1];
-      }
-    const double c[3] = {t1[1] * t2[2] - t1[2] * t2[1], t1[2] * t2[0] - t1[0] * t2[2],
-                         t1[0] * t2[1] - t1[1] * t2[0]};
+    face_point(type, x, q.xi, n, c);
     area += q.weight * std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
   }
   return area;

@@ -77,6 +77,12 @@ DECKS = {
     # U 2.2e-2 of the largest displacement with n = 4 (at a corner of the lower cube's top), 7e-2
     # with n = 2 and 5e-3 with n = 8 (measured by rebuilding with kCurvedFaceDivisions changed).
     "contact4": (KNOWN, "quadratic faces as 4 x 4 facets: U 2.2e-2, falling as n^-2"),
+    # A C3D20 punch pressed into a C3D20 cube, face to face, ADJUST=0.005, NLGEOM: the same cause,
+    # U 2.8e-2 with n = 4, 8.1e-3 with n = 8.
+    "punch1": (KNOWN, "quadratic faces as 4 x 4 facets: U 2.8e-2, falling as n^-2"),
+    # A C3D20R beam between two C3D8 plates, two face-to-face pairs, NLGEOM: U 9.6e-3 and RF
+    # 4.1e-2 with n = 4; 3.9e-3 and 1.1e-2 with n = 8 (reference: a ccx run).
+    "beamcontact": (KNOWN, "quadratic faces as 4 x 4 facets: U 9.6e-3, RF 4.1e-2, falling with n"),
     # Tied contact changed to linear in step 2.
     # Tied pair pulled apart in step 1, changed to LINEAR (it lets go) in step 2 (reference: ccx run).
     "changesurfbeh": (REQUIRED, ""),

@@ -53,6 +53,35 @@ std::span<const QuadraturePoint> quadrature(CellType type, Integration rule);
 double shape_gradients(CellType type, std::span<const double> X, const double xi[3], double* n,
                        double (*dn)[3], double (*grad)[3]);
 
+// The same from the natural derivatives dn of `nodes` shape functions at a point and the cell's
+// coordinates X (3 per node, contiguous): J by its columns, J^-1 by cofactors. Inline, so that a
+// kernel with a fixed node count (hex8_full.cpp) keeps its unrolled loops.
+inline double natural_to_spatial(int nodes, const double (*dn)[3], const double* X,
+                                 double (*grad)[3]) {
+  double j[3][3] = {};  // j[i][r] = dX_i / dxi_r
+  for (int a = 0; a < nodes; ++a)
+    for (int i = 0; i < 3; ++i)
+      for (int r = 0; r < 3; ++r) j[i][r] += X[3 * a + i] * dn[a][r];
+  const double det = j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1]) -
+                     j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0]) +
+                     j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
+  const double inv_det = 1.0 / det;
+  double inv[3][3];  // inv[r][i] = (J^-1)_ri
+  inv[0][0] = (j[1][1] * j[2][2] - j[1][2] * j[2][1]) * inv_det;
+  inv[0][1] = (j[0][2] * j[2][1] - j[0][1] * j[2][2]) * inv_det;
+  inv[0][2] = (j[0][1] * j[1][2] - j[0][2] * j[1][1]) * inv_det;
+  inv[1][0] = (j[1][2] * j[2][0] - j[1][0] * j[2][2]) * inv_det;
+  inv[1][1] = (j[0][0] * j[2][2] - j[0][2] * j[2][0]) * inv_det;
+  inv[1][2] = (j[0][2] * j[1][0] - j[0][0] * j[1][2]) * inv_det;
+  inv[2][0] = (j[1][0] * j[2][1] - j[1][1] * j[2][0]) * inv_det;
+  inv[2][1] = (j[0][1] * j[2][0] - j[0][0] * j[2][1]) * inv_det;
+  inv[2][2] = (j[0][0] * j[1][1] - j[0][1] * j[1][0]) * inv_det;
+  for (int a = 0; a < nodes; ++a)
+    for (int i = 0; i < 3; ++i)
+      grad[a][i] = dn[a][0] * inv[0][i] + dn[a][1] * inv[1][i] + dn[a][2] * inv[2][i];
+  return det;
+}
+
 // Faces (FaceType of mesh/topology.hpp), in natural coordinates of their own: quadrilaterals on
 // [-1, 1]^2 with corners (-1,-1), (1,-1), (1,1), (-1,1); triangles with area coordinates, corners
 // (0,0), (1,0), (0,1); midside nodes halfway along the edges corner 0-1, 1-2, ... The shape
