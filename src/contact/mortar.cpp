@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "abut/core/triangle_rule.hpp"
+
 namespace abut {
 namespace {
 
@@ -101,6 +103,26 @@ void integrate(const Polygon& poly, const std::array<P2, 4>& first, const std::a
   }
 }
 
+// Adds int over the polygon of each N_a of a curved face whose facet has the plane corners
+// `facet`: Dunavant's degree-4 rule on each triangle of a fan, each point's reference coordinates
+// found in the facet (exact for a parallelogram facet, where N_a is a polynomial of degree 3 at
+// most in the plane's coordinates: quad8's serendipity terms).
+void integrate_face(const Polygon& poly, const std::array<P2, 4>& facet, const FacetParent& parent,
+                    std::array<double, FacetParent::kMaxNodes>& out, double scale) {
+  double n[FacetParent::kMaxNodes];
+  for (int i = 1; i + 1 < poly.n; ++i) {
+    const double area = cross2(poly.v[0], poly.v[i], poly.v[i + 1]) / 2.0 * scale;
+    for (const TrianglePoint& q : kTriangleDegree4) {
+      const double l0 = 1.0 - q.l1 - q.l2;
+      const P2 x{l0 * poly.v[0][0] + q.l1 * poly.v[i][0] + q.l2 * poly.v[i + 1][0],
+                 l0 * poly.v[0][1] + q.l1 * poly.v[i][1] + q.l2 * poly.v[i + 1][1]};
+      const P2 r = reference_of(facet, x);
+      parent.at(r[0], r[1], n);
+      for (int a = 0; a < parent.count; ++a) out[a] += q.weight * area * n[a];
+    }
+  }
+}
+
 // A facet's outward normal m scaled to unit component along n (mortar.hpp: the cell's push); its
 // projected area times it is its area vector, which vanishes with the projection as the facet
 // turns edge-on. A facet facing away adds nothing.
@@ -122,8 +144,11 @@ double clipped_area(std::span<const std::array<double, 2>> subject,
 }
 
 CellOverlap overlap_cell(const QuadCorners& own, const CellBounds& cell, const Vec3& normal,
-                         std::span<const std::int32_t> ids, std::span<const QuadCorners> corners) {
+                         std::span<const std::int32_t> ids, std::span<const QuadCorners> corners,
+                         const FacetParent* own_parent,
+                         std::span<const FacetParent* const> parents) {
   CellOverlap r;
+  r.own_parent = own_parent;
   // A basis of the plane, and the cell's centre as its origin (round-off).
   const Vec3 helper = std::abs(normal.x) < 0.6 ? Vec3{1.0, 0.0, 0.0} : Vec3{0.0, 1.0, 0.0};
   const Vec3 e1 = normalized(cross(normal, helper));
@@ -184,11 +209,17 @@ CellOverlap overlap_cell(const QuadCorners& own, const CellBounds& cell, const V
       slot_of[slot] = k;
       r.facet[slot] = ids[k];
       r.target[slot] = {};
+      r.target_parent[slot] = parents.empty() ? nullptr : parents[k];
+      r.target_face[slot] = {};
       ++r.count;
     }
     r.area += a * scale;
     push += slope_normal(corners[k], normal) * (a * scale);
     integrate(overlap, own_plane, facet_plane, r.own, r.target[slot], scale);
+    if (own_parent && own_parent->curved())
+      integrate_face(overlap, own_plane, *own_parent, r.own_face, scale);
+    if (r.target_parent[slot] && r.target_parent[slot]->curved())
+      integrate_face(overlap, facet_plane, *r.target_parent[slot], r.target_face[slot], scale);
   }
   r.push = r.area > 0.0 ? push * (1.0 / r.area) : normal;
   return r;
@@ -196,9 +227,11 @@ CellOverlap overlap_cell(const QuadCorners& own, const CellBounds& cell, const V
 
 CellOverlap cover_cell(const std::array<std::int32_t, 4>& own, const CellBounds& cell,
                        const Vec3& normal, std::int32_t partner,
-                       std::span<const std::int32_t> candidates, const CoverFacets& other) {
+                       std::span<const std::int32_t> candidates, const CoverFacets& other,
+                       const FacetParent* own_parent) {
   std::array<std::int32_t, kMaxCoverFacets> ids{};
   std::array<QuadCorners, kMaxCoverFacets> corners{};
+  std::array<const FacetParent*, kMaxCoverFacets> parents{};
   std::size_t count = 0;
   auto touches_own = [&own](const std::array<std::int32_t, 4>& nodes) {
     for (const std::int32_t i : nodes)
@@ -215,13 +248,15 @@ CellOverlap cover_cell(const std::array<std::int32_t, 4>& own, const CellBounds&
     // slope has no bound (the side of a block standing on the cell's plate).
     if (!(dot(quad_centre_normal(c), normal) >= kCoverMinCos)) return;
     ids[count] = g;
+    parents[count] = other.parent.empty() ? nullptr : &other.parent[f];
     corners[count++] = c;
   };
   if (partner >= 0) add(partner);
   for (const std::int32_t g : candidates)
     if (g != partner) add(g);
   const QuadCorners c_own = quad_corners(own, other.x, other.y, other.z);
-  CellOverlap o = overlap_cell(c_own, cell, normal, {ids.data(), count}, {corners.data(), count});
+  CellOverlap o = overlap_cell(c_own, cell, normal, {ids.data(), count}, {corners.data(), count},
+                               own_parent, {parents.data(), count});
   o.normal = normal;
   return o;
 }
@@ -239,11 +274,23 @@ double cell_mean_gap(const std::array<std::int32_t, 4>& own, const CellOverlap& 
   // their coordinates apart, open or closed at random).
   const Vec3 origin = at(own[0]);
   Vec3 centroid;
-  for (int a = 0; a < 4; ++a) centroid += (at(own[a]) - origin) * (o.own[a] * inv);
-  for (int k = 0; k < o.count; ++k)
+  if (o.own_parent && o.own_parent->curved()) {
+    for (int a = 0; a < o.own_parent->count; ++a)
+      centroid += (at(o.own_parent->nodes[a]) - origin) * (o.own_face[a] * inv);
+  } else {
+    for (int a = 0; a < 4; ++a) centroid += (at(own[a]) - origin) * (o.own[a] * inv);
+  }
+  for (int k = 0; k < o.count; ++k) {
+    const FacetParent* parent = o.target_parent[k];
+    if (parent && parent->curved()) {
+      for (int b = 0; b < parent->count; ++b)
+        centroid -= (at(parent->nodes[b]) - origin) * (o.target_face[k][b] * inv);
+      continue;
+    }
     for (int b = 0; b < 4; ++b)
       centroid -= (at(other.facets[static_cast<std::size_t>(o.facet[k])][b]) - origin) *
                   (o.target[k][b] * inv);
+  }
   return dot(centroid, o.normal);
 }
 

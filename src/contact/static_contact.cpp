@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 
 #include "abut/contact/adjust.hpp"
 #include "abut/contact/integration.hpp"
@@ -27,6 +28,11 @@ StaticContact::StaticContact(StaticContactSettings settings, ContactSurface seco
       secondary_(std::move(secondary)),
       main_(std::move(main)),
       dependents_(std::move(dependents)) {
+  for (const ContactSurface* s : {&secondary_, &main_})
+    if (!s->parent.empty() && s->parent.size() != s->size())
+      throw std::invalid_argument(
+          "StaticContact: a surface's parent list must be empty or hold "
+          "one entry per facet");
   const ContactInput reference = extended(initial);
   x0_.assign(reference.x.begin(), reference.x.end());
   y0_.assign(reference.y.begin(), reference.y.end());
@@ -127,6 +133,7 @@ void StaticContact::evaluate(const ContactInput& host) {
       std::max(settings_.search_distance, reach_at_clearance(settings_.normal)) + settings_.padding;
   const double reach = std::max(search, settings_.depth);
   const double edge_tolerance = 0.01 * mean_edge_length(main_, in.x, in.y, in.z);
+  const double touching = 1e-10 * edge_tolerance;
   // S2S points meet the other surface cell by cell (mortar.hpp), but for tied and small-sliding
   // pairs, which keep the point's partner and place on it.
   const bool by_cells = !settings_.node_to_surface && !settings_.tied && !settings_.small_sliding;
@@ -206,7 +213,7 @@ void StaticContact::evaluate(const ContactInput& host) {
     else
       grid.query(qx, qy, qz, candidates);
   }
-  const CoverFacets cover{main_.facets, main_active_, main_twin_, in.x, in.y, in.z};
+  const CoverFacets cover{main_.facets, main_active_, main_twin_, in.x, in.y, in.z, main_.parent};
   const TargetFacets target{main_.facets, main_sharp_, main_active_, main_depth_,
                             main_twin_,   main_free_,  main_gap_,    main_min_edge_,
                             in.x,         in.y,        in.z};
@@ -278,8 +285,11 @@ void StaticContact::evaluate(const ContactInput& host) {
           if (faces(facing)) partner = facing;
         }
         if (faces(partner)) {
-          const CellOverlap o =
-              cover_cell(own, point_cell_[p], own_normal[p] * -1.0, partner.facet, cand, cover);
+          const FacetParent* own_parent =
+              secondary_.parent.empty() ? nullptr
+                                        : &secondary_.parent[static_cast<std::size_t>(out.facet)];
+          const CellOverlap o = cover_cell(own, point_cell_[p], own_normal[p] * -1.0, partner.facet,
+                                           cand, cover, own_parent);
           if (!(o.area > 0.0)) continue;  // the cell lies beside the other surface
           cell = o;
         }
@@ -301,18 +311,34 @@ void StaticContact::evaluate(const ContactInput& host) {
         (cell ? cell_mean_gap(own, *cell, cover) : dot(x - q, normal)) - settings_.padding;
     if (distance >= 0.0) h.initial_offset = 0.0;  // separated: the initial offset has done its job
     const double gap = distance + h.initial_offset + (shift_.empty() ? 0.0 : shift_[p]);
-    const double d = -gap;
+    // A gap within round-off of the surfaces' size is a touch (d = 0, closed below): surfaces
+    // placed on each other (ADJUST, a mesh generated in contact) meet at +-ulps, and would else
+    // be open or closed at random.
+    const double d = gap > 0.0 && gap <= touching ? 0.0 : -gap;
     out.gap = gap;
     h.facet = facet, h.xi = xi, h.eta = eta;
     // Weights of the element: +N on the point's own nodes, -phi on the partner's.
     // A cell's: the integrals of the overlap over its area (mortar.hpp).
     ContactWeights wt;
     if (cell) {
+      // A facet of a curved face: the integrals of the face's own shape functions, on its nodes.
       const double inv = 1.0 / cell->area;
-      for (int a = 0; a < 4; ++a) wt.add(own[a], cell->own[a] * inv);
-      for (int k = 0; k < cell->count; ++k)
+      const FacetParent* own_face = cell->own_parent;
+      if (own_face && own_face->curved())
+        for (int a = 0; a < own_face->count; ++a)
+          wt.add(own_face->nodes[a], cell->own_face[a] * inv);
+      else
+        for (int a = 0; a < 4; ++a) wt.add(own[a], cell->own[a] * inv);
+      for (int k = 0; k < cell->count; ++k) {
+        const FacetParent* face = cell->target_parent[k];
+        if (face && face->curved()) {
+          for (int b = 0; b < face->count; ++b)
+            wt.add(face->nodes[b], -cell->target_face[k][b] * inv);
+          continue;
+        }
         for (int b = 0; b < 4; ++b)
           wt.add(main_.facets[cell->facet[k]][b], -cell->target[k][b] * inv);
+      }
     } else if (out.node >= 0) {
       wt.add(out.node, 1.0);
     } else {

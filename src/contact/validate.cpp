@@ -44,6 +44,10 @@ void ContactInterface::validate(const ContactSurface& s1, const ContactSurface& 
     throw ContactSetupError(setting, message);
   };
   if (s.accuracy_level < 1) fail("accuracy_level", "expected 1 (low), 2 (standard) or more (high)");
+  if (!s1.parent.empty() || !s2.parent.empty())
+    fail("surface",
+         "facets of curved faces (ContactSurface::parent) are taken by the static "
+         "contact only yet");
   if (!(s.damping >= 0.0)) fail("damping", "the fraction of critical damping must be >= 0");
   if (!(s.end_time >= s.begin_time)) fail("end_time", "the contact must not end before it begins");
   if (!(s.initial_offset >= 0.0))

@@ -5,6 +5,8 @@
 #include <array>
 #include <cmath>
 
+#include "abut/core/triangle_rule.hpp"
+
 namespace abut {
 namespace {
 
@@ -143,15 +145,15 @@ constexpr std::array<FacePoint, 9> quad_3x3() {
 }
 constexpr auto kQuad3x3 = quad_3x3();
 constexpr std::array<FacePoint, 1> kTri1 = {{{{1.0 / 3.0, 1.0 / 3.0}, 0.5}}};
-// Dunavant's degree-4 rule: weights of the unit-area rule halved for the reference triangle.
-constexpr double kDa = 0.445948490915965, kDb = 0.091576213509771;
-constexpr double kDwa = 0.5 * 0.223381589678011, kDwb = 0.5 * 0.109951743655322;
-constexpr std::array<FacePoint, 6> kTri6Points = {{{{kDa, kDa}, kDwa},
-                                                   {{1.0 - 2.0 * kDa, kDa}, kDwa},
-                                                   {{kDa, 1.0 - 2.0 * kDa}, kDwa},
-                                                   {{kDb, kDb}, kDwb},
-                                                   {{1.0 - 2.0 * kDb, kDb}, kDwb},
-                                                   {{kDb, 1.0 - 2.0 * kDb}, kDwb}}};
+// Dunavant's degree-4 rule (core/triangle_rule.hpp), its weights halved for the reference
+// triangle of area 1/2.
+constexpr std::array<FacePoint, 6> tri_degree4() {
+  std::array<FacePoint, 6> out{};
+  for (std::size_t q = 0; q < 6; ++q)
+    out[q] = {{kTriangleDegree4[q].l1, kTriangleDegree4[q].l2}, 0.5 * kTriangleDegree4[q].weight};
+  return out;
+}
+constexpr auto kTri6Points = tri_degree4();
 
 constexpr double kQuadCorner[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
 

@@ -31,10 +31,13 @@ ContactSurface contact_surface(
     const Mesh& mesh, std::span<const SkinFace> faces,
     const std::function<double(const SkinFace&)>& penalty_of_face,
     const std::function<ElasticModuli(std::int64_t part)>& moduli_of_part,
-    ContactSpec::ShellSides shell_sides) {
+    ContactSpec::ShellSides shell_sides, std::span<const FacetParent> parents) {
   ContactSurface s;
   s.facets.reserve(faces.size());
-  for (const SkinFace& f : faces) {
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const SkinFace& f = faces[i];
+    // The facets a face adds (a shell's sides: plain) have its parent.
+    if (!parents.empty()) s.parent.resize(s.size(), FacetParent{});
     const ElasticModuli m = moduli_of_part ? moduli_of_part(f.part) : ElasticModuli{};
     if (f.shell >= 0 && shell_sides != ContactSpec::ShellSides::Both) {
       s.add_shell_side(f.nodes, f.part, penalty_of_face(f), f.thickness,
@@ -52,7 +55,9 @@ ContactSurface contact_surface(
     s.add(f.nodes, f.part, penalty_of_face(f), f.thickness, m.bulk, volume);
     s.element.back() = element_index(mesh, f);
     s.exposed_by.back() = f.exposed_by;
+    if (!parents.empty()) s.parent.push_back(parents[i]);
   }
+  if (!parents.empty()) s.parent.resize(s.size(), FacetParent{});
   return s;
 }
 

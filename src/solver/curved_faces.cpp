@@ -6,6 +6,19 @@
 #include "abut/mesh/shape_functions.hpp"
 
 namespace abut {
+namespace {
+
+void quad8_shape(const double xi[2], double* n) {
+  double dn[8][2];
+  face_shape_functions(FaceType::quad8, xi, n, dn);
+}
+
+void tri6_shape(const double xi[2], double* n) {
+  double dn[8][2];
+  face_shape_functions(FaceType::tri6, xi, n, dn);
+}
+
+}  // namespace
 
 CurvedFaces::CurvedFaces(const Mesh& mesh, int divisions) : mesh_(mesh), divisions_(divisions) {
   dependents_.first = static_cast<std::int32_t>(mesh.nodes.size());
@@ -24,12 +37,18 @@ std::int32_t CurvedFaces::corner(std::span<const std::int32_t> nodes,
   return k;
 }
 
-std::vector<SkinFace> CurvedFaces::facets(std::span<const SkinFace> faces) {
+std::vector<SkinFace> CurvedFaces::facets(std::span<const SkinFace> faces,
+                                          std::vector<FacetParent>* parents) {
   std::vector<SkinFace> out;
+  const auto plain = [&](std::size_t from, std::size_t to) {
+    out.insert(out.end(), faces.begin() + static_cast<std::ptrdiff_t>(from),
+               faces.begin() + static_cast<std::ptrdiff_t>(to));
+    if (parents) parents->resize(out.size());
+  };
   for (std::size_t i = 0; i < faces.size();) {
     const SkinFace& f = faces[i];
     if (f.shell >= 0 || f.solid < 0) {
-      out.push_back(f), ++i;
+      plain(i, i + 1), ++i;
       continue;
     }
     const SolidRef cell = mesh_.solid(static_cast<std::size_t>(f.solid));
@@ -39,9 +58,7 @@ std::vector<SkinFace> CurvedFaces::facets(std::span<const SkinFace> faces) {
            faces[j].shell < 0)
       ++j;
     if (face.type != FaceType::tri6 && face.type != FaceType::quad8) {
-      out.insert(out.end(), faces.begin() + static_cast<std::ptrdiff_t>(i),
-                 faces.begin() + static_cast<std::ptrdiff_t>(j));
-      i = j;
+      plain(i, j), i = j;
       continue;
     }
     const FaceSubdivision sub = subdivide_face(face.type, divisions_);
@@ -65,9 +82,20 @@ std::vector<SkinFace> CurvedFaces::facets(std::span<const SkinFace> faces) {
       return v;
     };
     SkinFace g = f;
+    FacetParent parent;
+    parent.shape = face.type == FaceType::quad8 ? quad8_shape : tri6_shape;
+    parent.count = face.size();
+    for (int a = 0; a < face.size(); ++a)
+      parent.nodes[static_cast<std::size_t>(a)] =
+          cell.nodes[static_cast<std::size_t>(face.nodes[a])];
     for (const auto& facet : sub.facets) {
-      for (int a = 0; a < 4; ++a) g.nodes[a] = node_at(facet[a]);
+      for (int a = 0; a < 4; ++a) {
+        g.nodes[a] = node_at(facet[a]);
+        parent.corner_xi[static_cast<std::size_t>(a)] =
+            sub.corners[static_cast<std::size_t>(facet[a])];
+      }
       out.push_back(g);
+      if (parents) parents->push_back(parent);
     }
     i = j;
   }

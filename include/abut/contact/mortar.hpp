@@ -34,6 +34,7 @@
 #include <cstdint>
 #include <span>
 
+#include "abut/contact/facet_parent.hpp"
 #include "abut/contact/quad.hpp"
 
 namespace abut {
@@ -56,14 +57,26 @@ struct CellOverlap {
   int count = 0;                // facets of the other surface overlapped (at most kMaxOverlaps)
   std::array<std::int32_t, kMaxOverlaps> facet{};
   std::array<std::array<double, 4>, kMaxOverlaps> target{};  // int of facet k's N_b over its part
+  // Facets of curved faces (facet_parent.hpp): the same integrals of the face's own shape
+  // functions, over the face's nodes (Dunavant's degree-4 rule on each triangle of the polygon,
+  // exact for the serendipity quad8's cubic terms where the facet's reference coordinates are
+  // affine). Filled only for the sides that have a parent.
+  const FacetParent* own_parent = nullptr;
+  std::array<double, FacetParent::kMaxNodes> own_face{};
+  std::array<const FacetParent*, kMaxOverlaps> target_parent{};
+  std::array<std::array<double, FacetParent::kMaxNodes>, kMaxOverlaps> target_face{};
 };
 
 // The cell `cell` of facet `own`, projected along `normal` (unit) onto a plane, against the
 // facets `ids` of the other surface with corners `corners` (same order; the first is the
 // point's partner, into whose slot overflowing facets fold). Facets whose projection is
 // degenerate are passed over.
+// `own_parent`, `parents` (parallel to `ids`, or empty): the curved faces the facets are part of
+// (null: none).
 CellOverlap overlap_cell(const QuadCorners& own, const CellBounds& cell, const Vec3& normal,
-                         std::span<const std::int32_t> ids, std::span<const QuadCorners> corners);
+                         std::span<const std::int32_t> ids, std::span<const QuadCorners> corners,
+                         const FacetParent* own_parent = nullptr,
+                         std::span<const FacetParent* const> parents = {});
 
 // The most facets one cell is clipped against (further candidates are passed over).
 inline constexpr std::size_t kMaxCoverFacets = 64;
@@ -77,6 +90,7 @@ struct CoverFacets {
   std::span<const std::uint8_t> active;  // empty: every facet is active
   std::span<const std::int32_t> twin;  // a shell's facets (twin >= 0) are passed over; empty: none
   std::span<const double> x, y, z;
+  std::span<const FacetParent> parent;  // the curved faces of the facets; empty: none
 };
 
 // The cell `cell` of the facet with nodes `own` against the facets of the other surface that it
@@ -88,10 +102,12 @@ struct CoverFacets {
 // other surface, seen from the cell, is a height field over the cell's plane.
 CellOverlap cover_cell(const std::array<std::int32_t, 4>& own, const CellBounds& cell,
                        const Vec3& normal, std::int32_t partner,
-                       std::span<const std::int32_t> candidates, const CoverFacets& other);
+                       std::span<const std::int32_t> candidates, const CoverFacets& other,
+                       const FacetParent* own_parent = nullptr);
 
 // The mean gap over the covered part of a cell, along o.normal: the own side's centroid less the
-// other side's, both weighted by the integrals of the overlap (positive: open).
+// other side's, both weighted by the integrals of the overlap (positive: open); a side on a
+// curved face by its face's integrals and nodes, the centroid of the true face's part.
 double cell_mean_gap(const std::array<std::int32_t, 4>& own, const CellOverlap& o,
                      const CoverFacets& other);
 

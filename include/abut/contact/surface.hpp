@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "abut/contact/facet_parent.hpp"
+
 namespace abut {
 
 struct ContactSurface {
@@ -30,6 +32,9 @@ struct ContactSurface {
   // on its other side has eroded (IMPETUS no_internal = 0), that element (-1: an exterior face).
   std::vector<std::int32_t> element;
   std::vector<std::int32_t> exposed_by;
+  // Static contact only: the curved face each facet is a piece of (facet_parent.hpp); empty, or
+  // one per facet (a plain facet has no shape).
+  std::vector<FacetParent> parent;
 
   std::size_t size() const { return facets.size(); }
   void add(const std::array<std::int32_t, 4>& nodes, std::int64_t part_id, double pfac, double t,

@@ -20,11 +20,13 @@ namespace abut {
 // `penalty_of_face`: pfac of each facet; `moduli_of_part`: bulk and shear modulus of each part
 // (Radioss stiffness rules: B for solids, E for shells; may be empty).
 // `shell_sides`: both sides of each shell, or one (OptiStruct MORIENT NORM / REVNORM).
+// `parents`: empty, or the curved face of each of `faces` (curved_faces.hpp).
 ContactSurface contact_surface(
     const Mesh& mesh, std::span<const SkinFace> faces,
     const std::function<double(const SkinFace&)>& penalty_of_face,
     const std::function<ElasticModuli(std::int64_t part)>& moduli_of_part = {},
-    ContactSpec::ShellSides shell_sides = ContactSpec::ShellSides::Both);
+    ContactSpec::ShellSides shell_sides = ContactSpec::ShellSides::Both,
+    std::span<const FacetParent> parents = {});
 
 // Element-based automatic penalty (*CONTACT_STIFFNESS ELEMENT, in the spirit of Abaqus/Explicit's
 // default general-contact penalty, seed 001): the facet's spring on its lightest node adds at most

@@ -4,7 +4,9 @@
 // at the face's shape functions; a corner that is not a node of the face is a dependent node of
 // the contact library (dependent_nodes.hpp), x_v = sum_a N_a(xi_v) x_a, and the forces on it go
 // to the face's nodes with the same N_a(xi_v). Corners on an edge are shared by the faces on both
-// sides (they depend on that edge's nodes alone), so the surface stays closed.
+// sides (they depend on that edge's nodes alone), so the surface stays closed. Each facet also
+// knows its face (facet_parent.hpp): the static contact integrates the face's own shape functions
+// over the overlaps of surface-to-surface cells, so that its loads are the face's consistent ones.
 #include <array>
 #include <cstdint>
 #include <map>
@@ -24,8 +26,10 @@ class CurvedFaces {
  public:
   explicit CurvedFaces(const Mesh& mesh, int divisions = kCurvedFaceDivisions);
   // `faces` (the skin's facets; those of one quadratic face come together) with every quadratic
-  // face replaced by its subdivision. Linear faces pass unchanged.
-  std::vector<SkinFace> facets(std::span<const SkinFace> faces);
+  // face replaced by its subdivision. Linear faces pass unchanged. With `parents`, one entry per
+  // facet returned: its face (facet_parent.hpp) for a subdivided face, a plain one otherwise.
+  std::vector<SkinFace> facets(std::span<const SkinFace> faces,
+                               std::vector<FacetParent>* parents = nullptr);
   // The dependent nodes made so far (indices from the mesh's node count on).
   const DependentNodes& dependents() const { return dependents_; }
 

@@ -140,8 +140,13 @@ StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side&
   const Nodes& nodes = mesh.nodes;
   const ContactInput initial{nodes.x, nodes.y, nodes.z, {}, {}, {}, 0.0, 0.0, {}};
   CurvedFaces curved(mesh);  // quadratic faces: facets on the true face
-  ContactSurface secondary = contact_surface(mesh, curved.facets(own.faces), no_penalty);
-  ContactSurface main = contact_surface(mesh, curved.facets(target.faces), no_penalty);
+  std::vector<FacetParent> own_parents, target_parents;
+  const std::vector<SkinFace> own_facets = curved.facets(own.faces, &own_parents);
+  const std::vector<SkinFace> target_facets = curved.facets(target.faces, &target_parents);
+  ContactSurface secondary =
+      contact_surface(mesh, own_facets, no_penalty, {}, ContactSpec::ShellSides::Both, own_parents);
+  ContactSurface main = contact_surface(mesh, target_facets, no_penalty, {},
+                                        ContactSpec::ShellSides::Both, target_parents);
   return StaticContact(std::move(s), std::move(secondary), std::move(main), own.nodes, initial,
                        curved.dependents());
 }
