@@ -45,7 +45,7 @@ CellOverlap ContactInterface::cover(const Pass& pass, std::size_t p, const Point
 }
 
 CoverFacets ContactInterface::cover_facets(const Side& target, const ContactInput& in) {
-  return {target.surface.facets, target.active, {}, in.x, in.y, in.z};  // shells too (cover)
+  return {target.surface.facets, target.active, {}, in.x, in.y, in.z, {}};  // shells too (cover)
 }
 
 // The mortar gap less the pair's gap. The cell's own share of that gap, g_s, lies along its
