@@ -39,20 +39,9 @@ std::array<std::int32_t, 4> face_key(const SolidRef& cell, const FaceTopology& f
 }
 
 // A solid's volume, which must be positive (nodes in the type's order).
-double positive_volume(const Mesh& mesh, const SolidRef& cell) {
-  double volume = 0.0;
-  if (cell.type == CellType::hex8) {
-    Hex8 hex;
-    std::copy(cell.nodes.begin(), cell.nodes.end(), hex.begin());
-    volume = hex_volume(mesh.nodes, hex);
-  } else {
-    double X[3 * kMaxCellNodes];
-    for (std::size_t a = 0; a < cell.nodes.size(); ++a) {
-      const Vec3 p = mesh.nodes.position(static_cast<std::size_t>(cell.nodes[a]));
-      X[3 * a] = p.x, X[3 * a + 1] = p.y, X[3 * a + 2] = p.z;
-    }
-    volume = cell_volume(cell.type, std::span<const double>(X, 3 * cell.nodes.size()));
-  }
+double positive_volume(const Mesh& mesh, std::size_t solid) {
+  const double volume = solid_volume(mesh, solid);
+  const SolidRef cell = mesh.solid(solid);
   if (!(volume > 0.0))
     throw InputError("element " + std::to_string(cell.id) +
                      " has a non-positive volume: expected " +
@@ -130,7 +119,7 @@ std::vector<SkinFace> extract(const Mesh& mesh, bool all_parts, std::span<const 
   for (const FaceRecord& r : kept) {
     if (r.solid != volume_of) {
       volume_of = r.solid;
-      volume = positive_volume(mesh, mesh.solid(static_cast<std::size_t>(r.solid)));
+      volume = positive_volume(mesh, static_cast<std::size_t>(r.solid));
     }
     const std::size_t first = faces.size();
     append_facets(mesh, r.solid, r.local, volume, faces);
@@ -145,7 +134,7 @@ void append_facets(const Mesh& mesh, std::int32_t solid, int face, double volume
                    std::vector<SkinFace>& out) {
   const SolidRef cell = mesh.solid(static_cast<std::size_t>(solid));
   const FaceTopology& ft = topology(cell.type).faces[static_cast<std::size_t>(face)];
-  if (volume <= 0.0) volume = positive_volume(mesh, cell);
+  if (volume <= 0.0) volume = positive_volume(mesh, static_cast<std::size_t>(solid));
   SkinFace f;
   f.solid = solid;
   f.face = static_cast<std::int8_t>(face);
@@ -167,6 +156,17 @@ std::vector<SkinFace> exterior_faces(const Mesh& mesh, std::span<const std::int6
 std::vector<SkinFace> exterior_faces(const Mesh& mesh, bool merge,
                                      const std::function<bool(std::int32_t)>& erodible) {
   return extract(mesh, true, {}, merge, erodible);
+}
+
+double solid_volume(const Mesh& mesh, std::size_t solid) {
+  const SolidRef cell = mesh.solid(solid);
+  if (cell.type == CellType::hex8) return hex_volume(mesh.nodes, mesh.hexes[solid]);
+  double X[3 * kMaxCellNodes];
+  for (std::size_t a = 0; a < cell.nodes.size(); ++a) {
+    const Vec3 p = mesh.nodes.position(static_cast<std::size_t>(cell.nodes[a]));
+    X[3 * a] = p.x, X[3 * a + 1] = p.y, X[3 * a + 2] = p.z;
+  }
+  return cell_volume(cell.type, std::span<const double>(X, 3 * cell.nodes.size()));
 }
 
 double hex_volume(const Nodes& nodes, const Hex8& hex) {

@@ -9,23 +9,8 @@
 
 #include "abut/contact/adjust.hpp"
 #include "abut/core/error.hpp"
-#include "abut/mesh/shape_functions.hpp"
 
 namespace abut {
-
-namespace {
-
-double solid_volume(const Mesh& mesh, std::int32_t solid) {
-  const SolidRef cell = mesh.solid(static_cast<std::size_t>(solid));
-  std::vector<double> X(3 * cell.nodes.size());
-  for (std::size_t a = 0; a < cell.nodes.size(); ++a) {
-    const Vec3 p = mesh.nodes.position(static_cast<std::size_t>(cell.nodes[a]));
-    X[3 * a] = p.x, X[3 * a + 1] = p.y, X[3 * a + 2] = p.z;
-  }
-  return cell_volume(cell.type, X);
-}
-
-}  // namespace
 
 ContactSurface contact_surface(
     const Mesh& mesh, std::span<const SkinFace> faces,
@@ -51,7 +36,8 @@ ContactSurface contact_surface(
       s.element.end()[-1] = s.element.end()[-2] = element_index(mesh, f);
       continue;
     }
-    const double volume = moduli_of_part ? solid_volume(mesh, f.solid) : 0.0;
+    const double volume =
+        moduli_of_part ? solid_volume(mesh, static_cast<std::size_t>(f.solid)) : 0.0;
     s.add(f.nodes, f.part, penalty_of_face(f), f.thickness, m.bulk, volume);
     s.element.back() = element_index(mesh, f);
     s.exposed_by.back() = f.exposed_by;

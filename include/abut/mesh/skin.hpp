@@ -46,6 +46,10 @@ std::vector<SkinFace> exterior_faces(const Mesh& mesh, bool merge,
 void append_facets(const Mesh& mesh, std::int32_t solid, int face, double volume,
                    std::vector<SkinFace>& out);
 
+// Volume of solid `solid` (Mesh::solid numbering): hex_volume for a hexahedron, cell_volume of
+// shape_functions.hpp for the other types.
+double solid_volume(const Mesh& mesh, std::size_t solid);
+
 // Volume of a trilinear hex (cell_volume of shape_functions.hpp for every type): 2x2x2 Gauss
 // quadrature of det J, exact because det J is at most quadratic in each reference coordinate.
 double hex_volume(const Nodes& nodes, const Hex8& hex);
