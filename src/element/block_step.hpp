@@ -42,12 +42,12 @@ BlockStep end_block_step(Block& block, std::size_t count, const std::array<const
 // Erosion, serial in element order: the energy each living element has taken so far, then the
 // block's criteria (`fails(e)`). An eroded element's energy leaves the internal (and hourglass)
 // energy for the eroded energy, so the energy balance still closes; its forces of this step are
-// dropped (24 per element in `forces`) and `clear(e)` drops its stress. The stable step is that
-// of the living elements. `block` also holds element_internal and element_hourglass, the energy
-// each element has taken.
+// dropped (`stride` per element in `forces`) and `clear(e)` drops its stress. The stable step is
+// that of the living elements. `block` also holds element_internal and element_hourglass, the
+// energy each element has taken.
 template <class Block, class Fails, class Clear>
-void erode_elements(Block& block, std::size_t count, BlockStep& out, const Fails& fails,
-                    const Clear& clear) {
+void erode_elements(Block& block, std::size_t count, std::size_t stride, BlockStep& out,
+                    const Fails& fails, const Clear& clear) {
   out.stable_step = std::numeric_limits<double>::infinity();
   for (std::size_t e = 0; e < count; ++e) {
     if (block.eroded[e]) continue;
@@ -62,7 +62,7 @@ void erode_elements(Block& block, std::size_t count, BlockStep& out, const Fails
     block.eroded_energy += block.element_internal[e] + block.element_hourglass[e];
     block.internal_energy -= block.element_internal[e];
     block.hourglass_energy -= block.element_hourglass[e];
-    std::fill_n(&block.forces[24 * e], 24, 0.0);
+    std::fill_n(&block.forces[stride * e], stride, 0.0);
     clear(e);
   }
 }

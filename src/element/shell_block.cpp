@@ -295,7 +295,7 @@ BlockStep ShellBlock::Impl::step(const ShellNodalState& s, double dt, const Law&
 void ShellBlock::Impl::erode(BlockStep& out) {
   const std::size_t np = points();
   erode_elements(
-      *this, shells.size(), out,
+      *this, shells.size(), 24, out,
       [this, np](std::size_t e) {
         bool all_failed = fails_by_damage;
         for (std::size_t k = 0; k < np && all_failed; ++k)

@@ -56,10 +56,8 @@
 
 namespace abut {
 
-namespace {
-
-void check_material(std::int64_t part_id, const MaterialParams& material,
-                    const FunctionTable* functions) {
+void check_solid_material(std::int64_t part_id, const MaterialParams& material,
+                          const FunctionTable* functions) {
   const std::string where = input_prefix(part_id);
   if (is_rigid(material)) {
     throw InputError(where + "a rigid material cannot be used for a deformable solid block");
@@ -87,8 +85,6 @@ void check_material(std::int64_t part_id, const MaterialParams& material,
   }
 }
 
-}  // namespace
-
 std::string SolidBlock::Impl::element_name(std::size_t e) const {
   std::string name("part ");
   name += std::to_string(part_id);
@@ -110,7 +106,7 @@ SolidBlock::SolidBlock(std::int64_t part_id, const MaterialParams& material,
                        std::vector<Hex8> hexes, const Nodes& reference,
                        const FunctionTable* functions)
     : impl_(std::make_unique<Impl>()) {
-  check_material(part_id, material, functions);
+  check_solid_material(part_id, material, functions);
   Impl& m = *impl_;
   m.functions = functions;
   m.part_id = part_id;

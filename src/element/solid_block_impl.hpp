@@ -31,6 +31,15 @@ inline std::string input_prefix(std::int64_t part_id) {
   return s;
 }
 
+// InputError at the part unless the material suits a deformable solid: not rigid, a positive
+// density, moduli in range, a flow curve for a metal (SolidBlock, SolidCellBlock).
+void check_solid_material(std::int64_t part_id, const MaterialParams& material,
+                          const FunctionTable* functions);
+
+// Effective deviatoric logarithmic strain sqrt(2/3 e_dev:e_dev) of the deformation gradient F
+// (erosion's geometric strain).
+double deviatoric_log_strain(const Mat3& f);
+
 struct SolidBlock::Impl {
   std::int64_t part_id = 0;
   MaterialParams material;

@@ -26,6 +26,27 @@
 
 namespace abut {
 
+// Effective deviatoric logarithmic strain sqrt(2/3 e_dev:e_dev) of F, from the eigenvalues of
+// C = F^T F: e_i = ln(lambda_i) / 2.
+double deviatoric_log_strain(const Mat3& f) {
+  Sym3 right_cauchy_green;
+  const int pairs[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
+  for (int q = 0; q < 6; ++q) {
+    double sum = 0.0;
+    for (int k = 0; k < 3; ++k) sum += f[3 * k + pairs[q][0]] * f[3 * k + pairs[q][1]];
+    right_cauchy_green[q] = sum;
+  }
+  const SymEigen eig = eigen_symmetric(right_cauchy_green);
+  double e[3], mean = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    e[i] = 0.5 * std::log(eig.values[static_cast<std::size_t>(i)]);
+    mean += e[i] / 3.0;
+  }
+  double sum = 0.0;
+  for (double v : e) sum += (v - mean) * (v - mean);
+  return std::sqrt(2.0 / 3.0 * sum);
+}
+
 namespace {
 
 // sum_a u_a (x) b_a = 8 sum_k u_k (x) G_k (hex8.hpp), row-major: l[3 i + j] = sum_a u_ai b_aj.
@@ -60,27 +81,10 @@ void deformation_gradient(const Hex8ModesOf<T>& c, const T* r0, T f[9]) {
     }
 }
 
-// Effective deviatoric logarithmic strain sqrt(2/3 e_dev:e_dev) of F (deformation_gradient),
-// from the eigenvalues of C = F^T F: e_i = ln(lambda_i) / 2.
 double deviatoric_log_strain(const Hex8Modes& c, const double* r0) {
   Mat3 f;
   deformation_gradient(c, r0, f.data());
-  Sym3 right_cauchy_green;
-  const int pairs[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
-  for (int q = 0; q < 6; ++q) {
-    double sum = 0.0;
-    for (int k = 0; k < 3; ++k) sum += f[3 * k + pairs[q][0]] * f[3 * k + pairs[q][1]];
-    right_cauchy_green[q] = sum;
-  }
-  const SymEigen eig = eigen_symmetric(right_cauchy_green);
-  double e[3], mean = 0.0;
-  for (int i = 0; i < 3; ++i) {
-    e[i] = 0.5 * std::log(eig.values[static_cast<std::size_t>(i)]);
-    mean += e[i] / 3.0;
-  }
-  double sum = 0.0;
-  for (double v : e) sum += (v - mean) * (v - mean);
-  return std::sqrt(2.0 / 3.0 * sum);
+  return abut::deviatoric_log_strain(f);
 }
 
 // The lane l of a batch (Lanes, lanes.hpp) as one element's value.
@@ -472,7 +476,7 @@ BlockStep SolidBlock::Impl::step(const NodalState& s, double dt, const Law& law)
 
 void SolidBlock::Impl::erode(BlockStep& out) {
   erode_elements(
-      *this, hexes.size(), out,
+      *this, hexes.size(), 24, out,
       [this](std::size_t e) {
         return stable[e] < erosion.min_step || geometric_strain[e] > erosion.max_geometric_strain ||
                volume_ratio[e] - 1.0 > erosion.max_volumetric_strain ||

@@ -1,0 +1,258 @@
+// The explicit block of solid cells (element/solid_cell_block.hpp) and what it is built from:
+// the HRZ lumped mass (lumped_mass.hpp), the element frequency bound of its stable step
+// (element_frequency.hpp), the constant-strain patch test of its update and the stable step of
+// an assembled mesh.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+#include <random>
+#include <vector>
+
+#include "abut/element/element_frequency.hpp"
+#include "abut/element/lumped_mass.hpp"
+#include "abut/element/solid_cell_block.hpp"
+#include "abut/element/solid_full.hpp"
+#include "abut/material/elastic.hpp"
+#include "cell_grid.hpp"
+
+namespace abut {
+namespace {
+
+constexpr CellType kTypes[] = {CellType::hex8, CellType::hex20, CellType::tet4, CellType::tet10,
+                               CellType::wedge6};
+constexpr double kE = 210000.0, kNu = 0.3, kRho = 7.8e-9;  // N, mm, s
+
+// The cells of a grid moved off regular (fixed seed), as a block's connectivity.
+test::CellGrid moved_grid(CellType type, int nx, int ny, int nz) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> shift(-0.15, 0.15);
+  return test::cell_grid(type, nx, ny, nz, {2.0 * nx, 1.5 * ny, 1.0 * nz},
+                         [&](int i, int j, int k, Vec3 p) {
+                           if (i > 0 && i < nx) p.x += shift(random);
+                           if (j > 0 && j < ny) p.y += shift(random);
+                           if (k > 0 && k < nz) p.z += shift(random);
+                           return p;
+                         });
+}
+
+std::vector<std::int32_t> connectivity(const test::CellGrid& g) {
+  std::vector<std::int32_t> c;
+  for (const auto& cell : g.cells) c.insert(c.end(), cell.begin(), cell.end());
+  return c;
+}
+
+std::vector<double> coordinates(const test::CellGrid& g, std::size_t cell) {
+  std::vector<double> X;
+  for (const std::int32_t a : g.cells[cell]) {
+    X.push_back(g.nodes.x[a]);
+    X.push_back(g.nodes.y[a]);
+    X.push_back(g.nodes.z[a]);
+  }
+  return X;
+}
+
+// The largest eigenvalue of a dense symmetric matrix by cyclic Jacobi rotations (Golub & Van
+// Loan, Matrix Computations, section 8.5): an independent check of the power iteration.
+double largest_eigenvalue(std::vector<double> a, std::size_t n) {
+  for (int sweep = 0; sweep < 100; ++sweep) {
+    double off = 0.0, all = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j) {
+        all += a[i * n + j] * a[i * n + j];
+        if (i != j) off += a[i * n + j] * a[i * n + j];
+      }
+    if (off <= 1e-30 * all) break;
+    for (std::size_t p = 0; p < n; ++p)
+      for (std::size_t q = p + 1; q < n; ++q) {
+        if (a[p * n + q] == 0.0) continue;
+        const double theta = (a[q * n + q] - a[p * n + p]) / (2.0 * a[p * n + q]);
+        const double t =
+            (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1));
+        const double c = 1.0 / std::sqrt(t * t + 1), s = t * c;
+        for (std::size_t k = 0; k < n; ++k) {  // columns p, q
+          const double akp = a[k * n + p], akq = a[k * n + q];
+          a[k * n + p] = c * akp - s * akq;
+          a[k * n + q] = s * akp + c * akq;
+        }
+        for (std::size_t k = 0; k < n; ++k) {  // rows p, q
+          const double apk = a[p * n + k], aqk = a[q * n + k];
+          a[p * n + k] = c * apk - s * aqk;
+          a[q * n + k] = s * apk + c * aqk;
+        }
+      }
+  }
+  double largest = 0.0;
+  for (std::size_t i = 0; i < n; ++i) largest = std::max(largest, a[i * n + i]);
+  return largest;
+}
+
+// ---- Lumped mass -----------------------------------------------------------------------------
+
+TEST(LumpedMass, HrzSharesOfUndistortedCells) {
+  // References: the integrals of N_a^2 by hand (lumped_mass.hpp). tet10: corners 1/70 V,
+  // midsides 8/105 V, so shares 1/36 and 4/27; hex20 on [-1,1]^3: corners 28/135, midsides
+  // 64/135 of the volume 8, so shares 7/248 and 2/31; the linear cells: equal shares.
+  struct Case {
+    CellType type;
+    double corner, midside;
+  };
+  const Case cases[] = {{CellType::tet10, 1.0 / 36, 4.0 / 27},
+                        {CellType::hex20, 7.0 / 248, 2.0 / 31},
+                        {CellType::tet4, 0.25, 0.0},
+                        {CellType::hex8, 0.125, 0.0},
+                        {CellType::wedge6, 1.0 / 6, 0.0}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(std::string(topology(c.type).name));
+    const CellTopology& t = topology(c.type);
+    std::vector<double> X;  // the reference cell scaled by 2, 3, 5 and shifted
+    for (const auto& xi : t.natural) {
+      X.push_back(2.0 * xi[0] + 1.0);
+      X.push_back(3.0 * xi[1] - 2.0);
+      X.push_back(5.0 * xi[2] + 0.5);
+    }
+    std::vector<double> shares(static_cast<std::size_t>(t.nodes));
+    const double volume = lumped_volume_shares(c.type, X, shares);
+    for (int a = 0; a < t.nodes; ++a)
+      EXPECT_NEAR(shares[a] / volume, a < t.corners ? c.corner : c.midside, 1e-14) << "node " << a;
+  }
+}
+
+TEST(LumpedMass, PositiveAndWholeOnDistortedCells) {
+  for (const CellType type : kTypes) {
+    SCOPED_TRACE(std::string(topology(type).name));
+    const auto g = moved_grid(type, 3, 2, 2);
+    for (std::size_t e = 0; e < g.cells.size(); ++e) {
+      const std::vector<double> X = coordinates(g, e);
+      std::vector<double> shares(g.cells[e].size());
+      const double volume = lumped_volume_shares(type, X, shares);
+      EXPECT_NEAR(std::accumulate(shares.begin(), shares.end(), 0.0), volume, 1e-14 * volume);
+      EXPECT_NEAR(volume, cell_volume(type, X), 1e-13 * volume);
+      for (const double s : shares) EXPECT_GT(s, 0.0);
+    }
+  }
+}
+
+// ---- Stable step -----------------------------------------------------------------------------
+
+// M^-1/2 K M^-1/2 of the assembled elastic cells of g, dense.
+std::vector<double> scaled_stiffness(CellType type, const test::CellGrid& g,
+                                     std::vector<double> masses) {
+  const std::size_t dofs = 3 * g.nodes.size();
+  std::vector<double> k(dofs * dofs, 0.0);
+  SolidElementResult r;
+  for (std::size_t e = 0; e < g.cells.size(); ++e) {
+    const std::vector<double> X = coordinates(g, e), u(X.size(), 0.0);
+    solid_full_with({type, quadrature(type, Integration::full), X, u, false},
+                    IsotropicElastic{kE, kNu}, r);
+    const std::size_t n = X.size();
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j) {
+        const std::size_t gi = 3 * static_cast<std::size_t>(g.cells[e][i / 3]) + i % 3;
+        const std::size_t gj = 3 * static_cast<std::size_t>(g.cells[e][j / 3]) + j % 3;
+        k[gi * dofs + gj] += r.stiffness[i * n + j];
+      }
+  }
+  for (std::size_t i = 0; i < dofs; ++i)
+    for (std::size_t j = 0; j < dofs; ++j)
+      k[i * dofs + j] /= std::sqrt(masses[i / 3] * masses[j / 3]);
+  return k;
+}
+
+TEST(ElementFrequency, PowerIterationMatchesJacobiOnOneCell) {
+  for (const CellType type : kTypes) {
+    SCOPED_TRACE(std::string(topology(type).name));
+    const auto g = moved_grid(type, 2, 2, 2);
+    const std::size_t e = g.cells.size() / 2;  // an inner, distorted cell
+    const std::vector<double> X = coordinates(g, e);
+    std::vector<double> shares(g.cells[e].size());
+    lumped_volume_shares(type, X, shares);
+    for (double& s : shares) s *= kRho;
+    const LameConstants lame = lame_constants(ElasticParams{kRho, kE, kNu});
+    const double omega = largest_element_frequency(type, X, shares, lame.lambda, lame.mu);
+    test::CellGrid one;  // the cell alone
+    for (std::size_t a = 0; a < g.cells[e].size(); ++a) {
+      one.nodes.add(static_cast<std::int64_t>(a) + 1, {X[3 * a], X[3 * a + 1], X[3 * a + 2]});
+      one.cells.resize(1);
+      one.cells[0].push_back(static_cast<std::int32_t>(a));
+    }
+    const double exact =
+        std::sqrt(largest_eigenvalue(scaled_stiffness(type, one, shares), X.size()));
+    EXPECT_GE(omega, exact * (1.0 - 1e-9));
+    EXPECT_LT(omega, exact * (1.0 + 1e-5));
+  }
+}
+
+TEST(SolidCellBlock, StableStepBoundsTheAssembledMesh) {
+  // The element eigenvalue inequality: the block's step is at most 2 / omega_max of the mesh, and
+  // on a mesh of similar cells not far below it.
+  for (const CellType type : kTypes) {
+    SCOPED_TRACE(std::string(topology(type).name));
+    const auto g = moved_grid(type, 2, 2, 1);
+    const MaterialParams steel = ElasticParams{kRho, kE, kNu};
+    const SolidCellBlock block(1, steel, type, connectivity(g), g.nodes);
+    std::vector<double> mass(g.nodes.size(), 0.0);
+    block.add_lumped_mass(mass);
+    const double omega =
+        std::sqrt(largest_eigenvalue(scaled_stiffness(type, g, mass), 3 * g.nodes.size()));
+    const double mesh_step = 2.0 / omega;
+    std::cout << topology(type).abaqus << ": block step / mesh step "
+              << block.initial_stable_step() / mesh_step << "\n";
+    EXPECT_LE(block.initial_stable_step(), mesh_step * (1.0 + 1e-9));
+    EXPECT_GT(block.initial_stable_step(), 0.5 * mesh_step);
+  }
+}
+
+// ---- Update ----------------------------------------------------------------------------------
+
+TEST(SolidCellBlock, ConstantStrainRatePatch) {
+  // Velocities of a homogeneous deformation v = L x over one step: every point of every
+  // (distorted) cell takes sigma = Hooke(D dt) exactly, and the forces on each inner node cancel
+  // (a uniform stress is in equilibrium; MacNeal & Harder 1985's patch test in rate form).
+  const double l[3][3] = {{1e-3, 2e-4, 0.0}, {-1e-4, -5e-4, 3e-4}, {2e-4, 1e-4, 4e-4}};
+  const double dt = 1e-3;
+  for (const CellType type : kTypes) {
+    SCOPED_TRACE(std::string(topology(type).name));
+    const auto g = moved_grid(type, 3, 2, 2);
+    const MaterialParams steel = ElasticParams{kRho, kE, kNu};
+    SolidCellBlock block(1, steel, type, connectivity(g), g.nodes);
+    block.set_bulk_viscosity(0.0, 0.0);
+    const std::size_t n = g.nodes.size();
+    // x^n such that the mid-step configuration is the reference one.
+    std::vector<double> x(n), y(n), z(n), vx(n), vy(n), vz(n);
+    for (std::size_t a = 0; a < n; ++a) {
+      const double p[3] = {g.nodes.x[a], g.nodes.y[a], g.nodes.z[a]};
+      double v[3];
+      for (int i = 0; i < 3; ++i) v[i] = l[i][0] * p[0] + l[i][1] * p[1] + l[i][2] * p[2];
+      vx[a] = v[0], vy[a] = v[1], vz[a] = v[2];
+      x[a] = p[0] + 0.5 * dt * v[0], y[a] = p[1] + 0.5 * dt * v[1], z[a] = p[2] + 0.5 * dt * v[2];
+    }
+    block.update({x.data(), y.data(), z.data(), vx.data(), vy.data(), vz.data()}, dt);
+    // The expected stress: the rotation of the zero stress is zero, so Hooke of D dt.
+    const Sym3 d{{l[0][0] * dt, l[1][1] * dt, l[2][2] * dt, 0.5 * (l[0][1] + l[1][0]) * dt,
+                  0.5 * (l[1][2] + l[2][1]) * dt, 0.5 * (l[2][0] + l[0][2]) * dt}};
+    const Sym3 expected = hooke(lame_constants(std::get<ElasticParams>(steel)), d);
+    std::vector<double> s;
+    block.stress(s);
+    for (std::size_t e = 0; e < block.size(); ++e)
+      for (int c = 0; c < 6; ++c) EXPECT_NEAR(s[6 * e + c], expected[c], 1e-10 * 200.0);
+    std::vector<double> f(3 * n, 0.0);
+    const auto& forces = block.element_forces();
+    const auto nn = static_cast<std::size_t>(block.nodes_per_element());
+    for (std::size_t e = 0; e < block.size(); ++e)
+      for (std::size_t a = 0; a < nn; ++a)
+        for (int i = 0; i < 3; ++i)
+          f[3 * block.element(e)[a] + i] += forces[3 * nn * e + 3 * a + i];
+    double largest = 0.0, inner = 0.0;
+    for (std::size_t a = 0; a < n; ++a)
+      for (int i = 0; i < 3; ++i) {
+        largest = std::max(largest, std::abs(f[3 * a + i]));
+        if (!g.on_boundary[a]) inner = std::max(inner, std::abs(f[3 * a + i]));
+      }
+    EXPECT_GT(largest, 0.0);
+    EXPECT_LT(inner, 1e-10 * largest);
+  }
+}
+
+}  // namespace
+}  // namespace abut
