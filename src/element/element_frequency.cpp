@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "abut/element/lumped_mass.hpp"
 #include "abut/element/solid_full.hpp"
 
 namespace abut {
@@ -51,6 +52,15 @@ double largest_element_frequency(CellType type, std::span<const double> X,
     for (std::size_t i = 0; i < dofs; ++i) x[i] = y[i] * inverse;
   }
   return std::sqrt(rayleigh + residual);
+}
+
+double cell_critical_step(CellType type, std::span<const double> X, double density, double lambda,
+                          double mu) {
+  double masses[kMaxCellNodes];
+  const std::span<double> m(masses, static_cast<std::size_t>(topology(type).nodes));
+  lumped_volume_shares(type, X, m);
+  for (double& v : m) v *= density;
+  return 2.0 / largest_element_frequency(type, X, m, lambda, mu);
 }
 
 }  // namespace abut

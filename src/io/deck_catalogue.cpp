@@ -22,6 +22,8 @@ const std::map<std::string, KeywordReader, std::less<>>& supported() {
       {"*CONTROL_BULK_VISCOSITY", read_control_bulk_viscosity},  // abut's own (LS-DYNA's name)
       {"*NODE", read_node},
       {"*ELEMENT_SOLID", read_element_solid},
+      {"*ELEMENT_SOLID_TET10", read_element_solid_tet10},
+      {"*ELEMENT_SOLID_H20", read_element_solid_h20},
       {"*ELEMENT_SHELL", read_element_shell},
       {"*COMPONENT_BOX", read_component_box},
       {"*COMPONENT_SPHERE", read_component_sphere},

@@ -106,6 +106,7 @@ DeckResult DeckReader::finish() {
       mesh.hexes[e.hex][k] = index;
     }
   }
+  resolve_cell_nodes();
 
   // Parts, their materials, and the part of every hex.
   std::set<std::int64_t> part_ids, material_ids;
@@ -128,6 +129,9 @@ DeckResult DeckReader::finish() {
     require_part(mesh.hex_part[e.hex], element_where(e, "pid"));
   for (const ShellNodes& e : shell_nodes)
     require_part(mesh.shell_part[e.shell], shell_where(e, "pid"));
+  for (const CellNodes& e : cell_nodes)
+    for (const CellBlock& b : mesh.cells)
+      if (b.type == e.type) require_part(b.part[e.cell], cell_where(e, "pid"));
   for (const MeshSource& s : mesh_sources) {
     for (std::size_t h = s.first; h < s.end; ++h)
       require_part(mesh.hex_part[h], with_field(s.where, "pid"));
@@ -254,6 +258,20 @@ DeckResult DeckReader::finish() {
     c.where = with_field(s.entity.where, "");  // the *SMOOTH_MESH row or the *PART row
     smoothings.push_back(std::move(c));
   }
+  // Refinement and smoothing work on hexahedra: a part with other cells would be left with
+  // cells that do not conform to its refined hexahedra.
+  const auto require_hexahedra = [&](const std::vector<std::int64_t>& parts,
+                                     const SourceLocation& where, const char* keyword) {
+    for (const CellBlock& b : mesh.cells)
+      for (std::size_t c = 0; c < b.size(); ++c)
+        if (std::find(parts.begin(), parts.end(), b.part[c]) != parts.end())
+          throw InputError(where, std::string(keyword) + " on part " + std::to_string(b.part[c]) +
+                                      ", which has " + std::string(topology(b.type).abaqus) +
+                                      " elements, is not supported yet (it refines and smooths "
+                                      "8-node hexahedra)");
+  };
+  for (const OrderChange& c : order_changes) require_hexahedra(c.parts, c.where, "*CHANGE_P-ORDER");
+  for (const SurfaceSmoothing& c : smoothings) require_hexahedra(c.parts, c.where, "*SMOOTH_MESH");
   if (!order_changes.empty() || !smoothings.empty()) {
     // Order 3 makes 27 hexes of one: counted against the memory like a generated component.
     const auto fits = [&](const MeshSize& added, const SourceLocation& where) {
@@ -329,9 +347,11 @@ DeckResult DeckReader::finish() {
   // *PART_SOLID; with *STATIC the loads and boundary conditions become the steps' lists.
   finish_static_steps();
 
+  std::set<std::int64_t> parts_with_elements(mesh.hex_part.begin(), mesh.hex_part.end());
+  parts_with_elements.insert(mesh.shell_part.begin(), mesh.shell_part.end());
+  for (const CellBlock& b : mesh.cells) parts_with_elements.insert(b.part.begin(), b.part.end());
   for (const Part& p : model.parts) {
-    if (std::find(mesh.hex_part.begin(), mesh.hex_part.end(), p.id) == mesh.hex_part.end() &&
-        std::find(mesh.shell_part.begin(), mesh.shell_part.end(), p.id) == mesh.shell_part.end()) {
+    if (!parts_with_elements.count(p.id)) {
       notes.push_back("part " + std::to_string(p.id) + " has no elements");
     }
   }

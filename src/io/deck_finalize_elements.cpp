@@ -3,7 +3,10 @@
 // the generator keyword), for rigid parts as for deformable ones. A rigid part has no element
 // block that would find it later, and its mass and centre of mass would silently become 0 and NaN.
 #include <cmath>
+#include <stdexcept>
+#include <vector>
 
+#include "abut/mesh/shape_functions.hpp"
 #include "abut/mesh/skin.hpp"
 #include "deck_reader.hpp"
 
@@ -28,7 +31,27 @@ double spanned_volume(const Nodes& nodes, const Hex8& hex) {
   return product;
 }
 
+CellBlock& block_of(Mesh& mesh, CellType type) {
+  for (CellBlock& b : mesh.cells)
+    if (b.type == type) return b;
+  throw std::logic_error("a cell's block is missing");
+}
+
 }  // namespace
+
+void DeckReader::resolve_cell_nodes() {
+  for (const CellNodes& e : cell_nodes) {
+    CellBlock& block = block_of(model.mesh, e.type);
+    const std::size_t nodes = block.nodes_per_cell();
+    for (std::size_t k = 0; k < nodes; ++k) {
+      const std::int32_t index = node_index(e.node_ids[k]);
+      if (index < 0)
+        throw InputError(cell_where(e, "n" + std::to_string(e.fields[k])),
+                         "node " + std::to_string(e.node_ids[k]) + " does not exist");
+      block.nodes[e.cell * nodes + k] = index;
+    }
+  }
+}
 
 void DeckReader::check_element_volumes() const {
   const Mesh& mesh = model.mesh;
@@ -57,6 +80,24 @@ void DeckReader::check_element_volumes() const {
                          (volume < 0.0 ? " (inverted)" : " (degenerate)") +
                          " in the initial configuration; expected nodes n1-n4 counter-clockwise "
                          "on the bottom face seen from above, n5-n8 above them");
+  }
+  // The other cells: a positive Jacobian at every point of the full rule.
+  for (const CellNodes& e : cell_nodes) {
+    const CellBlock* block = nullptr;
+    for (const CellBlock& b : mesh.cells)
+      if (b.type == e.type) block = &b;
+    std::vector<double> X;
+    for (const std::int32_t n : block->cell(e.cell)) {
+      const Vec3 p = mesh.nodes.position(static_cast<std::size_t>(n));
+      X.insert(X.end(), {p.x, p.y, p.z});
+    }
+    const double jacobian = min_jacobian(e.type, X);
+    if (jacobian > 0.0 && std::isfinite(jacobian)) continue;
+    const CellTopology& t = topology(e.type);
+    throw InputError(cell_where(e, ""),
+                     std::string(t.abaqus) + " element " + std::to_string(block->id[e.cell]) +
+                         " is inverted or degenerate in the initial configuration (Jacobian " +
+                         format_number(jacobian) + "); expected the " + std::string(t.node_order));
   }
 }
 

@@ -109,6 +109,14 @@ void require_distinct_corners(const Mesh& mesh, const std::vector<std::int32_t>&
     if (std::adjacent_find(q.begin(), q.end()) != q.end())
       fail("hexahedron " + std::to_string(mesh.hex_id[h]));
   }
+  for (const CellBlock& block : mesh.cells)
+    for (std::size_t c = 0; c < block.size(); ++c) {
+      std::vector<std::int32_t> nodes;
+      for (const std::int32_t n : block.cell(c)) nodes.push_back(index(n));
+      std::sort(nodes.begin(), nodes.end());
+      if (std::adjacent_find(nodes.begin(), nodes.end()) != nodes.end())
+        fail(std::string(topology(block.type).abaqus) + " element " + std::to_string(block.id[c]));
+    }
   for (std::size_t s = 0; s < mesh.shell_count(); ++s) {
     const Quad4& q = mesh.shells[s];
     // A triangle repeats n3 as n4 (is_triangle); a quad must keep four nodes.

@@ -19,6 +19,8 @@ struct PartElements {
 std::map<std::int64_t, PartElements> elements_by_part(const Mesh& mesh) {
   std::map<std::int64_t, PartElements> parts;
   for (const std::int64_t p : mesh.hex_part) parts[p].hexes = true;
+  for (const CellBlock& b : mesh.cells)
+    for (const std::int64_t p : b.part) parts[p].hexes = true;
   for (const std::int64_t p : mesh.shell_part) parts[p].shells = true;
   return parts;
 }

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "abut/element/lumped_mass.hpp"
 #include "abut/element/solid_block.hpp"
 #include "abut/solver/pressure_loads.hpp"
 #include "deck_reader.hpp"
@@ -262,8 +263,24 @@ void DeckReader::finish_static_steps() {
         throw InputError(where, "gravity on shells (part " + std::to_string(part.id) +
                                     ") is not supported in static steps yet");
       const auto it = hexes_of_part.find(part.id);
-      if (it == hexes_of_part.end()) continue;
       const MaterialParams& material = model.material_of_part(part.id);
+      // The other cells: their HRZ lumped masses (lumped_mass.hpp), as the explicit solver's.
+      for (std::size_t e = mesh.hex_count(); e < mesh.solid_count(); ++e) {
+        const SolidRef cell = mesh.solid(e);
+        if (cell.part != part.id) continue;
+        if (is_rigid(material))
+          throw InputError(where, "gravity on a rigid part (part " + std::to_string(part.id) +
+                                      ") is not supported in static steps yet");
+        std::vector<double> X, shares(cell.nodes.size());
+        for (const std::int32_t n : cell.nodes) {
+          const Vec3 p = mesh.nodes.position(static_cast<std::size_t>(n));
+          X.insert(X.end(), {p.x, p.y, p.z});
+        }
+        lumped_volume_shares(cell.type, X, shares);
+        for (std::size_t a = 0; a < shares.size(); ++a)
+          mass[static_cast<std::size_t>(cell.nodes[a])] += density_of(material) * shares[a];
+      }
+      if (it == hexes_of_part.end()) continue;
       if (is_rigid(material))
         throw InputError(where, "gravity on a rigid part (part " + std::to_string(part.id) +
                                     ") is not supported in static steps yet");

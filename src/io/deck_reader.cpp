@@ -362,6 +362,28 @@ SourceLocation DeckReader::element_where(const ElementNodes& e, const std::strin
   return {files[e.file], e.line, "*ELEMENT_SOLID", field};
 }
 
+void DeckReader::add_cell(std::int64_t id, std::int64_t part, CellType type,
+                          std::vector<std::int64_t> node_ids, std::vector<std::size_t> fields,
+                          const char* keyword, const SourceLocation& where) {
+  if (!hex_ids_.insert(id).second)
+    throw InputError(where, "element " + std::to_string(id) + " is already defined");
+  if (frame().transform.mirrors())
+    throw InputError(where, "a mirrored *INCLUDE of " + std::string(topology(type).abaqus) +
+                                " elements is not supported yet by abut (hexahedra are)");
+  Mesh& mesh = model.mesh;
+  std::size_t cell = 0;
+  for (const CellBlock& b : mesh.cells)
+    if (b.type == type) cell = b.size();
+  const std::vector<std::int32_t> unresolved(node_ids.size(), -1);
+  mesh.add_cell(type, id, part, unresolved);
+  cell_nodes.push_back(
+      {type, cell, std::move(node_ids), keyword, std::move(fields), files.size() - 1, where.line});
+}
+
+SourceLocation DeckReader::cell_where(const CellNodes& e, const std::string& field) const {
+  return {files[e.file], e.line, e.keyword, field};
+}
+
 void DeckReader::add_shell(std::int64_t id, std::int64_t part,
                            const std::array<std::int64_t, 4>& node_ids,
                            const SourceLocation& where) {

@@ -76,6 +76,18 @@ struct ElementNodes {
   std::size_t line = 0;
 };
 
+// Solid cells other than hexahedra (*ELEMENT_SOLID in a degenerate form, *ELEMENT_SOLID_TET10,
+// *ELEMENT_SOLID_H20), resolved like ElementNodes: cell `cell` of the block of its type.
+struct CellNodes {
+  CellType type = CellType::tet4;
+  std::size_t cell = 0;
+  std::vector<std::int64_t> node_ids;
+  const char* keyword = "*ELEMENT_SOLID";
+  std::vector<std::size_t> fields;  // the field (1-based node number) each node was given in
+  std::size_t file = 0;
+  std::size_t line = 0;
+};
+
 // *ELEMENT_SHELL rows, resolved like ElementNodes. A triangle has node_ids[3] == node_ids[2].
 struct ShellNodes {
   std::size_t shell = 0;
@@ -204,6 +216,14 @@ class DeckReader {
   void add_element(std::int64_t id, std::int64_t part, const std::array<std::int64_t, 8>& node_ids,
                    const SourceLocation& where);
   SourceLocation element_where(const ElementNodes& e, const std::string& field) const;
+  // Adds one solid cell of another type (nodes resolved later); ids share the hexes' namespace.
+  // `fields[k]`: the node field (n1 = 1) node k came from, for messages.
+  void add_cell(std::int64_t id, std::int64_t part, CellType type,
+                std::vector<std::int64_t> node_ids, std::vector<std::size_t> fields,
+                const char* keyword, const SourceLocation& where);
+  SourceLocation cell_where(const CellNodes& e, const std::string& field) const;
+  // deck_finalize_elements.cpp: the node indices of the cells, checked to exist.
+  void resolve_cell_nodes();
   // Adds one shell of *ELEMENT_SHELL (nodes resolved later); shell ids are their own namespace.
   void add_shell(std::int64_t id, std::int64_t part, const std::array<std::int64_t, 4>& node_ids,
                  const SourceLocation& where);
@@ -253,6 +273,7 @@ class DeckReader {
   std::vector<IdReference> geometry_references;  // gids that must exist
   std::vector<ElementNodes> element_nodes;
   std::vector<ShellNodes> shell_nodes;
+  std::vector<CellNodes> cell_nodes;
   std::vector<PendingPartShell> part_shells;
   std::vector<PendingPartSolid> part_solids;
   // *STATIC: the end time t_end of each step of model.static_steps (as given, for the checks of
@@ -300,6 +321,8 @@ void read_output(DeckReader&, Block&);
 void read_control_bulk_viscosity(DeckReader&, Block&);
 void read_node(DeckReader&, Block&);
 void read_element_solid(DeckReader&, Block&);
+void read_element_solid_tet10(DeckReader&, Block&);
+void read_element_solid_h20(DeckReader&, Block&);
 void read_element_shell(DeckReader&, Block&);
 void read_component_shell_plate(DeckReader&, Block&);
 void read_component_shell_tube(DeckReader&, Block&);

@@ -52,15 +52,77 @@ void read_node(DeckReader& d, Block& b) {
   }
 }
 
+// The degenerate forms of an 8-node row (LS-DYNA's convention, Keyword User's Manual,
+// *ELEMENT_SOLID): n4 = n5 = n6 = n7 = n8 is the tetrahedron n1 n2 n3 n4; n5 = n6 and n7 = n8 the
+// pentahedron whose triangles are n1 n2 n5 and n4 n3 n7 (of a hexahedron of positive volume
+// with its top face collapsed to the edge 5-7). Each becomes the C3D4 or C3D6 of those nodes, in
+// that order's orientation. Returns false for a plain hexahedron.
+bool add_degenerate_solid(DeckReader& d, const Row& r, const std::array<std::int64_t, 8>& n) {
+  const auto distinct = [](std::vector<std::int64_t> v) {
+    std::sort(v.begin(), v.end());
+    return std::adjacent_find(v.begin(), v.end()) == v.end();
+  };
+  if (n[4] == n[3] && n[5] == n[3] && n[6] == n[3] && n[7] == n[3]) {
+    r.require(distinct({n[0], n[1], n[2], n[3]}), 2,
+              "a tetrahedron (n4 = n5 = n6 = n7 = n8) needs four different nodes n1-n4");
+    d.add_cell(d.element_id(r, 0), d.part_id(r, 1), CellType::tet4, {n[0], n[1], n[2], n[3]},
+               {1, 2, 3, 4}, "*ELEMENT_SOLID", r.where());
+    return true;
+  }
+  if (n[5] == n[4] && n[7] == n[6]) {
+    r.require(distinct({n[0], n[1], n[2], n[3], n[4], n[6]}), 2,
+              "a pentahedron (n5 = n6, n7 = n8) needs six different nodes n1-n5, n7");
+    d.add_cell(d.element_id(r, 0), d.part_id(r, 1), CellType::wedge6,
+               {n[0], n[4], n[1], n[3], n[6], n[2]}, {1, 5, 2, 4, 7, 3}, "*ELEMENT_SOLID",
+               r.where());
+    return true;
+  }
+  return false;
+}
+
+// *ELEMENT_SOLID_TET10 and *ELEMENT_SOLID_H20: eid, pid and the nodes in the Abaqus/CalculiX
+// order of C3D10 and C3D20 (mesh/topology.hpp).
+void read_element_cells(DeckReader& d, Block& b, CellType type, const char* keyword) {
+  const int count = topology(type).nodes;
+  std::vector<std::string> names = {"eid", "pid"};
+  for (int k = 1; k <= count; ++k) names.push_back("n" + std::to_string(k));
+  while (!b.done()) {
+    const Row r = b.row(names);
+    std::vector<std::int64_t> nodes;
+    std::vector<std::size_t> fields;
+    for (std::size_t k = 0; k < static_cast<std::size_t>(count); ++k) {
+      nodes.push_back(d.node_id(r, k + 2));
+      fields.push_back(k + 1);
+    }
+    for (std::size_t k = 1; k < nodes.size(); ++k)
+      for (std::size_t j = 0; j < k; ++j)
+        r.require(nodes[k] != nodes[j], k + 2,
+                  "node " + std::to_string(nodes[k]) + " repeats n" + std::to_string(j + 1) +
+                      ": the nodes of a " + std::string(topology(type).abaqus) +
+                      " element are all different");
+    d.add_cell(d.element_id(r, 0), d.part_id(r, 1), type, std::move(nodes), std::move(fields),
+               keyword, r.where());
+  }
+}
+
 void read_element_solid(DeckReader& d, Block& b) {
   while (!b.done()) {
     const Row r = b.row({"eid", "pid", "n1", "n2", "n3", "n4", "n5", "n6", "n7", "n8"});
     std::array<std::int64_t, 8> nodes{};
     for (std::size_t k = 0; k < 8; ++k) nodes[k] = d.node_id(r, k + 2);
+    if (add_degenerate_solid(d, r, nodes)) continue;
     // A mirrored hex is inside out; exchanging its bottom and top faces turns it right side out.
     if (d.frame().transform.mirrors()) std::rotate(nodes.begin(), nodes.begin() + 4, nodes.end());
     d.add_element(d.element_id(r, 0), d.part_id(r, 1), nodes, r.where());
   }
+}
+
+void read_element_solid_tet10(DeckReader& d, Block& b) {
+  read_element_cells(d, b, CellType::tet10, "*ELEMENT_SOLID_TET10");
+}
+
+void read_element_solid_h20(DeckReader& d, Block& b) {
+  read_element_cells(d, b, CellType::hex20, "*ELEMENT_SOLID_H20");
 }
 
 void read_element_shell(DeckReader& d, Block& b) {

@@ -56,6 +56,12 @@ std::uint64_t fingerprint(const Model& model) {
   h.add_all(mesh.hex_part);
   h.add_all(mesh.shells);
   h.add_all(mesh.shell_part);
+  for (const CellBlock& b : mesh.cells) {
+    const auto type = static_cast<std::uint8_t>(b.type);
+    h.add(&type, sizeof type);
+    h.add_all(b.nodes);
+    h.add_all(b.part);
+  }
   return h.value();
 }
 

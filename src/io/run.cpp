@@ -23,6 +23,14 @@ namespace abut {
 
 namespace {
 
+// ", 120 C3D10, 8 C3D6": the solid cells other than 8-node hexahedra, for the log.
+std::string other_solids(const Mesh& mesh) {
+  std::string out;
+  for (const CellBlock& b : mesh.cells)
+    if (b.size() > 0) out += fmt::format(", {} {}", b.size(), topology(b.type).abaqus);
+  return out;
+}
+
 namespace fs = std::filesystem;
 using run_output::HistoryWriter;
 using run_output::Schedule;
@@ -42,7 +50,7 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
   json.member("wall_seconds", report.wall_seconds);
   json.member("threads", threads);
   json.member("nodes", static_cast<std::int64_t>(model.mesh.nodes.size()));
-  json.member("elements", static_cast<std::int64_t>(model.mesh.hex_count()));
+  json.member("elements", static_cast<std::int64_t>(model.mesh.solid_count()));
   json.member("shells", static_cast<std::int64_t>(model.mesh.shell_count()));
   json.member("ns_per_element_cycle", report.ns_per_element_cycle);
   json.member("contact_share_of_wall_time",
@@ -158,10 +166,11 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
   const double history_interval =
       model.output.history_interval > 0 ? model.output.history_interval : span / 1000.0;
   log << fmt::format(
-      "abut: {} nodes, {} hexahedra, {} shells, {} parts; end time {:.4g}, initial time step "
+      "abut: {} nodes, {} hexahedra{}, {} shells, {} parts; end time {:.4g}, initial time step "
       "{:.4g} ({})\n",
-      model.mesh.nodes.size(), model.mesh.hex_count(), model.mesh.shell_count(), model.parts.size(),
-      t_end, sim.initial_time_step(), sim.time_step_limit());
+      model.mesh.nodes.size(), model.mesh.hex_count(), other_solids(model.mesh),
+      model.mesh.shell_count(), model.parts.size(), t_end, sim.initial_time_step(),
+      sim.time_step_limit());
   const std::string initial_limit = sim.time_step_limit();
   for (const ContactReport& c : sim.contact_reports()) {
     log << fmt::format("abut: contact {}", c.id) << (c.title.empty() ? "" : " \"" + c.title + "\"")
@@ -251,7 +260,7 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
   report.end_time = sim.time();
   report.cycles = sim.cycle();
   const double element_cycles =
-      static_cast<double>(model.mesh.hex_count() + model.mesh.shell_count()) *
+      static_cast<double>(model.mesh.solid_count() + model.mesh.shell_count()) *
       static_cast<double>(report.cycles - first_cycle);
   report.ns_per_element_cycle =
       element_cycles > 0 ? 1e9 * report.wall_seconds / element_cycles : 0.0;

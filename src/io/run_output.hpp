@@ -22,19 +22,21 @@
 namespace abut::run_output {
 
 // Writes one ParaView state of the simulation. `failed` marks the last good state of an
-// unstable run: positions from before the failing step, stresses left out. Cells are the
-// hexahedra, then the shells; every cell field holds the hex values, then the shell values.
+// unstable run: positions from before the failing step, stresses left out. Cells are the solids
+// (Mesh::solid numbering: hexahedra, then the other cells), then the shells; every cell field
+// holds the solid values, then the shell values.
 class StateWriter {
  public:
   StateWriter(const std::filesystem::path& dir, const Model& model)
       : dir_(dir), model_(model), series_(dir / "results.pvd") {
     std::filesystem::create_directories(dir / "states");
     const Mesh& mesh = model.mesh;
-    part_id_.reserve(mesh.hex_count() + mesh.shell_count());
-    for (const std::int64_t p : mesh.hex_part) part_id_.push_back(static_cast<double>(p));
+    part_id_.reserve(mesh.solid_count() + mesh.shell_count());
+    for (std::size_t e = 0; e < mesh.solid_count(); ++e)
+      part_id_.push_back(static_cast<double>(mesh.solid(e).part));
     for (const std::int64_t p : mesh.shell_part) part_id_.push_back(static_cast<double>(p));
-    // Hexahedra have no thickness: 0 tells them apart from shells in ParaView.
-    thickness_.assign(mesh.hex_count(), 0.0);
+    // Solids have no thickness: 0 tells them apart from shells in ParaView.
+    thickness_.assign(mesh.solid_count(), 0.0);
     for (const std::int64_t p : mesh.shell_part) {
       const Part* part = model.find_part(p);  // a deck's shell parts exist; a built model's may not
       thickness_.push_back(part ? part->thickness : 0.0);
@@ -96,20 +98,31 @@ class StateWriter {
     // Eroded elements disappear from the states.
     std::span<const Hex8> hexes = model_.mesh.hexes;
     std::span<const Quad4> shells = model_.mesh.shells;
-    std::vector<std::uint8_t> eroded = sim.eroded_hexes();
+    std::span<const CellBlock> cells = model_.mesh.cells;
+    std::vector<std::uint8_t> eroded = sim.eroded_solids();
     const std::vector<std::uint8_t> eroded_shells = sim.eroded_shells();
     eroded.insert(eroded.end(), eroded_shells.begin(), eroded_shells.end());
     if (std::find(eroded.begin(), eroded.end(), std::uint8_t{1}) != eroded.end()) {
-      const std::size_t hex_count = model_.mesh.hex_count();
+      const Mesh& mesh = model_.mesh;
       alive_hexes_.clear();
       alive_shells_.clear();
-      for (std::size_t e = 0; e < eroded.size(); ++e) {
-        if (eroded[e]) continue;
-        if (e < hex_count)
-          alive_hexes_.push_back(model_.mesh.hexes[e]);
-        else
-          alive_shells_.push_back(model_.mesh.shells[e - hex_count]);
+      alive_cells_.assign(mesh.cells.size(), {});
+      std::size_t solid = mesh.hex_count();  // the solid numbering of the cells
+      for (std::size_t b = 0; b < mesh.cells.size(); ++b) {
+        const CellBlock& block = mesh.cells[b];
+        alive_cells_[b].type = block.type;
+        for (std::size_t c = 0; c < block.size(); ++c, ++solid) {
+          if (eroded[solid]) continue;
+          const auto cell = block.cell(c);
+          alive_cells_[b].nodes.insert(alive_cells_[b].nodes.end(), cell.begin(), cell.end());
+          alive_cells_[b].id.push_back(block.id[c]);
+          alive_cells_[b].part.push_back(block.part[c]);
+        }
       }
+      for (std::size_t h = 0; h < mesh.hex_count(); ++h)
+        if (!eroded[h]) alive_hexes_.push_back(mesh.hexes[h]);
+      for (std::size_t s = 0; s < mesh.shell_count(); ++s)
+        if (!eroded[mesh.solid_count() + s]) alive_shells_.push_back(mesh.shells[s]);
       alive_values_.resize(cell_fields.size());
       for (std::size_t k = 0; k < cell_fields.size(); ++k) {
         alive_values_[k].clear();
@@ -121,9 +134,10 @@ class StateWriter {
       }
       hexes = alive_hexes_;
       shells = alive_shells_;
+      cells = alive_cells_;
     }
     const std::string name = fmt::format("states/state_{:04d}.vtu", written_);
-    const HexGridView grid{x, y, z, hexes, shells};
+    const HexGridView grid{x, y, z, hexes, shells, cells};
     write_vtu(dir_ / name, grid, point_fields, cell_fields);
     series_.add(time, name);
     last_time_ = time;
@@ -159,6 +173,7 @@ class StateWriter {
   std::vector<double> contact_force_, contact_pressure_, wear_;
   std::vector<Hex8> alive_hexes_;
   std::vector<Quad4> alive_shells_;
+  std::vector<CellBlock> alive_cells_;
   std::vector<std::vector<double>> alive_values_;
 };
 

@@ -93,6 +93,8 @@ std::vector<std::int32_t> remove_nodes(Mesh& mesh, const std::vector<std::int32_
   };
   remap(mesh.hexes);
   remap(mesh.shells);
+  for (CellBlock& block : mesh.cells)
+    for (std::int32_t& n : block.nodes) n = new_index[static_cast<std::size_t>(n)];
   return new_index;
 }
 

@@ -12,6 +12,7 @@
 
 #include "abut/contact/penalty.hpp"
 #include "abut/core/memory.hpp"
+#include "abut/element/element_frequency.hpp"
 #include "abut/element/shell4.hpp"
 #include "abut/element/stable_step.hpp"
 #include "abut/mesh/skin.hpp"
@@ -119,7 +120,17 @@ double element_step(const Model& model, const SkinFace& f) {
     const double length = shell4_critical_length(shell4_geometry(p), f.nodes[2] == f.nodes[3]);
     return length / std::sqrt(young / (density_of(material) * (1.0 - nu * nu)));
   }
-  const Hex8& hex = model.mesh.hexes[static_cast<std::size_t>(f.solid)];
+  const auto solid = static_cast<std::size_t>(f.solid);
+  if (solid >= model.mesh.hex_count()) {  // a cell of another type: its frequency bound
+    const SolidRef cell = model.mesh.solid(solid);
+    std::vector<double> X;
+    for (const std::int32_t a : cell.nodes) {
+      const Vec3 p = model.mesh.nodes.position(static_cast<std::size_t>(a));
+      X.insert(X.end(), {p.x, p.y, p.z});
+    }
+    return cell_critical_step(cell.type, X, density_of(material), lambda, m.shear);
+  }
+  const Hex8& hex = model.mesh.hexes[solid];
   const double length =
       hex8_critical_length(hex8_modal_gradient_at(hex, model.mesh.nodes), lambda, m.shear);
   return length / std::sqrt((lambda + 2.0 * m.shear) / density_of(material));

@@ -123,6 +123,10 @@ double smallest_element_volume(const Mesh& mesh, std::int64_t part, double shell
   for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
     if (mesh.hex_part[h] == part)
       volume_of_element[mesh.element_of(h)] += hex_volume(mesh.nodes, mesh.hexes[h]);
+  for (std::size_t e = mesh.hex_count(); e < mesh.solid_count(); ++e) {
+    const SolidRef cell = mesh.solid(e);
+    if (cell.part == part) volume_of_element[cell.id] = solid_volume(mesh, e);
+  }
   double smallest = std::numeric_limits<double>::infinity();
   for (const auto& [element, volume] : volume_of_element) smallest = std::min(smallest, volume);
   bool shells = false;

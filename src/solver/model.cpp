@@ -114,10 +114,10 @@ std::vector<std::int32_t> Model::nodes_of(const EntityRef& entity) const {
     case EntityType::Part:
     case EntityType::PartSet: {
       const std::vector<std::int64_t> ids = parts_of(entity);
-      for (std::size_t h = 0; h < mesh.hex_count(); ++h) {
-        if (std::find(ids.begin(), ids.end(), mesh.hex_part[h]) != ids.end()) {
-          nodes.insert(nodes.end(), mesh.hexes[h].begin(), mesh.hexes[h].end());
-        }
+      for (std::size_t e = 0; e < mesh.solid_count(); ++e) {
+        const SolidRef solid = mesh.solid(e);
+        if (std::find(ids.begin(), ids.end(), solid.part) != ids.end())
+          nodes.insert(nodes.end(), solid.nodes.begin(), solid.nodes.end());
       }
       for (std::size_t s = 0; s < mesh.shell_count(); ++s) {
         if (std::find(ids.begin(), ids.end(), mesh.shell_part[s]) != ids.end()) {

@@ -44,6 +44,7 @@ void Simulation::Impl::compute_forces(double dt) {
   stable = std::numeric_limits<double>::infinity();
   limiting_block = -1;
   limiting_shell_block = -1;
+  limiting_cell_block = -1;
   for (std::size_t b = 0; b < blocks.size(); ++b) {
     block_steps[b] = blocks[b].update(state, dt);
     if (block_steps[b].stable_step < stable) {
@@ -62,6 +63,14 @@ void Simulation::Impl::compute_forces(double dt) {
         limiting_block = -1;
         limiting_shell_block = static_cast<std::int32_t>(b);
       }
+    }
+  }
+  for (std::size_t b = 0; b < cell_blocks.size(); ++b) {
+    cell_steps[b] = cell_blocks[b].update(state, dt);
+    if (cell_steps[b].stable_step < stable) {
+      stable = cell_steps[b].stable_step;
+      limiting_block = limiting_shell_block = -1;
+      limiting_cell_block = static_cast<std::int32_t>(b);
     }
   }
   report_erosion_to_contact();
@@ -129,7 +138,7 @@ void Simulation::Impl::compute_forces(double dt) {
   energy.eroded = 0.0;
   energy.thermal_work = 0.0;
   for (const BlockStep& s : block_steps) energy.thermal_work += s.thermal_work;
-  for (const auto* steps : {&block_steps, &shell_steps}) {
+  for (const auto* steps : {&block_steps, &shell_steps, &cell_steps}) {
     for (const BlockStep& s : *steps) {
       energy.internal += s.internal_energy;
       energy.hourglass += s.hourglass_energy;
@@ -142,12 +151,12 @@ void Simulation::Impl::compute_forces(double dt) {
 void Simulation::Impl::report_erosion_to_contact() {
   if (contacts->empty()) return;
   std::size_t count = 0;
-  for (const auto* steps : {&block_steps, &shell_steps})
+  for (const auto* steps : {&block_steps, &shell_steps, &cell_steps})
     for (const BlockStep& s : *steps) count += s.eroded;
   if (count == eroded_elements) return;
   eroded_elements = count;
-  const std::size_t hexes = model.mesh.hex_count();
-  element_eroded.assign(hexes + model.mesh.shell_count(), 0);
+  const std::size_t solids = model.mesh.solid_count();
+  element_eroded.assign(solids + model.mesh.shell_count(), 0);
   for (std::size_t b = 0; b < blocks.size(); ++b) {
     const std::vector<std::uint8_t>& e = blocks[b].eroded();
     for (std::size_t k = 0; k < e.size(); ++k)
@@ -156,7 +165,12 @@ void Simulation::Impl::report_erosion_to_contact() {
   for (std::size_t b = 0; b < shell_blocks.size(); ++b) {
     const std::vector<std::uint8_t>& e = shell_blocks[b].eroded();
     for (std::size_t k = 0; k < e.size(); ++k)
-      if (e[k]) element_eroded[hexes + static_cast<std::size_t>(block_shell_index[b][k])] = 1;
+      if (e[k]) element_eroded[solids + static_cast<std::size_t>(block_shell_index[b][k])] = 1;
+  }
+  for (std::size_t b = 0; b < cell_blocks.size(); ++b) {
+    const std::vector<std::uint8_t>& e = cell_blocks[b].eroded();
+    for (std::size_t k = 0; k < e.size(); ++k)
+      if (e[k]) element_eroded[static_cast<std::size_t>(block_solid_index[b][k])] = 1;
   }
   contacts->erode(element_eroded);
 }
@@ -656,6 +670,9 @@ std::string Simulation::Impl::limit_description() const {
            (limiting_kink ? " springs touching or letting go together" : " springs");
   if (limiting_shell_block >= 0)
     return "shells of part " + std::to_string(shell_blocks[limiting_shell_block].part_id());
+  if (limiting_cell_block >= 0)
+    return std::string(topology(cell_blocks[limiting_cell_block].type()).abaqus) +
+           " elements of part " + std::to_string(cell_blocks[limiting_cell_block].part_id());
   if (limiting_block < 0) return "dt_max of *TIME";
   return "elements of part " + std::to_string(blocks[limiting_block].part_id());
 }
@@ -668,6 +685,7 @@ SourceLocation Simulation::Impl::limit_location() const {
   std::int64_t part = -1;
   if (limiting_shell_block >= 0) part = shell_blocks[limiting_shell_block].part_id();
   if (limiting_block >= 0) part = blocks[limiting_block].part_id();
+  if (limiting_cell_block >= 0) part = cell_blocks[limiting_cell_block].part_id();
   if (const Part* p = model.find_part(part)) return p->where;
   return {};
 }

@@ -9,6 +9,7 @@
 
 #include "abut/element/shell_block.hpp"
 #include "abut/element/solid_block.hpp"
+#include "abut/element/solid_cell_block.hpp"
 #include "abut/solver/heat.hpp"
 #include "abut/solver/pressure_loads.hpp"
 #include "abut/solver/simulation.hpp"
@@ -27,6 +28,7 @@ struct PartInfo {
   std::size_t element_count = 0;
   double mass = 0.0;
   std::int32_t block = -1;        // deformable solids: index into blocks
+  std::vector<std::int32_t> cell_blocks;  // deformable cells: indices into cell_blocks
   std::int32_t shell_block = -1;  // deformable shells: index into shell_blocks
   std::vector<std::int32_t> nodes;
   std::vector<double> node_mass;  // this part's share of each node's lumped mass
@@ -51,6 +53,11 @@ struct Simulation::Impl {
   std::vector<ShellBlock> shell_blocks;
   std::vector<std::vector<std::int32_t>> block_shell_index;  // block element -> mesh shell
   std::vector<BlockStep> shell_steps;
+  // Blocks of the other solid cells (tetrahedra, wedges, quadratic hexahedra), one per part and
+  // cell type; each element's index in the solid numbering of Mesh::solid().
+  std::vector<SolidCellBlock> cell_blocks;
+  std::vector<std::vector<std::int32_t>> block_solid_index;
+  std::vector<BlockStep> cell_steps;
   // Where each element's force on a node sits (CSR node -> slots, in block and element order:
   // the fixed summation order that makes forces independent of the thread count). A slot points
   // into a block's element_forces(), which never reallocates: fx, fy, fz there, and for a shell
@@ -74,7 +81,7 @@ struct Simulation::Impl {
   std::vector<std::uint8_t> released, constrained, touched;
   std::vector<std::string> messages;
   std::size_t eroded_elements = 0;           // as last reported to the contacts
-  std::vector<std::uint8_t> element_eroded;  // per element, hexes then shells
+  std::vector<std::uint8_t> element_eroded;  // per element, solids (Mesh::solid) then shells
   std::int64_t limiting_contact = -1;
   bool limiting_kink = false;    // the contact's kink bound (ContactStats::kink_step) sets the step
   double contact_seconds = 0.0;  // wall time spent in contact (for the summary)
@@ -97,7 +104,8 @@ struct Simulation::Impl {
   double stable = 0.0;   // unscaled stable step at x^n
   double dt_initial = 0.0;
   std::int32_t limiting_block = -1;        // index into blocks, or
-  std::int32_t limiting_shell_block = -1;  // index into shell_blocks
+  std::int32_t limiting_shell_block = -1;  // index into shell_blocks, or
+  std::int32_t limiting_cell_block = -1;   // index into cell_blocks
 
   Energies energy;
   // The kinetic energy that central differences conserve, (1/2) m v^{n-1/2} . v^{n+1/2} summed
@@ -159,6 +167,9 @@ struct Simulation::Impl {
   void apply_nodal_rotation(const PrescribedMotion& p, const std::vector<std::int32_t>& nodes,
                             double* w, const double* w_old, double dt_avg);
   void build_force_slots();
+  // The cells of each part as blocks (simulation_setup.cpp), their masses in part_mass.
+  void setup_cells(const Part& part, const std::vector<std::int32_t>& solids, bool rigid,
+                   PartInfo& info, std::vector<double>& part_mass);
   void advance_heat();
   double thermal_step_limit() const;
   // What is wrong with the energies at t^n, or empty: a non-finite energy, work or balance, a

@@ -11,6 +11,7 @@ void Simulation::archive(StateArchive& a) {
   a.expect(static_cast<std::uint64_t>(s.n_nodes), "the node count");
   a.expect(static_cast<std::uint64_t>(s.blocks.size()), "the number of solid blocks");
   a.expect(static_cast<std::uint64_t>(s.shell_blocks.size()), "the number of shell blocks");
+  a.expect(static_cast<std::uint64_t>(s.cell_blocks.size()), "the number of solid cell blocks");
   a.expect(static_cast<std::uint64_t>(s.bodies.size()), "the number of rigid bodies");
   // Nodes: positions, velocities (v^{n+1/2}, v^n, v^{n-1/2}), forces, masses; rotations.
   a.fixed(s.x, s.y, s.z, s.vhx, s.vhy, s.vhz, s.vx, s.vy, s.vz, s.ox, s.oy, s.oz, s.fx, s.fy, s.fz,
@@ -18,11 +19,12 @@ void Simulation::archive(StateArchive& a) {
           s.rotary_inertia, s.inverse_rotary_inertia);
   // Time, step and what limits it, energies, the last good state.
   a.values(s.t, s.n, s.dt_prev, s.dt_next, s.stable, s.dt_initial, s.limiting_block,
-           s.limiting_shell_block, s.limiting_contact, s.energy, s.conserved_kinetic,
-           s.step_change_kinetic, s.total0, s.energy_scale, s.external_work_done, s.good_x,
-           s.good_y, s.good_z, s.good_t, s.block_steps, s.shell_steps, s.step_sum,
-           s.element_step_sum, s.kink_step_sum, s.limiting_kink);
-  a.values(s.blocks, s.shell_blocks, s.bodies);
+           s.limiting_shell_block, s.limiting_cell_block, s.limiting_contact, s.energy,
+           s.conserved_kinetic, s.step_change_kinetic, s.total0, s.energy_scale,
+           s.external_work_done, s.good_x, s.good_y, s.good_z, s.good_t, s.block_steps,
+           s.shell_steps, s.cell_steps, s.step_sum, s.element_step_sum, s.kink_step_sum,
+           s.limiting_kink);
+  a.values(s.blocks, s.shell_blocks, s.cell_blocks, s.bodies);
   a.values(s.eroded_elements, s.element_eroded);  // element_eroded: filled at the first erosion
   s.contacts->archive(a);
   s.sensors->archive(a);

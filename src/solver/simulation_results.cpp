@@ -15,28 +15,40 @@ const std::vector<double>& Simulation::vy() const { return impl_->vy; }
 const std::vector<double>& Simulation::vz() const { return impl_->vz; }
 const std::vector<double>& Simulation::nodal_mass() const { return impl_->mass; }
 
-void Simulation::element_field(void (SolidBlock::*field)(std::vector<double>&) const,
+void Simulation::element_field(void (SolidBlock::*hex_field)(std::vector<double>&) const,
+                               void (SolidCellBlock::*cell_field)(std::vector<double>&) const,
                                std::vector<double>& out) const {
-  out.assign(impl_->model.mesh.hex_count(), 0.0);
+  const Impl& m = *impl_;
+  out.assign(m.model.mesh.solid_count(), 0.0);
   std::vector<double> block_values;
-  for (std::size_t b = 0; b < impl_->blocks.size(); ++b) {
-    (impl_->blocks[b].*field)(block_values);
+  for (std::size_t b = 0; b < m.blocks.size(); ++b) {
+    (m.blocks[b].*hex_field)(block_values);
     for (std::size_t e = 0; e < block_values.size(); ++e)
-      out[impl_->block_hex_index[b][e]] = block_values[e];
+      out[m.block_hex_index[b][e]] = block_values[e];
+  }
+  for (std::size_t b = 0; b < m.cell_blocks.size(); ++b) {
+    (m.cell_blocks[b].*cell_field)(block_values);
+    for (std::size_t e = 0; e < block_values.size(); ++e)
+      out[m.block_solid_index[b][e]] = block_values[e];
   }
 }
 
 void Simulation::von_mises_stress(std::vector<double>& out) const {
-  element_field(&SolidBlock::von_mises_stress, out);
+  element_field(&SolidBlock::von_mises_stress, &SolidCellBlock::von_mises_stress, out);
 }
 void Simulation::pressure(std::vector<double>& out) const {
-  element_field(&SolidBlock::pressure, out);
+  element_field(&SolidBlock::pressure, &SolidCellBlock::pressure, out);
 }
-std::vector<std::uint8_t> Simulation::eroded_hexes() const {
-  std::vector<std::uint8_t> out(impl_->model.mesh.hex_count(), 0);
-  for (std::size_t b = 0; b < impl_->blocks.size(); ++b) {
-    const auto& eroded = impl_->blocks[b].eroded();
-    for (std::size_t e = 0; e < eroded.size(); ++e) out[impl_->block_hex_index[b][e]] = eroded[e];
+std::vector<std::uint8_t> Simulation::eroded_solids() const {
+  const Impl& m = *impl_;
+  std::vector<std::uint8_t> out(m.model.mesh.solid_count(), 0);
+  for (std::size_t b = 0; b < m.blocks.size(); ++b) {
+    const auto& eroded = m.blocks[b].eroded();
+    for (std::size_t e = 0; e < eroded.size(); ++e) out[m.block_hex_index[b][e]] = eroded[e];
+  }
+  for (std::size_t b = 0; b < m.cell_blocks.size(); ++b) {
+    const auto& eroded = m.cell_blocks[b].eroded();
+    for (std::size_t e = 0; e < eroded.size(); ++e) out[m.block_solid_index[b][e]] = eroded[e];
   }
   return out;
 }
@@ -57,7 +69,7 @@ void Simulation::shell_von_mises_stress(std::vector<double>& out) const {
   shell_field(&ShellBlock::von_mises_stress, out);
 }
 void Simulation::plastic_strain_rate(std::vector<double>& out) const {
-  element_field(&SolidBlock::plastic_strain_rate, out);
+  element_field(&SolidBlock::plastic_strain_rate, &SolidCellBlock::plastic_strain_rate, out);
 }
 void Simulation::shell_plastic_strain_rate(std::vector<double>& out) const {
   shell_field(&ShellBlock::plastic_strain_rate, out);
@@ -75,7 +87,7 @@ std::vector<std::uint8_t> Simulation::eroded_shells() const {
 }
 
 void Simulation::plastic_strain(std::vector<double>& out) const {
-  element_field(&SolidBlock::plastic_strain, out);
+  element_field(&SolidBlock::plastic_strain, &SolidCellBlock::plastic_strain, out);
 }
 
 Energies Simulation::energies() const { return impl_->energy; }
@@ -122,6 +134,7 @@ std::vector<PartState> Simulation::part_states() const {
     s.velocity = momentum / p.mass;
     if (p.block >= 0) s.internal = impl_->block_steps[p.block].internal_energy;
     if (p.shell_block >= 0) s.internal += impl_->shell_steps[p.shell_block].internal_energy;
+    for (const std::int32_t b : p.cell_blocks) s.internal += impl_->cell_steps[b].internal_energy;
     out.push_back(s);
   }
   return out;

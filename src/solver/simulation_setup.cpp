@@ -6,6 +6,7 @@
 #include <map>
 #include <string>
 
+#include "abut/element/lumped_mass.hpp"
 #include "abut/element/shell4.hpp"
 #include "abut/mesh/skin.hpp"
 #include "simulation_impl.hpp"
@@ -30,9 +31,11 @@ void Simulation::Impl::setup() {
   rigid_body_of_node.assign(n_nodes, -1);
 
   // Group elements by part, in the order parts were defined.
-  std::map<std::int64_t, std::vector<std::int32_t>> hexes_of_part, shells_of_part;
+  std::map<std::int64_t, std::vector<std::int32_t>> hexes_of_part, shells_of_part, cells_of_part;
   for (std::size_t e = 0; e < mesh.hex_count(); ++e)
     hexes_of_part[mesh.hex_part[e]].push_back(static_cast<std::int32_t>(e));
+  for (std::size_t e = mesh.hex_count(); e < mesh.solid_count(); ++e)
+    cells_of_part[mesh.solid(e).part].push_back(static_cast<std::int32_t>(e));
   for (std::size_t e = 0; e < mesh.shell_count(); ++e)
     shells_of_part[mesh.shell_part[e]].push_back(static_cast<std::int32_t>(e));
   if (mesh.shell_count() > 0) rotary_inertia.assign(n_nodes, 0.0);
@@ -40,16 +43,19 @@ void Simulation::Impl::setup() {
   for (const Part& part : model.parts) {
     const auto hex_it = hexes_of_part.find(part.id);
     const auto shell_it = shells_of_part.find(part.id);
+    const auto cell_it = cells_of_part.find(part.id);
     const std::vector<std::int32_t> none;
     const auto& part_hexes = hex_it == hexes_of_part.end() ? none : hex_it->second;
     const auto& part_shells = shell_it == shells_of_part.end() ? none : shell_it->second;
-    if (part_hexes.empty() && part_shells.empty()) continue;  // no elements: not in the run
+    const auto& part_cells = cell_it == cells_of_part.end() ? none : cell_it->second;
+    if (part_hexes.empty() && part_shells.empty() && part_cells.empty())
+      continue;  // no elements: not in the run
     const MaterialParams& material = model.material_of_part(part.id);
     PartInfo info;
     info.part_id = part.id;
     info.title = part.title;
     info.rigid = is_rigid(material);
-    info.element_count = part_hexes.size() + part_shells.size();
+    info.element_count = part_hexes.size() + part_shells.size() + part_cells.size();
 
     std::vector<double> part_mass(n_nodes, 0.0);
     if (info.rigid) {
@@ -112,6 +118,7 @@ void Simulation::Impl::setup() {
         info.shell_block = static_cast<std::int32_t>(shell_blocks.size() - 1);
       }
     }
+    setup_cells(part, part_cells, info.rigid, info, part_mass);
     check_part_mass(part, part_mass, info.rigid);
     for (std::size_t i = 0; i < n_nodes; ++i) {
       if (part_mass[i] > 0.0) {
@@ -170,6 +177,7 @@ void Simulation::Impl::setup() {
   build_force_slots();
   block_steps.assign(blocks.size(), {});
   shell_steps.assign(shell_blocks.size(), {});
+  cell_steps.assign(cell_blocks.size(), {});
 
   // Initial velocities; rigid bodies take the momentum and angular momentum of theirs.
   vhx = model.vx0.empty() ? std::vector<double>(n_nodes, 0.0) : model.vx0;
@@ -222,6 +230,15 @@ void Simulation::Impl::setup() {
   fz.assign(n_nodes, 0.0);
   t = model.time.start_time;
   if (!model.thermal.properties.empty()) {
+    for (std::size_t e = model.mesh.hex_count(); e < model.mesh.solid_count(); ++e) {
+      const SolidRef cell = model.mesh.solid(e);
+      if (is_thermal_part(model, cell.part))
+        throw InputError(model.find_part(cell.part)->where,
+                         "part " + std::to_string(cell.part) + ": heat conduction in " +
+                             std::string(topology(cell.type).abaqus) +
+                             " elements is not supported yet (8-node hexahedra and shells "
+                             "conduct heat); give its material no thermal properties (thpid)");
+    }
     heat.emplace(model);
     if (!heat->active()) heat.reset();
     heat_planned_to = t;
@@ -279,7 +296,55 @@ void Simulation::Impl::check_element_step(const Part& part, double step) const {
                            : std::string()));
 }
 
-// Node -> element force slots (CSR) in block and element order, hexes first, then shells.
+void Simulation::Impl::setup_cells(const Part& part, const std::vector<std::int32_t>& solids,
+                                   bool rigid, PartInfo& info, std::vector<double>& part_mass) {
+  const Mesh& mesh = model.mesh;
+  const MaterialParams& material = model.material_of_part(part.id);
+  for (const CellType type : kCellTypes) {
+    std::vector<std::int32_t> of_type, connectivity;
+    std::vector<std::int64_t> ids;
+    for (const std::int32_t e : solids) {
+      const SolidRef cell = mesh.solid(static_cast<std::size_t>(e));
+      if (cell.type != type) continue;
+      of_type.push_back(e);
+      ids.push_back(cell.id);
+      connectivity.insert(connectivity.end(), cell.nodes.begin(), cell.nodes.end());
+    }
+    if (of_type.empty()) continue;
+    if (rigid) {  // the mass of the body: the HRZ shares of its cells
+      const double rho = density_of(material);
+      const std::size_t nodes = static_cast<std::size_t>(topology(type).nodes);
+      std::vector<double> X(3 * nodes), shares(nodes);
+      for (std::size_t c = 0; c < of_type.size(); ++c) {
+        for (std::size_t a = 0; a < nodes; ++a) {
+          const auto node = static_cast<std::size_t>(connectivity[c * nodes + a]);
+          X[3 * a] = mesh.nodes.x[node], X[3 * a + 1] = mesh.nodes.y[node];
+          X[3 * a + 2] = mesh.nodes.z[node];
+        }
+        lumped_volume_shares(type, X, shares);
+        for (std::size_t a = 0; a < nodes; ++a)
+          part_mass[static_cast<std::size_t>(connectivity[c * nodes + a])] += rho * shares[a];
+      }
+      continue;
+    }
+    try {
+      cell_blocks.emplace_back(part.id, material, type, std::move(connectivity), mesh.nodes,
+                               &model.functions);
+      SolidCellBlock& block = cell_blocks.back();
+      block.set_element_ids(std::move(ids));
+      block.set_erosion(part.erosion);
+      block.set_bulk_viscosity(model.bulk_viscosity.quadratic, model.bulk_viscosity.linear);
+    } catch (const InputError& error) {
+      throw InputError(part.where, error.what());
+    }
+    cell_blocks.back().add_lumped_mass(part_mass);
+    check_element_step(part, cell_blocks.back().initial_stable_step());
+    block_solid_index.push_back(std::move(of_type));
+    info.cell_blocks.push_back(static_cast<std::int32_t>(cell_blocks.size() - 1));
+  }
+}
+
+// Node -> element force slots (CSR) in block and element order: hexes, shells, other cells.
 void Simulation::Impl::build_force_slots() {
   std::vector<std::int32_t> count(n_nodes + 1, 0), moment_count(n_nodes + 1, 0);
   for (const SolidBlock& b : blocks)
@@ -293,6 +358,9 @@ void Simulation::Impl::build_force_slots() {
       }
     }
   }
+  for (const SolidCellBlock& b : cell_blocks)
+    for (std::size_t e = 0; e < b.size(); ++e)
+      for (const std::int32_t node : b.element(e)) ++count[node + 1];
   for (std::size_t i = 0; i < n_nodes; ++i) {
     count[i + 1] += count[i];
     moment_count[i + 1] += moment_count[i];
@@ -318,14 +386,16 @@ void Simulation::Impl::build_force_slots() {
       }
     }
   }
+  for (const SolidCellBlock& b : cell_blocks) {
+    const double* forces = b.element_forces().data();
+    const auto nodes = static_cast<std::size_t>(b.nodes_per_element());
+    for (std::size_t e = 0; e < b.size(); ++e)
+      for (std::size_t a = 0; a < nodes; ++a)
+        slots[fill[b.element(e)[a]]++] = forces + 3 * (nodes * e + a);
+  }
 }
 
 Simulation::Simulation(const Model& model) : impl_(std::make_unique<Impl>(model)) {
-  if (!model.mesh.cells.empty())
-    throw InputError("explicit runs of " +
-                     std::string(topology(model.mesh.cells.front().type).abaqus) +
-                     " elements are not supported yet: elements other than 8-node hexahedra and "
-                     "shells run in static steps (*STATIC)");
   impl_->setup();
 }
 Simulation::~Simulation() = default;

@@ -221,7 +221,7 @@ void expect_identical(const Simulation& a, const Simulation& b) {
     (b.*field)(v);
     EXPECT_TRUE(same(u, v));
   }
-  EXPECT_EQ(a.eroded_hexes(), b.eroded_hexes());
+  EXPECT_EQ(a.eroded_solids(), b.eroded_solids());
   const Energies ea = a.energies(), eb = b.energies();
   EXPECT_EQ(std::memcmp(&ea, &eb, sizeof ea), 0);
   std::vector<double> fa, pa, wa, fb, pb, wb;
@@ -282,7 +282,7 @@ TEST(Restart, TheCasesExerciseTheirFeatures) {
     const Model model = read_deck_string(kErodingImpact, "t.k");
     Simulation sim(model);
     for (int i = 0; i < 400; ++i) sim.advance();
-    const std::vector<std::uint8_t> eroded = sim.eroded_hexes();
+    const std::vector<std::uint8_t> eroded = sim.eroded_solids();
     EXPECT_GT(std::count(eroded.begin(), eroded.end(), std::uint8_t{1}), 0);
     EXPECT_GT(sim.energies().friction, 0.0);
   }

@@ -77,7 +77,7 @@ Perforation perforate(int no_internal) {
     r.z.push_back(s.part_states()[0].centre_of_mass.z);
     r.vz.push_back(s.part_states()[0].velocity.z);
   });
-  const auto eroded = sim.eroded_hexes();
+  const auto eroded = sim.eroded_solids();
   r.eroded = static_cast<std::size_t>(std::count(eroded.begin(), eroded.end(), 1));
   r.balance = sim.energy_balance_error();
   std::cout << "no_internal " << no_internal << ": punch at " << r.vz.back() << " m/s, " << r.eroded
@@ -170,7 +170,7 @@ TEST(ContactErosion, FreeNodesBounceOffTheWallUnlessNodalErosionRemovesThem) {
     const Model model = read_deck_string(free_nodes_deck(free_nodes), "free_nodes.k");
     Simulation sim(model);
     verification::run_to(sim, model.time.end_time);
-    const auto eroded = sim.eroded_hexes();
+    const auto eroded = sim.eroded_solids();
     ASSERT_EQ(eroded.back(), 1) << "the hex erodes at once";
     double vz = 0.0, z_min = 1.0;
     for (std::size_t i = 18; i < 26; ++i) {  // the hex's nodes, after the wall's 18

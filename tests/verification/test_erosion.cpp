@@ -90,7 +90,7 @@ PullRun pull(const std::string& deck) {
   double previous_total = 0.0, previous_internal = 0.0, previous_balance = 0.0;
   verification::run_to(sim, sim.end_time(), [&](const Simulation& s) {
     r.worst = std::max(r.worst, std::abs(s.energy_balance_error()));
-    const auto eroded = s.eroded_hexes();
+    const auto eroded = s.eroded_solids();
     if (r.t_erode < 0.0 && eroded.back()) {
       r.t_erode = s.time();
       r.eroded_energy = s.energies().eroded;

@@ -17,4 +17,9 @@ namespace abut {
 double largest_element_frequency(CellType type, std::span<const double> X,
                                  std::span<const double> masses, double lambda, double mu);
 
+// The critical step 2 / omega_max of the cell with its HRZ lumped mass (lumped_mass.hpp) at
+// density rho.
+double cell_critical_step(CellType type, std::span<const double> X, double density, double lambda,
+                          double mu);
+
 }  // namespace abut

@@ -16,6 +16,7 @@
 #include "abut/core/vec3.hpp"
 #include "abut/element/shell_block.hpp"
 #include "abut/element/solid_block.hpp"
+#include "abut/element/solid_cell_block.hpp"
 #include "abut/solver/contact_report.hpp"
 #include "abut/solver/heat.hpp"
 #include "abut/solver/model.hpp"
@@ -93,12 +94,13 @@ class Simulation {
   const std::vector<double>& vz() const;
   const std::vector<double>& nodal_mass() const;
 
-  // Per-hex results in Model mesh order (rigid hexes: 0).
+  // Per-solid results in the solid numbering of Mesh::solid() (the hexahedra, then the other
+  // cells; rigid solids: 0); a cell of several points gives the mean over its points.
   void von_mises_stress(std::vector<double>& out) const;
   void pressure(std::vector<double>& out) const;
-  void plastic_strain(std::vector<double>& out) const;       // equivalent plastic strain per hex
-  void plastic_strain_rate(std::vector<double>& out) const;  // of the last step, per hex
-  std::vector<std::uint8_t> eroded_hexes() const;            // 1 per eroded hex (mesh order)
+  void plastic_strain(std::vector<double>& out) const;       // equivalent plastic strain
+  void plastic_strain_rate(std::vector<double>& out) const;  // of the last step
+  std::vector<std::uint8_t> eroded_solids() const;           // 1 per eroded solid
   // Per-shell results in Model mesh order (rigid shells: 0): the largest von Mises stress and
   // plastic strain over the element's through-thickness points.
   void shell_von_mises_stress(std::vector<double>& out) const;
@@ -154,7 +156,8 @@ class Simulation {
   double last_good_time() const;
 
  private:
-  void element_field(void (SolidBlock::*field)(std::vector<double>&) const,
+  void element_field(void (SolidBlock::*hex_field)(std::vector<double>&) const,
+                     void (SolidCellBlock::*cell_field)(std::vector<double>&) const,
                      std::vector<double>& out) const;
   void shell_field(void (ShellBlock::*field)(std::vector<double>&) const,
                    std::vector<double>& out) const;
