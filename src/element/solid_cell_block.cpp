@@ -105,38 +105,46 @@ SolidCellBlock::SolidCellBlock(std::int64_t part_id, const MaterialParams& mater
   m.reference_volume.resize(n);
   m.initial_step.resize(n);
   m.reference.resize(3 * nn * n);
-  double X[3 * kMaxCellNodes], masses[kMaxCellNodes];
-  for (std::size_t e = 0; e < n; ++e) {
+  for (std::size_t e = 0; e < n; ++e)
     for (std::size_t a = 0; a < nn; ++a) {
       const std::int32_t node = m.connectivity[e * nn + a];
       if (node < 0 || static_cast<std::size_t>(node) >= reference.size())
         throw InputError(m.element_name(e) + ": node index " + std::to_string(node) +
                          " is outside the node list");
     }
+  // The geometry of every element, in parallel (the element frequencies are the set-up's cost);
+  // the first element with a non-positive Jacobian, in element order, is reported after.
+  std::vector<std::int32_t> inverted_at(n, -1);  // the point, per element
+  const auto count = static_cast<std::int64_t>(n);
+#pragma omp parallel for schedule(dynamic, 64) if (count >= 64)
+  for (std::int64_t k = 0; k < count; ++k) {
+    const auto e = static_cast<std::size_t>(k);
+    double X[3 * kMaxCellNodes];
     m.gather(e, reference.x.data(), reference.y.data(), reference.z.data(), X);
     const std::span<const double> coordinates(X, 3 * nn);
     double volume = 0.0;
-    for (std::size_t q = 0; q < np; ++q) {
+    for (std::size_t q = 0; q < np && inverted_at[e] < 0; ++q) {
       double grad[kMaxCellNodes][3];
       const double det = natural_to_spatial(m.nodes, m.natural_at(q), X, grad);
-      if (!(det > 0.0))
-        throw InputError(m.element_name(e) + ": Jacobian <= 0 at integration point " +
-                         std::to_string(q + 1) + " in the initial configuration; expected the " +
-                         std::string(topology(type).node_order));
+      if (!(det > 0.0)) inverted_at[e] = static_cast<std::int32_t>(q);
       m.point_share[e * np + q] = m.weight[q] * det;
       volume += m.weight[q] * det;
     }
+    if (inverted_at[e] >= 0) continue;
     for (std::size_t q = 0; q < np; ++q) m.point_share[e * np + q] /= volume;
     std::copy(X, X + 3 * nn, &m.reference[3 * nn * e]);
     m.reference_volume[e] = volume;
     lumped_volume_shares(type, coordinates, {&m.shares[e * nn], nn});
-    for (std::size_t a = 0; a < nn; ++a) masses[a] = m.density * m.shares[e * nn + a];
-    const double omega =
-        largest_element_frequency(type, coordinates, {masses, nn}, m.lame_lambda, m.lame_mu);
-    m.initial_step[e] = 2.0 / omega;
+    m.initial_step[e] = cell_critical_step(type, coordinates, m.density, m.lame_lambda, m.lame_mu);
     // dt_e = factor l / c: the length that gives the eigenvalue's step, per unit of l.
     m.length_factor[e] = m.wave_speed * m.initial_step[e] / m.characteristic_length(X, volume);
   }
+  for (std::size_t e = 0; e < n; ++e)
+    if (inverted_at[e] >= 0)
+      throw InputError(m.element_name(e) + ": Jacobian <= 0 at integration point " +
+                       std::to_string(inverted_at[e] + 1) +
+                       " in the initial configuration; expected the " +
+                       std::string(topology(type).node_order));
   m.stress.assign(6 * np * n, 0.0);
   m.viscous.assign(6 * static_cast<std::size_t>(m.viscous_terms) * np * n, 0.0);
   if (const auto* metal = std::get_if<MetalParams>(&material)) {
@@ -149,7 +157,32 @@ SolidCellBlock::SolidCellBlock(std::int64_t part_id, const MaterialParams& mater
   m.bulk_pressure.assign(n, 0.0);
   m.stable.assign(n, 0.0);
   m.failure.assign(n, kOk);
+  if (type == CellType::tet4) set_nodal_pressure(true);
 }
+
+void SolidCellBlock::set_nodal_pressure(bool on) {
+  Impl& m = *impl_;
+  if (on && m.type != CellType::tet4)
+    throw InputError(input_prefix(m.part_id) + "the average nodal pressure is for C3D4 only, not " +
+                     std::string(topology(m.type).abaqus));
+  m.nodal_pressure = on;
+  m.local_node.clear();
+  if (!on) return;
+  std::vector<std::int32_t> numbers(m.connectivity.size());
+  std::vector<std::int32_t> sorted = m.connectivity;
+  std::sort(sorted.begin(), sorted.end());
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  for (std::size_t i = 0; i < m.connectivity.size(); ++i)
+    numbers[i] = static_cast<std::int32_t>(
+        std::lower_bound(sorted.begin(), sorted.end(), m.connectivity[i]) - sorted.begin());
+  m.local_node = std::move(numbers);
+  m.node_weight.assign(sorted.size(), 0.0);
+  m.node_value.assign(sorted.size(), 0.0);
+  m.element_weight.assign(m.size(), 0.0);
+  m.element_value.assign(m.size(), 0.0);
+}
+
+bool SolidCellBlock::nodal_pressure() const { return impl_->nodal_pressure; }
 
 SolidCellBlock::~SolidCellBlock() = default;
 SolidCellBlock::SolidCellBlock(SolidCellBlock&&) noexcept = default;

@@ -62,7 +62,16 @@ struct SolidCellBlock::Impl {
   std::size_t eroded_count = 0;
   double internal_energy = 0.0, hourglass_energy = 0.0;
 
+  // Average nodal pressure (set_nodal_pressure): each connectivity entry's node in a numbering
+  // of the block's own nodes; per such node the sums of V/4 and of (V tr(D dt))/4 (hypoelastic
+  // laws) or of V(x^n)/4 and V(X)/4 (Mooney-Rivlin) of its elements; per element its two terms.
+  bool nodal_pressure = false;
+  std::vector<std::int32_t> local_node;
+  std::vector<double> node_weight, node_value, element_weight, element_value;
+
   std::size_t size() const { return initial_step.size(); }
+  template <class Law>
+  void average_nodal_volumes(const NodalState& s, double dt);
   std::string element_name(std::size_t e) const;
   // The coordinates of element e's nodes from x, y, z: out[3 a + i].
   void gather(std::size_t e, const double* x, const double* y, const double* z, double* out) const;

@@ -85,7 +85,7 @@ void SolidCellBlock::Impl::element(std::size_t e, const NodalState& s, double dt
     const std::size_t p = e * np + q;
     Sym3 old;
     std::copy_n(&stress[6 * p], 6, old.c.begin());
-    Sym3 rotated = old, increment;
+    Sym3 rotated = old, increment, averaged;
     double rotation[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
     double dv_mid = 0.0;
     if (dt > 0.0) {
@@ -110,6 +110,17 @@ void SolidCellBlock::Impl::element(std::size_t e, const NodalState& s, double dt
       // rotated and recursively updated (mooney_rivlin.hpp), as SolidBlock.
       const Mat3 f = deformation_gradient(nodes, natural_at(q), x, &reference[3 * nn * e]);
       now[q] = mooney_rivlin_stress(*law.params, f);
+      if (nodal_pressure) {  // the pressure K (J - 1) of the mean of the nodes' volume ratios
+        double j_mean = 0.0;
+        for (std::size_t a = 0; a < nn; ++a) {
+          const auto l = static_cast<std::size_t>(local_node[e * nn + a]);
+          j_mean += node_weight[l] / node_value[l];
+        }
+        j_mean /= static_cast<double>(nn);
+        const double j = f[0] * (f[4] * f[8] - f[5] * f[7]) - f[1] * (f[3] * f[8] - f[5] * f[6]) +
+                         f[2] * (f[3] * f[7] - f[4] * f[6]);
+        for (int c = 0; c < 3; ++c) now[q][c] += law.params->bulk * (j_mean - j);
+      }
       const Sym3 dev = deviator(increment);
       for (int k = 0; k < viscous_terms; ++k) {
         double* h = new_viscous[q][k];
@@ -125,9 +136,21 @@ void SolidCellBlock::Impl::element(std::size_t e, const NodalState& s, double dt
       if (erosion.max_geometric_strain < 1e20 && !eroded.empty())
         geometric += point_share[p] * deviatoric_log_strain(f);
     } else {
+      if (nodal_pressure && dt > 0.0) {  // the volumetric increment: the mean of the nodes'
+        double mean = 0.0;
+        for (std::size_t a = 0; a < nn; ++a) {
+          const auto l = static_cast<std::size_t>(local_node[e * nn + a]);
+          mean += node_value[l] / node_weight[l];
+        }
+        mean /= static_cast<double>(nn);
+        const double shift = (mean - trace(increment)) / 3.0;
+        for (int c = 0; c < 3; ++c) averaged[c] = increment[c] + shift;
+        for (int c = 3; c < 6; ++c) averaged[c] = increment[c];
+      }
       now[q] = old;
       if (!history.empty()) histories[q] = history[p];
-      if (dt > 0.0) now[q] = law.update(rotated, increment, dt, histories[q]);
+      if (dt > 0.0)
+        now[q] = law.update(rotated, nodal_pressure ? averaged : increment, dt, histories[q]);
       if (erosion.max_geometric_strain < 1e20 && !eroded.empty()) {
         const Mat3 f = deformation_gradient(nodes, natural_at(q), x, &reference[3 * nn * e]);
         geometric += point_share[p] * deviatoric_log_strain(f);
@@ -191,9 +214,50 @@ void SolidCellBlock::Impl::element(std::size_t e, const NodalState& s, double dt
   }
 }
 
+// The nodal sums of the average nodal pressure (set_nodal_pressure; one point per element).
+template <class Law>
+void SolidCellBlock::Impl::average_nodal_volumes(const NodalState& s, double dt) {
+  constexpr bool kRubber = std::is_same_v<Law, RubberLaw>;
+  const auto n = static_cast<std::int64_t>(size());
+  const auto nn = static_cast<std::size_t>(nodes);
+#pragma omp parallel for schedule(static) if (n >= kParallelMinimum)
+  for (std::int64_t k = 0; k < n; ++k) {
+    const auto e = static_cast<std::size_t>(k);
+    element_weight[e] = element_value[e] = 0.0;
+    if (!eroded.empty() && eroded[e]) continue;
+    double x[3 * kMaxCellNodes], v[3 * kMaxCellNodes], g[kMaxCellNodes][3];
+    gather(e, s.x, s.y, s.z, x);
+    if constexpr (kRubber) {  // V(x^n) and V(X)
+      element_weight[e] = weight[0] * natural_to_spatial(nodes, natural_at(0), x, g);
+      element_value[e] = reference_volume[e];
+    } else {  // V(x^{n-1/2}) and V tr(D dt)
+      gather(e, s.vx, s.vy, s.vz, v);
+      for (std::size_t i = 0; i < 3 * nn; ++i) x[i] -= 0.5 * dt * v[i];
+      const double volume = weight[0] * natural_to_spatial(nodes, natural_at(0), x, g);
+      double rate = 0.0;
+      for (std::size_t a = 0; a < nn; ++a)
+        rate += v[3 * a] * g[a][0] + v[3 * a + 1] * g[a][1] + v[3 * a + 2] * g[a][2];
+      element_weight[e] = volume;
+      element_value[e] = volume * rate * dt;
+    }
+  }
+  // Serial, in element order: the sums do not depend on the number of threads. An inverted
+  // element leaves a non-positive weight, which the element's own update reports.
+  std::fill(node_weight.begin(), node_weight.end(), 0.0);
+  std::fill(node_value.begin(), node_value.end(), 0.0);
+  for (std::size_t e = 0; e < size(); ++e)
+    for (std::size_t a = 0; a < nn; ++a) {
+      const auto l = static_cast<std::size_t>(local_node[e * nn + a]);
+      node_weight[l] += 0.25 * element_weight[e];
+      node_value[l] += 0.25 * element_value[e];
+    }
+}
+
 template <class Law>
 BlockStep SolidCellBlock::Impl::step(const NodalState& s, double dt, const Law& law) {
   const auto n = static_cast<std::int64_t>(size());
+  if (nodal_pressure && (dt > 0.0 || std::is_same_v<Law, RubberLaw>))
+    average_nodal_volumes<Law>(s, dt);
 #pragma omp parallel for schedule(static) if (n * points >= kParallelMinimum)
   for (std::int64_t e = 0; e < n; ++e) element(static_cast<std::size_t>(e), s, dt, law);
   static_assert(kInverted == 1 && kNonFinite == 2, "the messages below, by failure code");

@@ -66,32 +66,42 @@ TEST(ExplicitCells, WaveBarStressBehindTheFrontIsRhoCV) {
     verification::run_to(sim, 0.5 / c, [&](const Simulation& s) { balance.record(s, kinetic); });
     std::vector<double> mises;
     sim.von_mises_stress(mises);
-    // Checked from 15 cells behind the front on and 10 cells ahead of it (the front is spread
-    // by the bulk viscosity and rings behind: test_elastic_wave_bar.cpp).
+    // 1-D theory speaks of a cross-section: the volume-weighted mean over each slab of the bar
+    // one grid cell long (one hexahedron, or its 6 tetrahedra or 2 wedges).
+    std::vector<double> slab_sum(100, 0.0), slab_volume(100, 0.0);
+    for (std::size_t e = 0; e < mises.size(); ++e) {
+      const auto slab = static_cast<std::size_t>(centroid_x(model, e) / 0.01);
+      const double v = solid_volume(model.mesh, e);
+      slab_sum[slab] += mises[e] * v;
+      slab_volume[slab] += v;
+    }
+    // Checked from 15 slabs behind the front on and 10 ahead of it (the front is spread by the
+    // bulk viscosity and rings behind: test_elastic_wave_bar.cpp).
     const double front = 1.0 - c * sim.time();
     double worst_behind = 0.0, worst_ahead = 0.0, sum = 0.0, volume = 0.0;
     int behind = 0, ahead = 0;
-    for (std::size_t e = 0; e < mises.size(); ++e) {
-      const double x = centroid_x(model, e);
+    for (std::size_t k = 0; k < slab_sum.size(); ++k) {
+      const double x = 0.01 * (static_cast<double>(k) + 0.5), stress = slab_sum[k] / slab_volume[k];
       if (x > front + 0.15 && x < 0.95) {
-        worst_behind = std::max(worst_behind, std::abs(mises[e] - expected) / expected);
-        const double v = solid_volume(model.mesh, e);
-        sum += mises[e] * v;
-        volume += v;
+        worst_behind = std::max(worst_behind, std::abs(stress - expected) / expected);
+        sum += slab_sum[k];
+        volume += slab_volume[k];
         ++behind;
       } else if (x < front - 0.1) {
-        worst_ahead = std::max(worst_ahead, mises[e] / expected);
+        worst_ahead = std::max(worst_ahead, stress / expected);
         ++ahead;
       }
     }
     const double mean = sum / volume;
-    std::cout << topology(type).abaqus << ": plateau mean stress error "
-              << 100.0 * (mean - expected) / expected << "%, largest " << 100.0 * worst_behind
-              << "%, ahead " << 100.0 * worst_ahead << "% of rho c v; energy balance "
-              << 100.0 * balance.worst << "%; " << sim.cycle() << " cycles\n";
-    // The plateau's mean is what momentum conservation fixes (0.5%); single cells ring about it
-    // with the dispersion of each discretisation (hexahedra 1.9%, the quadratic cells and the
-    // tetrahedra up to 3% at 15 cells behind the front), bounded loosely to catch a gross error.
+    std::cout << topology(type).abaqus << ": plateau stress error: mean "
+              << 100.0 * (mean - expected) / expected << "%, largest over the slabs "
+              << 100.0 * worst_behind << "%, ahead " << 100.0 * worst_ahead
+              << "% of rho c v; energy balance " << 100.0 * balance.worst << "%; " << sim.cycle()
+              << " cycles\n";
+    // The plateau's mean is what momentum conservation fixes (0.5%). The slabs ring about it
+    // with the dispersion of each discretisation: 1.1-1.9% for C3D8, C3D10, C3D6, 2.9% for
+    // C3D20 (its midside nodes are spaced h/2, the bulk viscosity's length is h) and 4.5% for
+    // C3D4 with the average nodal pressure (2.6% without), bounded at 5% to catch a gross error.
     EXPECT_LT(std::abs(mean - expected) / expected, 0.005);
     EXPECT_LT(worst_behind, 0.05);
     EXPECT_LT(worst_ahead, 0.02);

@@ -17,10 +17,10 @@
 // Stable step: the element eigenvalue inequality (the largest frequency of the assembled mesh is
 // at most the largest of its elements' with the same lumped masses; Hughes, The Finite Element
 // Method, 1987/2000, section 9.3, after Irons 1970) gives dt_e = 2 / omega_max,e, found once per
-// element by power iteration on M^-1/2 K M^-1/2 of the elastic element at the initial moduli. The
-// run then scales it with the element's current characteristic length l = V / (largest face
-// area, through the face corners): dt_e(t) = dt_e(0) l(t) / l(0), and shortens it for the bulk
-// viscosity as SolidBlock does.
+// element from M^-1/2 K M^-1/2 of the elastic element at the initial moduli
+// (element_frequency.hpp). The run then scales it with the element's current characteristic length
+// l = V / (largest face area, through the face corners): dt_e(t) = dt_e(0) l(t) / l(0), and
+// shortens it for the bulk viscosity as SolidBlock does.
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -77,6 +77,18 @@ class SolidCellBlock {
   void set_erosion(const ErosionCriteria& criteria);
   const std::vector<std::uint8_t>& eroded() const;  // 1 per eroded element; empty without
   void set_bulk_viscosity(double quadratic, double linear);
+  // The average nodal pressure of Bonet & Burton ("A simple average nodal pressure tetrahedral
+  // element for incompressible and nearly incompressible dynamic explicit applications",
+  // Communications in Numerical Methods in Engineering 14, 1998), on by default for 4-node
+  // tetrahedra and refused (InputError) for other types. A constant-strain tetrahedron has one
+  // volume constraint per element and about one node per five elements, so a nearly
+  // incompressible mesh of them cannot deform (volumetric locking). Here each node takes the
+  // volume-weighted mean of its elements' volumetric strain increments (hypoelastic laws) or of
+  // their volume ratios J (Mooney-Rivlin), and each element's volumetric strain is the mean over
+  // its four nodes: one constraint per node. The averaging is symmetric, so the pressure's work
+  // is that of a nodal energy sum_a V_a K eps_a^2 / 2: the energy balance still closes.
+  void set_nodal_pressure(bool on);
+  bool nodal_pressure() const;
   // InputError when the coupling would change anything: the coupling of these elements to the
   // temperature is not supported yet.
   void set_thermal(const ThermalCoupling& coupling);
