@@ -35,7 +35,7 @@ fs::path default_output_dir(const fs::path& deck) {
 std::string solids_of(const abut::Mesh& mesh) {
   std::string s = fmt::format("{} hexahedra", mesh.hex_count());
   for (const abut::CellBlock& b : mesh.cells)
-    s += fmt::format(", {} {}", b.size(), abut::topology(b.type).abaqus);
+    s += fmt::format(", {} {}", b.size(), abut::element_label(b.type));
   return s;
 }
 

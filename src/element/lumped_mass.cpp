@@ -38,6 +38,8 @@ std::span<const QuadraturePoint> mass_rule(CellType type) {
     }
     case CellType::hex8:    // 2 x 2 x 2: degree 3 >= 2 per direction
     case CellType::hex20:   // 3 x 3 x 3: degree 5 >= 4
+    case CellType::hex27:   // 3 x 3 x 3: degree 5 >= 4
+    case CellType::hex64:   // 4 x 4 x 4: degree 7 >= 6
     case CellType::wedge6:  // degree 2 on the triangle, 3 along zeta: N^2 is of degree 2 in both
       return quadrature(type, Integration::full);
   }

@@ -19,7 +19,7 @@ namespace abut {
 
 std::string SolidCellBlock::Impl::element_name(std::size_t e) const {
   std::string name =
-      "part " + std::to_string(part_id) + ", " + std::string(topology(type).abaqus) + " element ";
+      "part " + std::to_string(part_id) + ", " + std::string(element_label(type)) + " element ";
   if (e < element_ids.size())
     name += std::to_string(element_ids[e]) + " (index " + std::to_string(e) + " in block)";
   else
@@ -164,7 +164,7 @@ void SolidCellBlock::set_nodal_pressure(bool on) {
   Impl& m = *impl_;
   if (on && m.type != CellType::tet4)
     throw InputError(input_prefix(m.part_id) + "the average nodal pressure is for C3D4 only, not " +
-                     std::string(topology(m.type).abaqus));
+                     std::string(element_label(m.type)));
   m.nodal_pressure = on;
   m.local_node.clear();
   if (!on) return;
@@ -292,7 +292,7 @@ void SolidCellBlock::set_thermal(const ThermalCoupling& coupling) {
                     (metal != nullptr && (coupling.plastic_work || metal->thermal()));
   if (acts)
     throw InputError(input_prefix(m.part_id) + "the coupling of " +
-                     std::string(topology(m.type).abaqus) +
+                     std::string(element_label(m.type)) +
                      " elements to the temperature is not supported yet (8-node hexahedra and "
                      "shells are coupled)");
 }

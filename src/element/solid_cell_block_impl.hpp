@@ -14,7 +14,7 @@
 namespace abut {
 
 // The most integration points of a full rule (hex20: 3 x 3 x 3): the kernel's scratch.
-inline constexpr int kMaxPoints = 27;
+inline constexpr int kMaxPoints = 64;
 
 struct SolidCellBlock::Impl {
   std::int64_t part_id = 0;

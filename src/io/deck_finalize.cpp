@@ -266,7 +266,7 @@ DeckResult DeckReader::finish() {
       for (std::size_t c = 0; c < b.size(); ++c)
         if (std::find(parts.begin(), parts.end(), b.part[c]) != parts.end())
           throw InputError(where, std::string(keyword) + " on part " + std::to_string(b.part[c]) +
-                                      ", which has " + std::string(topology(b.type).abaqus) +
+                                      ", which has " + std::string(element_label(b.type)) +
                                       " elements, is not supported yet (it refines and smooths "
                                       "8-node hexahedra)");
   };

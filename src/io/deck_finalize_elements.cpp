@@ -95,7 +95,8 @@ void DeckReader::check_element_volumes() const {
     if (jacobian > 0.0 && std::isfinite(jacobian)) continue;
     const CellTopology& t = topology(e.type);
     throw InputError(cell_where(e, ""),
-                     std::string(t.abaqus) + " element " + std::to_string(block->id[e.cell]) +
+                     std::string(element_label(e.type)) + " element " +
+                         std::to_string(block->id[e.cell]) +
                          " is inverted or degenerate in the initial configuration (Jacobian " +
                          format_number(jacobian) + "); expected the " + std::string(t.node_order));
   }

@@ -115,7 +115,7 @@ void require_distinct_corners(const Mesh& mesh, const std::vector<std::int32_t>&
       for (const std::int32_t n : block.cell(c)) nodes.push_back(index(n));
       std::sort(nodes.begin(), nodes.end());
       if (std::adjacent_find(nodes.begin(), nodes.end()) != nodes.end())
-        fail(std::string(topology(block.type).abaqus) + " element " + std::to_string(block.id[c]));
+        fail(std::string(element_label(block.type)) + " element " + std::to_string(block.id[c]));
     }
   for (std::size_t s = 0; s < mesh.shell_count(); ++s) {
     const Quad4& q = mesh.shells[s];

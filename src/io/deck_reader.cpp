@@ -368,7 +368,7 @@ void DeckReader::add_cell(std::int64_t id, std::int64_t part, CellType type,
   if (!hex_ids_.insert(id).second)
     throw InputError(where, "element " + std::to_string(id) + " is already defined");
   if (frame().transform.mirrors())
-    throw InputError(where, "a mirrored *INCLUDE of " + std::string(topology(type).abaqus) +
+    throw InputError(where, "a mirrored *INCLUDE of " + std::string(element_label(type)) +
                                 " elements is not supported yet by abut (hexahedra are)");
   Mesh& mesh = model.mesh;
   std::size_t cell = 0;

@@ -98,7 +98,7 @@ void read_element_cells(DeckReader& d, Block& b, CellType type, const char* keyw
       for (std::size_t j = 0; j < k; ++j)
         r.require(nodes[k] != nodes[j], k + 2,
                   "node " + std::to_string(nodes[k]) + " repeats n" + std::to_string(j + 1) +
-                      ": the nodes of a " + std::string(topology(type).abaqus) +
+                      ": the nodes of a " + std::string(element_label(type)) +
                       " element are all different");
     d.add_cell(d.element_id(r, 0), d.part_id(r, 1), type, std::move(nodes), std::move(fields),
                keyword, r.where());

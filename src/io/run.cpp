@@ -27,7 +27,7 @@ namespace {
 std::string other_solids(const Mesh& mesh) {
   std::string out;
   for (const CellBlock& b : mesh.cells)
-    if (b.size() > 0) out += fmt::format(", {} {}", b.size(), topology(b.type).abaqus);
+    if (b.size() > 0) out += fmt::format(", {} {}", b.size(), element_label(b.type));
   return out;
 }
 

@@ -94,6 +94,61 @@ void wedge6(const double xi[3], double* n, double (*dn)[3]) {
   }
 }
 
+// The 1-D Lagrange polynomials of order P on the equispaced points x_m = -1 + 2m/P, and their
+// derivatives: l_m(x) = prod_{q != m} (x - x_q) / (x_m - x_q).
+template <int P>
+void lagrange_1d(double x, double* l, double* dl) {
+  double node[P + 1];
+  for (int m = 0; m <= P; ++m) node[m] = -1.0 + 2.0 * m / P;
+  for (int m = 0; m <= P; ++m) {
+    double value = 1.0, slope = 0.0;
+    for (int q = 0; q <= P; ++q) {
+      if (q == m) continue;
+      const double d = 1.0 / (node[m] - node[q]);
+      slope = slope * (x - node[q]) * d + value * d;
+      value *= (x - node[q]) * d;
+    }
+    l[m] = value;
+    dl[m] = slope;
+  }
+}
+
+// The lattice index of a node from its natural coordinate -1 + 2i/P.
+inline int lattice_index(double natural, int order) {
+  return static_cast<int>(std::lround(0.5 * (natural + 1.0) * order));
+}
+
+// Lagrange hexahedron of order P: N_a = l_i(xi) l_j(eta) l_k(zeta) for node a at lattice (i, j, k).
+template <int P>
+void lagrange_hex(CellType type, const double xi[3], double* n, double (*dn)[3]) {
+  double l[3][P + 1], dl[3][P + 1];
+  for (int r = 0; r < 3; ++r) lagrange_1d<P>(xi[r], l[r], dl[r]);
+  const CellTopology& t = topology(type);
+  for (int a = 0; a < t.nodes; ++a) {
+    const auto& nat = t.natural[static_cast<std::size_t>(a)];
+    const int i = lattice_index(nat[0], P), j = lattice_index(nat[1], P),
+              k = lattice_index(nat[2], P);
+    n[a] = l[0][i] * l[1][j] * l[2][k];
+    dn[a][0] = dl[0][i] * l[1][j] * l[2][k];
+    dn[a][1] = l[0][i] * dl[1][j] * l[2][k];
+    dn[a][2] = l[0][i] * l[1][j] * dl[2][k];
+  }
+}
+
+// The Lagrange quadrilateral of order P (quad9, quad16): N_a = l_s(xi) l_t(eta).
+template <int P>
+void lagrange_quad(FaceType type, const double xi[2], double* n, double (*dn)[2]) {
+  double l[2][P + 1], dl[2][P + 1];
+  for (int r = 0; r < 2; ++r) lagrange_1d<P>(xi[r], l[r], dl[r]);
+  const auto lattice = face_lattice(type);
+  for (std::size_t a = 0; a < lattice.size(); ++a) {
+    const int s = lattice[a][0], t = lattice[a][1];
+    n[a] = l[0][s] * l[1][t];
+    dn[a][0] = dl[0][s] * l[1][t];
+    dn[a][1] = l[0][s] * dl[1][t];
+  }
+}
+
 // Tensor-product Gauss-Legendre rule of m points per direction on [-1, 1]^3, xi fastest.
 template <int M>
 constexpr std::array<QuadraturePoint, M * M * M> gauss_cube(const double (&x)[M],
@@ -111,9 +166,22 @@ constexpr double kG2[2] = {-0.57735026918962576451, 0.57735026918962576451}, kW2
 constexpr double kG3[3] = {-0.77459666924148337704, 0.0, 0.77459666924148337704},
                  kW3[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
 
+// 4 points: +-sqrt(3/7 -+ 2/7 sqrt(6/5)), weights (18 +- sqrt 30) / 36 (Abramowitz & Stegun,
+// table 25.4).
+constexpr double kG4[4] = {-0.86113631159405257522, -0.33998104358485626480, 0.33998104358485626480,
+                           0.86113631159405257522},
+                 kW4[4] = {0.34785484513745385737, 0.65214515486254614263, 0.65214515486254614263,
+                           0.34785484513745385737};
+// 5 points: 0, +-(1/3) sqrt(5 -+ 2 sqrt(10/7)) (the same table).
+constexpr double kG5[5] = {-0.90617984593866399280, -0.53846931010568309104, 0.0,
+                           0.53846931010568309104, 0.90617984593866399280},
+                 kW5[5] = {0.23692688505618908751, 0.47862867049936646804, 0.56888888888888888889,
+                           0.47862867049936646804, 0.23692688505618908751};
+
 constexpr auto kCube1 = gauss_cube(kG1, kW1);
 constexpr auto kCube2 = gauss_cube(kG2, kW2);
 constexpr auto kCube3 = gauss_cube(kG3, kW3);
+constexpr auto kCube4 = gauss_cube(kG4, kW4);
 
 constexpr std::array<QuadraturePoint, 1> kTet1 = {{{{0.25, 0.25, 0.25}, 1.0 / 6.0}}};
 constexpr double kTetA = 0.58541019662496845446, kTetB = 0.13819660112501051518;
@@ -137,13 +205,15 @@ constexpr std::array<FacePoint, 4> kQuad2x2 = {
      {{0.57735026918962576451, -0.57735026918962576451}, 1.0},
      {{-0.57735026918962576451, 0.57735026918962576451}, 1.0},
      {{0.57735026918962576451, 0.57735026918962576451}, 1.0}}};
-constexpr std::array<FacePoint, 9> quad_3x3() {
-  std::array<FacePoint, 9> out{};
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) out[i + 3 * j] = {{kG3[i], kG3[j]}, kW3[i] * kW3[j]};
+template <int M>
+constexpr std::array<FacePoint, M * M> gauss_square(const double (&x)[M], const double (&w)[M]) {
+  std::array<FacePoint, M * M> out{};
+  for (int j = 0; j < M; ++j)
+    for (int i = 0; i < M; ++i) out[i + M * j] = {{x[i], x[j]}, w[i] * w[j]};
   return out;
 }
-constexpr auto kQuad3x3 = quad_3x3();
+constexpr auto kQuad3x3 = gauss_square(kG3, kW3);
+constexpr auto kQuad5x5 = gauss_square(kG5, kW5);
 constexpr std::array<FacePoint, 1> kTri1 = {{{{1.0 / 3.0, 1.0 / 3.0}, 0.5}}};
 // Dunavant's degree-4 rule (core/triangle_rule.hpp), its weights halved for the reference
 // triangle of area 1/2.
@@ -192,6 +262,10 @@ void face_shape_functions(FaceType type, const double xi[2], double* n, double (
         }
       }
       return;
+    case FaceType::quad9:
+      return lagrange_quad<2>(type, xi, n, dn);
+    case FaceType::quad16:
+      return lagrange_quad<3>(type, xi, n, dn);
     case FaceType::tri3:
     case FaceType::tri6: {
       const double l[3] = {1.0 - x - y, x, y};
@@ -221,7 +295,10 @@ std::span<const FacePoint> face_quadrature(FaceType type) {
     case FaceType::quad4:
       return kQuad2x2;
     case FaceType::quad8:
+    case FaceType::quad9:
       return kQuad3x3;
+    case FaceType::quad16:
+      return kQuad5x5;
     case FaceType::tri3:
       return kTri1;
     case FaceType::tri6:
@@ -236,7 +313,7 @@ namespace {
 // times the area per unit natural area.
 void face_point(FaceType type, std::span<const double> x, const double xi[2], double* n,
                 double area[3]) {
-  double dn[8][2];
+  double dn[kMaxFaceNodes][2];
   face_shape_functions(type, xi, n, dn);
   double t1[3] = {0, 0, 0}, t2[3] = {0, 0, 0};
   for (int a = 0; a < face_node_count(type); ++a)
@@ -253,7 +330,7 @@ void face_point(FaceType type, std::span<const double> x, const double xi[2], do
 
 void face_pressure_forces(FaceType type, std::span<const double> x, double p, std::span<double> f) {
   const int nodes = face_node_count(type);
-  double n[8], area[3];
+  double n[kMaxFaceNodes], area[3];
   std::fill(f.begin(), f.begin() + 3 * nodes, 0.0);
   for (const FacePoint& q : face_quadrature(type)) {
     face_point(type, x, q.xi, n, area);
@@ -275,6 +352,10 @@ void shape_functions(CellType type, const double xi[3], double* n, double (*dn)[
       return tet10(xi, n, dn);
     case CellType::wedge6:
       return wedge6(xi, n, dn);
+    case CellType::hex27:
+      return lagrange_hex<2>(type, xi, n, dn);
+    case CellType::hex64:
+      return lagrange_hex<3>(type, xi, n, dn);
   }
 }
 
@@ -293,6 +374,10 @@ std::span<const QuadraturePoint> quadrature(CellType type, Integration rule) {
     case CellType::wedge6:
       return full ? std::span<const QuadraturePoint>(kWedge6Points)
                   : std::span<const QuadraturePoint>();
+    case CellType::hex27:
+      return full ? std::span<const QuadraturePoint>(kCube3) : std::span<const QuadraturePoint>();
+    case CellType::hex64:
+      return full ? std::span<const QuadraturePoint>(kCube4) : std::span<const QuadraturePoint>();
   }
   return {};
 }
@@ -324,7 +409,7 @@ double cell_volume(CellType type, std::span<const double> X) {
 }
 
 double face_area(FaceType type, std::span<const double> x) {
-  double n[8], c[3];
+  double n[kMaxFaceNodes], c[3];
   double area = 0.0;
   for (const FacePoint& q : face_quadrature(type)) {
     face_point(type, x, q.xi, n, c);

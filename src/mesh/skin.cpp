@@ -51,7 +51,7 @@ double positive_volume(const Mesh& mesh, std::size_t solid) {
 
 // The area of a solid's face, through all of its nodes.
 double area_of_face(const Mesh& mesh, const SolidRef& cell, const FaceTopology& face) {
-  double x[3 * 8];
+  double x[3 * kMaxFaceNodes];
   for (int a = 0; a < face.size(); ++a) {
     const Vec3 p = mesh.nodes.position(static_cast<std::size_t>(cell.nodes[face.nodes[a]]));
     x[3 * a] = p.x, x[3 * a + 1] = p.y, x[3 * a + 2] = p.z;

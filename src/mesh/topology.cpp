@@ -101,13 +101,118 @@ constexpr std::array<E, 9> kWedge6Edges = {{{0, 1, -1},
 constexpr std::array<P, 6> kWedge6Natural = {
     {{0, 0, -1}, {1, 0, -1}, {0, 1, -1}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}}};
 
-constexpr std::array<std::int8_t, 20> kIdentity = {0,  1,  2,  3,  4,  5,  6,  7,  8,  9,
-                                                   10, 11, 12, 13, 14, 15, 16, 17, 18, 19};
+// Lagrange quadrilaterals of order p: the face lattice (topology.hpp, face_lattice).
+template <int P>
+struct QuadLattice {
+  static constexpr int kNodes = (P + 1) * (P + 1);
+  std::array<std::array<std::int8_t, 2>, kNodes> st{};
+  constexpr QuadLattice() {
+    constexpr int corner[4][2] = {{0, 0}, {P, 0}, {P, P}, {0, P}};
+    int n = 0;
+    for (const auto& c : corner)
+      st[n++] = {static_cast<std::int8_t>(c[0]), static_cast<std::int8_t>(c[1])};
+    for (int k = 0; k < 4; ++k) {
+      const auto& a = corner[k];
+      const auto& b = corner[(k + 1) % 4];
+      for (int m = 1; m < P; ++m)
+        st[n++] = {static_cast<std::int8_t>(a[0] + m * (b[0] - a[0]) / P),
+                   static_cast<std::int8_t>(a[1] + m * (b[1] - a[1]) / P)};
+    }
+    for (int t = 1; t < P; ++t)
+      for (int s = 1; s < P; ++s)
+        st[n++] = {static_cast<std::int8_t>(s), static_cast<std::int8_t>(t)};
+  }
+  // The face-local index of lattice point (s, t).
+  constexpr int at(int s, int t) const {
+    for (int a = 0; a < kNodes; ++a)
+      if (st[a][0] == s && st[a][1] == t) return a;
+    return -1;
+  }
+  // The p x p facets of the lattice, counter-clockwise like the face.
+  constexpr std::array<std::array<std::int8_t, 4>, P * P> facets() const {
+    std::array<std::array<std::int8_t, 4>, P * P> out{};
+    int f = 0;
+    for (int t = 0; t < P; ++t)
+      for (int s = 0; s < P; ++s)
+        out[f++] = {static_cast<std::int8_t>(at(s, t)), static_cast<std::int8_t>(at(s + 1, t)),
+                    static_cast<std::int8_t>(at(s + 1, t + 1)),
+                    static_cast<std::int8_t>(at(s, t + 1))};
+    return out;
+  }
+};
+constexpr QuadLattice<2> kQuad9Lattice;
+constexpr QuadLattice<3> kQuad16Lattice;
+
+// Lagrange hexahedra of order p: the (p + 1)^3 lattice nodes in VTK's order (topology.hpp), their
+// natural coordinates, and the faces S1..S6 (the corners of kHexFaces) as Lagrange quadrilaterals
+// whose lattice runs from corner 0 towards corners 1 and 3.
+template <int P>
+struct LagrangeHex {
+  static constexpr int kNodes = (P + 1) * (P + 1) * (P + 1);
+  std::array<std::array<int, 3>, kNodes> ijk{};
+  std::array<std::array<double, 3>, kNodes> natural{};
+  std::array<F, 6> faces{};
+  constexpr LagrangeHex(const QuadLattice<P>& lattice) {
+    constexpr int corner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                  {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+    constexpr int edge[12][2] = {{0, 1}, {1, 2}, {3, 2}, {0, 3}, {4, 5}, {5, 6},
+                                 {7, 6}, {4, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+    int n = 0;
+    for (const auto& c : corner) ijk[n++] = {c[0] * P, c[1] * P, c[2] * P};
+    for (const auto& e : edge)
+      for (int m = 1; m < P; ++m, ++n)
+        for (int r = 0; r < 3; ++r)
+          ijk[n][r] = corner[e[0]][r] * P + m * (corner[e[1]][r] - corner[e[0]][r]);
+    for (int axis = 0; axis < 3; ++axis)
+      for (const int side : {0, P}) {
+        const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
+        for (int b = 1; b < P; ++b)
+          for (int a = 1; a < P; ++a, ++n) {
+            ijk[n][axis] = side;
+            ijk[n][u] = a;
+            ijk[n][v] = b;
+          }
+      }
+    for (int k = 1; k < P; ++k)
+      for (int j = 1; j < P; ++j)
+        for (int i = 1; i < P; ++i) ijk[n++] = {i, j, k};
+    for (int a = 0; a < kNodes; ++a)
+      for (int r = 0; r < 3; ++r) natural[a][r] = -1.0 + 2.0 * ijk[a][r] / P;
+    for (int f = 0; f < 6; ++f) {
+      faces[f].type = P == 2 ? FaceType::quad9 : FaceType::quad16;
+      const int* c0 = corner[kHexFaces[f][0]];
+      const int* c1 = corner[kHexFaces[f][1]];
+      const int* c3 = corner[kHexFaces[f][3]];
+      for (int a = 0; a < QuadLattice<P>::kNodes; ++a) {
+        std::array<int, 3> x{};
+        for (int r = 0; r < 3; ++r)
+          x[r] =
+              c0[r] * P + lattice.st[a][0] * (c1[r] - c0[r]) + lattice.st[a][1] * (c3[r] - c0[r]);
+        faces[f].nodes[a] = static_cast<std::int8_t>(index(x));
+      }
+    }
+  }
+  constexpr int index(const std::array<int, 3>& x) const {
+    for (int a = 0; a < kNodes; ++a)
+      if (ijk[a] == x) return a;
+    return -1;
+  }
+};
+constexpr LagrangeHex<2> kHex27(kQuad9Lattice);
+constexpr LagrangeHex<3> kHex64(kQuad16Lattice);
+constexpr auto kQuad9Facets = kQuad9Lattice.facets();
+constexpr auto kQuad16Facets = kQuad16Lattice.facets();
+
+constexpr std::array<std::int8_t, 64> kIdentity = [] {
+  std::array<std::int8_t, 64> out{};
+  for (int a = 0; a < 64; ++a) out[a] = static_cast<std::int8_t>(a);
+  return out;
+}();
 constexpr std::array<std::int8_t, 6> kWedgeToVtk = {0, 2, 1, 3, 5, 4};
 
 // VTK cell type ids (vtkCellType.h).
 constexpr int kVtkTetra = 10, kVtkHexahedron = 12, kVtkWedge = 13, kVtkQuadraticTetra = 24,
-              kVtkQuadraticHexahedron = 25;
+              kVtkQuadraticHexahedron = 25, kVtkLagrangeHexahedron = 72;
 
 template <class T, std::size_t N>
 std::span<const T> first(const std::array<T, N>& a, std::size_t n) {
@@ -123,6 +228,9 @@ constexpr std::string_view kTetOrder = "nodes 1-3 counter-clockwise seen from no
 constexpr std::string_view kTet10Order =
     "corners 1-3 counter-clockwise seen from corner 4, then the midside nodes of edges 1-2, 2-3, "
     "3-1, 1-4, 2-4, 3-4";
+constexpr std::string_view kLagrangeOrder =
+    "VTK's order of a Lagrange hexahedron (corners as an 8-node hexahedron, then the edge, face "
+    "and interior nodes of the equispaced lattice)";
 constexpr std::string_view kWedgeOrder =
     "nodes 1-3 counter-clockwise seen from nodes 4-6, which lie above them";
 
@@ -137,6 +245,10 @@ const CellTopology kTable[] = {
      kTet10Natural, kVtkQuadraticTetra, first(kIdentity, 10)},
     {CellType::wedge6, "wedge6", "C3D6", kWedgeOrder, 6, 6, 1, kWedge6Faces, kWedge6Edges,
      kWedge6Natural, kVtkWedge, kWedgeToVtk},
+    {CellType::hex27, "hex27", "", kLagrangeOrder, 27, 8, 2, kHex27.faces, kHex20Edges,
+     kHex27.natural, kVtkLagrangeHexahedron, first(kIdentity, 27)},
+    {CellType::hex64, "hex64", "", kLagrangeOrder, 64, 8, 3, kHex64.faces, kHex8Edges,
+     kHex64.natural, kVtkLagrangeHexahedron, first(kIdentity, 64)},
 };
 
 }  // namespace
@@ -159,7 +271,17 @@ std::span<const std::array<std::int8_t, 4>> linear_facets(FaceType type) {
       return kQuad4;
     case FaceType::quad8:
       return kQuad8;
+    case FaceType::quad9:
+      return kQuad9Facets;
+    case FaceType::quad16:
+      return kQuad16Facets;
   }
+  return {};
+}
+
+std::span<const std::array<std::int8_t, 2>> face_lattice(FaceType type) {
+  if (type == FaceType::quad9) return kQuad9Lattice.st;
+  if (type == FaceType::quad16) return kQuad16Lattice.st;
   return {};
 }
 

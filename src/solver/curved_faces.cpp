@@ -8,14 +8,28 @@
 namespace abut {
 namespace {
 
-void quad8_shape(const double xi[2], double* n) {
-  double dn[8][2];
-  face_shape_functions(FaceType::quad8, xi, n, dn);
+template <FaceType T>
+void shape(const double xi[2], double* n) {
+  double dn[kMaxFaceNodes][2];
+  face_shape_functions(T, xi, n, dn);
 }
 
-void tri6_shape(const double xi[2], double* n) {
-  double dn[8][2];
-  face_shape_functions(FaceType::tri6, xi, n, dn);
+// The shape functions of a curved face; null for a linear one.
+FacetParent::Shape shape_of(FaceType type) {
+  switch (type) {
+    case FaceType::tri3:
+    case FaceType::quad4:
+      return nullptr;
+    case FaceType::tri6:
+      return shape<FaceType::tri6>;
+    case FaceType::quad8:
+      return shape<FaceType::quad8>;
+    case FaceType::quad9:
+      return shape<FaceType::quad9>;
+    case FaceType::quad16:
+      return shape<FaceType::quad16>;
+  }
+  return nullptr;
 }
 
 }  // namespace
@@ -57,7 +71,8 @@ std::vector<SkinFace> CurvedFaces::facets(std::span<const SkinFace> faces,
     while (j < faces.size() && faces[j].solid == f.solid && faces[j].face == f.face &&
            faces[j].shell < 0)
       ++j;
-    if (face.type != FaceType::tri6 && face.type != FaceType::quad8) {
+    const FacetParent::Shape face_shape = shape_of(face.type);
+    if (!face_shape) {
       plain(i, j), i = j;
       continue;
     }
@@ -65,7 +80,7 @@ std::vector<SkinFace> CurvedFaces::facets(std::span<const SkinFace> faces,
     std::vector<std::int32_t> node_of(sub.corners.size(), -1);
     const auto node_at = [&](std::int32_t c) {
       if (node_of[static_cast<std::size_t>(c)] >= 0) return node_of[static_cast<std::size_t>(c)];
-      double n[8], dn[8][2];
+      double n[kMaxFaceNodes], dn[kMaxFaceNodes][2];
       face_shape_functions(face.type, sub.corners[static_cast<std::size_t>(c)].data(), n, dn);
       std::vector<std::int32_t> nodes;
       std::vector<double> weights;
@@ -83,7 +98,7 @@ std::vector<SkinFace> CurvedFaces::facets(std::span<const SkinFace> faces,
     };
     SkinFace g = f;
     FacetParent parent;
-    parent.shape = face.type == FaceType::quad8 ? quad8_shape : tri6_shape;
+    parent.shape = face_shape;
     parent.count = face.size();
     for (int a = 0; a < face.size(); ++a)
       parent.nodes[static_cast<std::size_t>(a)] =

@@ -671,7 +671,7 @@ std::string Simulation::Impl::limit_description() const {
   if (limiting_shell_block >= 0)
     return "shells of part " + std::to_string(shell_blocks[limiting_shell_block].part_id());
   if (limiting_cell_block >= 0)
-    return std::string(topology(cell_blocks[limiting_cell_block].type()).abaqus) +
+    return std::string(element_label(cell_blocks[limiting_cell_block].type())) +
            " elements of part " + std::to_string(cell_blocks[limiting_cell_block].part_id());
   if (limiting_block < 0) return "dt_max of *TIME";
   return "elements of part " + std::to_string(blocks[limiting_block].part_id());

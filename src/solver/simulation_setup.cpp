@@ -235,7 +235,7 @@ void Simulation::Impl::setup() {
       if (is_thermal_part(model, cell.part))
         throw InputError(model.find_part(cell.part)->where,
                          "part " + std::to_string(cell.part) + ": heat conduction in " +
-                             std::string(topology(cell.type).abaqus) +
+                             std::string(element_label(cell.type)) +
                              " elements is not supported yet (8-node hexahedra and shells "
                              "conduct heat); give its material no thermal properties (thpid)");
     }

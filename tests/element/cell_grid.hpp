@@ -3,10 +3,13 @@
 // hexahedra whose corners may be moved, each hexahedron kept (hex8, hex20), split into 6
 // tetrahedra around its main diagonal (Freudenthal-Kuhn; conforming between neighbours because
 // every cube is split the same way) or into 2 wedges along the diagonal 0-2 of its bottom face.
-// Midside nodes sit halfway along their (straight) edge and are shared between neighbours. With
+// Midside nodes sit halfway along their (straight) edge and are shared between neighbours; the
+// Lagrange hexahedra (hex27, hex64) take the nodes of their lattice where the hexahedron's
+// trilinear map puts them, shared between neighbours too. With
 // `map`, every node (midside nodes included) is then taken from the box to map(position): the
 // quadratic cells of a curved body have their midside nodes on it.
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -59,6 +62,38 @@ inline CellGrid cell_grid(CellType type, int nx, int ny, int nz, Vec3 size,
       if (e.mid >= 0) corners[e.mid] = mid(corners[e.a], corners[e.b]);
     g.cells.push_back(std::move(corners));
   };
+  // Lagrange hexahedra: the node at lattice place (I, J, K) of the whole box (p per cell).
+  std::map<std::array<int, 3>, std::int32_t> lattice;
+  const auto lagrange = [&](const std::int32_t(&h)[8], int i, int j, int k) {
+    const int p = t.order;
+    std::vector<std::int32_t> cell(static_cast<std::size_t>(t.nodes));
+    for (int a = 0; a < t.nodes; ++a) {
+      const auto& xi = t.natural[static_cast<std::size_t>(a)];
+      if (a < 8) {
+        cell[a] = h[a];
+        continue;
+      }
+      const std::array<int, 3> place = {
+          p * i + static_cast<int>(std::lround(0.5 * (xi[0] + 1) * p)),
+          p * j + static_cast<int>(std::lround(0.5 * (xi[1] + 1) * p)),
+          p * k + static_cast<int>(std::lround(0.5 * (xi[2] + 1) * p))};
+      const auto it = lattice.find(place);
+      if (it != lattice.end()) {
+        cell[a] = it->second;
+        continue;
+      }
+      Vec3 x{};
+      const auto& corner = topology(CellType::hex8).natural;
+      for (int c = 0; c < 8; ++c)
+        x += g.nodes.position(h[c]) * ((1 + xi[0] * corner[c][0]) * (1 + xi[1] * corner[c][1]) *
+                                       (1 + xi[2] * corner[c][2]) / 8.0);
+      cell[a] = g.nodes.add(static_cast<std::int64_t>(g.nodes.size()) + 1, x);
+      g.on_boundary.push_back(place[0] == 0 || place[1] == 0 || place[2] == 0 ||
+                              place[0] == p * nx || place[1] == p * ny || place[2] == p * nz);
+      lattice.emplace(place, cell[a]);
+    }
+    g.cells.push_back(std::move(cell));
+  };
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i) {
@@ -69,6 +104,10 @@ inline CellGrid cell_grid(CellType type, int nx, int ny, int nz, Vec3 size,
           case CellType::hex8:
           case CellType::hex20:
             add({h, h + 8});
+            break;
+          case CellType::hex27:
+          case CellType::hex64:
+            lagrange(h, i, j, k);
             break;
           case CellType::tet4:
           case CellType::tet10: {

@@ -14,11 +14,18 @@
 namespace abut {
 namespace {
 
-constexpr FaceType kFaceTypes[] = {FaceType::tri3, FaceType::tri6, FaceType::quad4,
-                                   FaceType::quad8};
+constexpr FaceType kFaceTypes[] = {FaceType::tri3,  FaceType::tri6,  FaceType::quad4,
+                                   FaceType::quad8, FaceType::quad9, FaceType::quad16};
 
 // Natural coordinates of the face nodes.
 std::vector<std::array<double, 2>> face_nodes(FaceType t) {
+  const auto lattice = face_lattice(t);  // Lagrange: -1 + 2 s / p
+  if (!lattice.empty()) {
+    const double p = t == FaceType::quad9 ? 2.0 : 3.0;
+    std::vector<std::array<double, 2>> x;
+    for (const auto& st : lattice) x.push_back({-1 + 2 * st[0] / p, -1 + 2 * st[1] / p});
+    return x;
+  }
   if (face_corner_count(t) == 4) {
     std::vector<std::array<double, 2>> x = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
     if (t == FaceType::quad8) x.insert(x.end(), {{0, -1}, {1, 0}, {0, 1}, {-1, 0}});
@@ -34,7 +41,7 @@ TEST(FaceShapeFunctions, KroneckerPartitionOfUnityAndDerivatives) {
     const auto nat = face_nodes(t);
     const int nodes = face_node_count(t);
     ASSERT_EQ(static_cast<int>(nat.size()), nodes);
-    double n[8], dn[8][2];
+    double n[kMaxFaceNodes], dn[kMaxFaceNodes][2];
     for (int b = 0; b < nodes; ++b) {
       face_shape_functions(t, nat[b].data(), n, dn);
       for (int a = 0; a < nodes; ++a) EXPECT_NEAR(n[a], a == b ? 1.0 : 0.0, 1e-15);
@@ -46,7 +53,8 @@ TEST(FaceShapeFunctions, KroneckerPartitionOfUnityAndDerivatives) {
     EXPECT_NEAR(sum, 1.0, 1e-15);
     constexpr double h = 1e-6;
     for (int r = 0; r < 2; ++r) {
-      double xp[2] = {xi[0], xi[1]}, xm[2] = {xi[0], xi[1]}, np[8], nm[8], scratch[8][2];
+      double xp[2] = {xi[0], xi[1]}, xm[2] = {xi[0], xi[1]}, np[kMaxFaceNodes], nm[kMaxFaceNodes],
+             scratch[kMaxFaceNodes][2];
       xp[r] += h;
       xm[r] -= h;
       face_shape_functions(t, xp, np, scratch);
@@ -57,7 +65,7 @@ TEST(FaceShapeFunctions, KroneckerPartitionOfUnityAndDerivatives) {
 }
 
 // int over the unit triangle of xi^a eta^b = a! b! / (a + b + 2)!; over [-1,1]^2 of xi^4 eta^4 =
-// (2/5)^2.
+// (2/5)^2, of xi^8 eta^8 (2/9)^2.
 TEST(FaceShapeFunctions, RulesIntegrateTheirDegreeExactly) {
   const auto integrate = [](FaceType t, int a, int b) {
     double s = 0.0;
@@ -70,20 +78,26 @@ TEST(FaceShapeFunctions, RulesIntegrateTheirDegreeExactly) {
   EXPECT_NEAR(integrate(FaceType::tri6, 2, 2), 4.0 / 720.0, 1e-12);
   EXPECT_NEAR(integrate(FaceType::tri6, 1, 3), 6.0 / 720.0, 1e-12);
   EXPECT_NEAR(integrate(FaceType::quad8, 4, 4), 0.16, 1e-14);
+  EXPECT_NEAR(integrate(FaceType::quad9, 5, 4), 0.0, 1e-14);
+  EXPECT_NEAR(integrate(FaceType::quad16, 8, 8), 4.0 / 81.0, 1e-14);
   EXPECT_NEAR(integrate(FaceType::quad4, 2, 2), 4.0 / 9.0, 1e-15);
 }
 
 // A flat face in the plane z = 0 (nodes counter-clockwise seen from +z, the outside), scaled
-// and sheared, under p: every node's force is -p A share along +z.
+// and sheared, under p: every node's force is -p A share along +z. The Lagrange faces' shares are
+// the products of the Newton-Cotes weights of their edges (Simpson 1/6, 4/6, 1/6; the 3/8 rule
+// 1/8, 3/8, 3/8, 1/8): quad9 1/36, 4/36, 16/36; quad16 1/64, 3/64, 9/64.
 TEST(FacePressure, SharesOfAFlatFace) {
   struct Case {
     FaceType type;
-    double corner, midside;
+    double corner, midside, interior;
   };
-  const Case cases[] = {{FaceType::tri3, 1.0 / 3.0, 0.0},
-                        {FaceType::tri6, 0.0, 1.0 / 3.0},
-                        {FaceType::quad4, 0.25, 0.0},
-                        {FaceType::quad8, -1.0 / 12.0, 1.0 / 3.0}};
+  const Case cases[] = {{FaceType::tri3, 1.0 / 3.0, 0.0, 0.0},
+                        {FaceType::tri6, 0.0, 1.0 / 3.0, 0.0},
+                        {FaceType::quad4, 0.25, 0.0, 0.0},
+                        {FaceType::quad8, -1.0 / 12.0, 1.0 / 3.0, 0.0},
+                        {FaceType::quad9, 1.0 / 36.0, 4.0 / 36.0, 16.0 / 36.0},
+                        {FaceType::quad16, 1.0 / 64.0, 3.0 / 64.0, 9.0 / 64.0}};
   const double p = 2.5;
   for (const Case& c : cases) {
     const auto nat = face_nodes(c.type);
@@ -94,8 +108,11 @@ TEST(FacePressure, SharesOfAFlatFace) {
     std::vector<double> f(x.size());
     face_pressure_forces(c.type, x, p, f);
     for (std::size_t a = 0; a < nat.size(); ++a) {
-      const double share =
-          a < static_cast<std::size_t>(face_corner_count(c.type)) ? c.corner : c.midside;
+      const int corners = face_corner_count(c.type), order = c.type == FaceType::quad16 ? 3 : 2;
+      const auto edge_nodes = static_cast<std::size_t>(corners * (1 + (order - 1)));
+      const double share = a < static_cast<std::size_t>(corners) ? c.corner
+                           : a < edge_nodes                      ? c.midside
+                                                                 : c.interior;
       EXPECT_NEAR(f[3 * a], 0.0, 1e-13);
       EXPECT_NEAR(f[3 * a + 1], 0.0, 1e-13);
       EXPECT_NEAR(f[3 * a + 2], -p * area * share, 1e-13);
@@ -103,10 +120,11 @@ TEST(FacePressure, SharesOfAFlatFace) {
   }
 }
 
-// Curved quadratic faces: the total force is -p times the vector area, computed along the
-// boundary (each edge a parabola through its corners and midside node, 10 Gauss points).
+// Curved quadratic faces (quad9: its centre node off the plane too): the total force is -p times
+// the vector area, computed along the boundary (each edge a parabola through its corners and
+// midside node, 10 Gauss points).
 TEST(FacePressure, TotalOnACurvedFaceIsPressureTimesVectorArea) {
-  for (const FaceType t : {FaceType::tri6, FaceType::quad8}) {
+  for (const FaceType t : {FaceType::tri6, FaceType::quad8, FaceType::quad9}) {
     const auto nat = face_nodes(t);
     std::vector<double> x;
     for (const auto& q : nat) {

@@ -19,8 +19,8 @@
 namespace abut {
 namespace {
 
-constexpr CellType kTypes[] = {CellType::hex8, CellType::hex20, CellType::tet4, CellType::tet10,
-                               CellType::wedge6};
+constexpr CellType kTypes[] = {CellType::hex8,   CellType::hex20, CellType::tet4, CellType::tet10,
+                               CellType::wedge6, CellType::hex27, CellType::hex64};
 constexpr double kE = 210000.0, kNu = 0.3, kRho = 7.8e-9;  // N, mm, s
 
 // The cells of a grid moved off regular (fixed seed), as a block's connectivity.
@@ -119,6 +119,29 @@ TEST(LumpedMass, HrzSharesOfUndistortedCells) {
   }
 }
 
+// The Lagrange hexahedra: N_a^2 = l_i^2 l_j^2 l_k^2, so the HRZ shares are the products of the
+// 1-D shares int l_m^2 / sum: order 2 (nodes -1, 0, 1) 4/15, 16/15, 4/15 of 24/15: 1/6, 2/3, 1/6;
+// order 3 (-1, -1/3, 1/3, 1) 16/105, 27/35, 27/35, 16/105: 8/97, 81/194, 81/194, 8/97 (the
+// polynomials integrated by hand in fractions).
+TEST(LumpedMass, HrzSharesOfLagrangeHexahedra) {
+  const std::vector<double> quadratic = {1.0 / 6, 2.0 / 3, 1.0 / 6},
+                            cubic = {8.0 / 97, 81.0 / 194, 81.0 / 194, 8.0 / 97};
+  for (const auto& [type, w] : {std::pair{CellType::hex27, quadratic}, {CellType::hex64, cubic}}) {
+    SCOPED_TRACE(std::string(topology(type).name));
+    const CellTopology& t = topology(type);
+    std::vector<double> X;
+    for (const auto& xi : t.natural) X.insert(X.end(), {2.0 * xi[0], 3.0 * xi[1], 5.0 * xi[2]});
+    std::vector<double> shares(static_cast<std::size_t>(t.nodes));
+    const double volume = lumped_volume_shares(type, X, shares);
+    for (int a = 0; a < t.nodes; ++a) {
+      double expected = 1.0;
+      for (const double x : t.natural[static_cast<std::size_t>(a)])
+        expected *= w[static_cast<std::size_t>(std::lround(0.5 * (x + 1) * t.order))];
+      EXPECT_NEAR(shares[a] / volume, expected, 1e-14) << "node " << a;
+    }
+  }
+}
+
 TEST(LumpedMass, PositiveAndWholeOnDistortedCells) {
   for (const CellType type : kTypes) {
     SCOPED_TRACE(std::string(topology(type).name));
@@ -197,7 +220,7 @@ TEST(SolidCellBlock, StableStepBoundsTheAssembledMesh) {
     const double omega =
         std::sqrt(largest_eigenvalue(scaled_stiffness(type, g, mass), 3 * g.nodes.size()));
     const double mesh_step = 2.0 / omega;
-    std::cout << topology(type).abaqus << ": block step / mesh step "
+    std::cout << topology(type).name << ": block step / mesh step "
               << block.initial_stable_step() / mesh_step << "\n";
     EXPECT_LE(block.initial_stable_step(), mesh_step * (1.0 + 1e-9));
     EXPECT_GT(block.initial_stable_step(), 0.5 * mesh_step);

@@ -33,7 +33,9 @@ constexpr Rule kRules[] = {{CellType::hex8, Integration::full, "C3D8", 6},
                            {CellType::hex20, Integration::reduced, "C3D20R", 12},
                            {CellType::tet4, Integration::full, "C3D4", 6},
                            {CellType::tet10, Integration::full, "C3D10", 6},
-                           {CellType::wedge6, Integration::full, "C3D6", 6}};
+                           {CellType::wedge6, Integration::full, "C3D6", 6},
+                           {CellType::hex27, Integration::full, "hex27", 6},
+                           {CellType::hex64, Integration::full, "hex64", 6}};
 
 // ---- Shape functions and rules ---------------------------------------------------------------
 
@@ -98,7 +100,14 @@ TEST(ShapeFunctions, RulesIntegrateTheirDegreeExactly) {
   EXPECT_NEAR(
       integrate(CellType::wedge6, Integration::full, [](const double* x) { return x[2] * x[2]; }),
       1.0 / 3.0, 1e-15);
+  EXPECT_NEAR(integrate(CellType::hex27, Integration::full,
+                        [](const double* x) { return std::pow(x[0], 4) * x[1] * x[1]; }),
+              8.0 / 15.0, 1e-14);
+  EXPECT_NEAR(integrate(CellType::hex64, Integration::full,
+                        [](const double* x) { return std::pow(x[0] * x[1], 6) * x[2] * x[2]; }),
+              (2.0 / 7.0) * (2.0 / 7.0) * (2.0 / 3.0), 1e-14);
   EXPECT_TRUE(quadrature(CellType::tet10, Integration::reduced).empty());
+  EXPECT_TRUE(quadrature(CellType::hex64, Integration::reduced).empty());
 }
 
 // ---- Element ---------------------------------------------------------------------------------

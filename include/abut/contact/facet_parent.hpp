@@ -15,7 +15,7 @@ namespace abut {
 struct FacetParent {
   // n[a] = N_a(xi) for a < count, at the face's natural coordinates xi; null: a plain facet.
   using Shape = void (*)(const double xi[2], double* n);
-  static constexpr int kMaxNodes = 8;
+  static constexpr int kMaxNodes = 16;  // a cubic Lagrange face
   Shape shape = nullptr;
   int count = 0;
   std::array<std::int32_t, kMaxNodes> nodes{};

@@ -12,6 +12,9 @@
 //  tet4   N = L0, L1, L2, L3 with L0 = 1 - xi - eta - zeta, L1 = xi, L2 = eta, L3 = zeta
 //  tet10  corners L_a (2 L_a - 1), midside node of edge (a, b) 4 L_a L_b
 //  wedge6 triangle (1 - xi - eta, xi, eta) times (1 - zeta) / 2 (nodes 0-2), (1 + zeta) / 2 (3-5)
+//  hex27, hex64  Lagrange: N_a = l_i(xi) l_j(eta) l_k(zeta) for the node at lattice place
+//         (i, j, k), l_m the 1-D Lagrange polynomial of order p through the equispaced points
+//         -1 + 2m/p (Zienkiewicz et al., section 6.3.1)
 #include <array>
 #include <cstdint>
 #include <span>
@@ -41,6 +44,8 @@ enum class Integration { full, reduced };
 //  tet4   1 point at the centroid, weight 1/6
 //  tet10  4 points at L = a, b, b, b (each corner in turn), a = (5 + 3 sqrt 5) / 20,
 //         b = (5 - sqrt 5) / 20, weights 1/24 (degree 2; Zienkiewicz et al., table 6.3)
+//  hex27  full 3x3x3, hex64 full 4x4x4 Gauss (no reduced rule: 2x2x2 and 3x3x3 would leave
+//         spurious zero-energy modes)
 //  wedge6 6 points: the triangle's 3-point rule (degree 2, at (1/6, 1/6), (2/3, 1/6), (1/6, 2/3),
 //         weights 1/6) on the 2 Gauss levels zeta = -+1/sqrt 3. The 2-point rule (the triangle's
 //         centroid on each level) leaves a spurious zero-energy mode, the two triangles turning
@@ -87,7 +92,8 @@ inline double natural_to_spatial(int nodes, const double (*dn)[3], const double*
 // (0,0), (1,0), (0,1); midside nodes halfway along the edges corner 0-1, 1-2, ... The shape
 // functions are the 2-D members of the families above: bilinear quad4, serendipity quad8
 // (corners (1 + xi xi_a)(1 + eta eta_a)(xi xi_a + eta eta_a - 1) / 4, midsides (1 - xi^2)(1 + eta
-// eta_a) / 2 and likewise), linear tri3, quadratic tri6 (corners L (2L - 1), midsides 4 L_a L_b).
+// eta_a) / 2 and likewise), linear tri3, quadratic tri6 (corners L (2L - 1), midsides 4 L_a L_b),
+// and the Lagrange quad9 and quad16 (l_s(xi) l_t(eta) for the node at face_lattice place (s, t)).
 void face_shape_functions(FaceType type, const double xi[2], double* n, double (*dn)[2]);
 
 struct FacePoint {
@@ -95,9 +101,10 @@ struct FacePoint {
   double weight;
 };
 
-// Rules that integrate a uniform pressure's nodal forces on a curved face exactly (the integrand
-// N_a (x_xi x x_eta) has degree 2p per direction for a face of order p): quad4 2x2 and quad8 3x3
-// Gauss points; tri3 its centroid (weight 1/2); tri6 Dunavant's 6-point rule of degree 4 (D. A.
+// Rules that integrate a uniform pressure's nodal forces on a curved face exactly: on a
+// quadrilateral of order p the integrand N_a (x_xi x x_eta) has degree at most 3p - 1 per
+// direction (N_a p, x_xi x x_eta 2p - 1): quad4 2x2, quad8 and quad9 3x3, quad16 5x5 Gauss
+// points; tri3 its centroid (weight 1/2); tri6 Dunavant's 6-point rule of degree 4 (D. A.
 // Dunavant, "High degree efficient symmetrical Gaussian quadrature rules for the triangle",
 // IJNME 21, 1985, table of degree 4).
 std::span<const FacePoint> face_quadrature(FaceType type);

@@ -20,6 +20,7 @@ constexpr std::string_view kSupportedTypes =
 std::optional<std::pair<CellType, bool>> element_type(const std::string& name) {
   for (const CellType type : kCellTypes) {
     const std::string full(topology(type).abaqus);
+    if (full.empty()) continue;  // no Abaqus name (the Lagrange hexahedra)
     if (name == full) return std::make_pair(type, false);
     if (name == full + "R" && !quadrature(type, Integration::reduced).empty())
       return std::make_pair(type, true);

@@ -16,7 +16,7 @@ StaticHeat::StaticHeat(const Model& model) : model_(model) {
   if (!model.thermal.properties.empty() && !model.mesh.cells.empty())
     throw InputError(model.thermal.properties.front().where,
                      "heat conduction in " +
-                         std::string(topology(model.mesh.cells.front().type).abaqus) +
+                         std::string(element_label(model.mesh.cells.front().type)) +
                          " elements is not supported yet: only 8-node hexahedra and shells "
                          "conduct heat");
   check_thermal_contacts(model);

@@ -82,7 +82,7 @@ void StepLoads::add_external_forces(double tau, std::span<const double> u, bool 
     // The face's nodal forces on its current (NLGEOM) or reference position.
     const SolidRef solid = mesh.solid(static_cast<std::size_t>(r.key / 6));
     const FaceTopology& face = topology(solid.type).faces[static_cast<std::size_t>(r.key % 6)];
-    std::array<double, 24> x{}, nodal{};
+    std::array<double, 3 * kMaxFaceNodes> x{}, nodal{};
     for (int a = 0; a < face.size(); ++a) {
       const auto n = static_cast<std::size_t>(solid.nodes[static_cast<std::size_t>(face.nodes[a])]);
       const Vec3 p0 = mesh.nodes.position(n);
