@@ -78,8 +78,8 @@ void print_info(const abut::Model& model, std::ostream& out) {
   out << fmt::format("units:      {}\n", model.units
                                              ? std::string(abut::unit_system_name(*model.units))
                                              : std::string("not stated (*UNIT_SYSTEM)"));
-  out << fmt::format("mesh:       {} nodes, {} hexahedra, {} shells\n", model.mesh.nodes.size(),
-                     model.mesh.hex_count(), model.mesh.shell_count());
+  out << fmt::format("mesh:       {} nodes, {}, {} shells\n", model.mesh.nodes.size(),
+                     solids_of(model.mesh), model.mesh.shell_count());
   out << fmt::format("time:       end {:.6g}, step scale {}, initial stable step {:.4g} ({})\n",
                      model.time.end_time, model.time.step_scale, sim.initial_time_step(),
                      sim.time_step_limit());
@@ -182,8 +182,8 @@ int main(int argc, char** argv) {
       for (const abut::ContactReport& c : sim.contact_reports())
         for (const std::string& w : c.warnings) std::cerr << "warning: " << w << "\n";
       std::cout << fmt::format(
-          "{}: OK ({} nodes, {} hexahedra, {} shells, {} parts, initial stable step {:.4g})\n",
-          deck, model.mesh.nodes.size(), model.mesh.hex_count(), model.mesh.shell_count(),
+          "{}: OK ({} nodes, {}, {} shells, {} parts, initial stable step {:.4g})\n", deck,
+          model.mesh.nodes.size(), solids_of(model.mesh), model.mesh.shell_count(),
           model.parts.size(), sim.initial_time_step());
       return 0;
     }

@@ -280,7 +280,7 @@ DeckResult DeckReader::finish() {
           static_cast<double>(mesh.nodes.size()) + added.nodes};
       require_memory(total, available_memory(), where);
     };
-    for (std::string& note : refine_and_smooth(mesh, order_changes, smoothings, fits))
+    for (std::string& note : refine_and_smooth(mesh, order_changes, smoothings, fits, p_order_form))
       notes.push_back(std::move(note));
   }
 

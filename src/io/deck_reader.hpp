@@ -19,6 +19,7 @@
 
 #include "abut/io/deck.hpp"
 #include "abut/mesh/generators.hpp"
+#include "abut/mesh/refine.hpp"
 #include "deck_block.hpp"
 #include "deck_parameters.hpp"
 #include "deck_text.hpp"
@@ -285,13 +286,14 @@ class DeckReader {
   std::vector<std::pair<std::int64_t, SourceLocation>> part_set_members;  // (part id, where)
   std::vector<std::pair<std::int64_t, SourceLocation>> geometry_parts;    // *GEOMETRY_PART pids
   std::vector<PendingOrder> orders;
+  POrderForm p_order_form = POrderForm::split;  // *CONTROL_P-ORDER
   std::vector<PendingSmoothing> smoothing;
   std::vector<PendingVelocity> velocities;
   std::vector<PendingMerge> merges;
   std::vector<EntityRef> entity_references;  // entities that must exist
   std::vector<PendingContactKeyword> contact_keywords;
   std::optional<SourceLocation> time_where, units_where, title_where, output_where,
-      bulk_viscosity_where;
+      bulk_viscosity_where, p_order_form_where;
   std::size_t end_line = 0;  // the last line read of the main deck, for what it lacks
 
  private:
@@ -330,6 +332,7 @@ void read_component_box(DeckReader&, Block&);
 void read_component_sphere(DeckReader&, Block&);
 void read_component_cylinder(DeckReader&, Block&);
 void read_change_p_order(DeckReader&, Block&);
+void read_control_p_order(DeckReader&, Block&);
 void read_smooth_mesh(DeckReader&, Block&);
 void read_merge_duplicated_nodes(DeckReader&, Block&);
 void read_mat_elastic(DeckReader&, Block&);

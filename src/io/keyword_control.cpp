@@ -1,4 +1,5 @@
-// *TITLE, *PARAMETER, *PARAMETER_DEFAULT, *UNIT_SYSTEM, *TIME, *OUTPUT, *CONTROL_BULK_VISCOSITY.
+// *TITLE, *PARAMETER, *PARAMETER_DEFAULT, *UNIT_SYSTEM, *TIME, *OUTPUT, *CONTROL_BULK_VISCOSITY,
+// *CONTROL_P-ORDER.
 #include "abut/core/functions.hpp"
 #include "deck_reader.hpp"
 
@@ -132,6 +133,17 @@ void read_control_bulk_viscosity(DeckReader& d, Block& b) {
   r.require(q.quadratic >= 0.0, 0, "expected a quadratic coefficient >= 0 (0: none)");
   q.linear = r.number_or(1, q.linear);
   r.require(q.linear >= 0.0, 1, "expected a linear coefficient >= 0 (0: none)");
+}
+
+// *CONTROL_P-ORDER (abut's own): what an order raised by *CHANGE_P-ORDER becomes, LAGRANGE (one
+// Lagrange hexahedron of order p, IMPETUS's elements) or SPLIT (p x p x p one-point hexahedra on
+// the same nodes).
+void read_control_p_order(DeckReader& d, Block& b) {
+  once_per_deck(d.p_order_form_where, b, "*CONTROL_P-ORDER");
+  const Row r = b.row({"form"});
+  const std::string form = r.word(0);
+  r.require(form == "LAGRANGE" || form == "SPLIT", 0, "expected LAGRANGE or SPLIT");
+  d.p_order_form = form == "LAGRANGE" ? POrderForm::lagrange : POrderForm::split;
 }
 
 }  // namespace abut::deck

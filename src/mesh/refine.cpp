@@ -1,5 +1,6 @@
-// *CHANGE_P-ORDER and *SMOOTH_MESH: order-p hexes are represented by splitting each selected
-// hex into p x p x p hexes (see refine.hpp). New node positions, by priority:
+// *CHANGE_P-ORDER and *SMOOTH_MESH: an order-p hex becomes a Lagrange hexahedron on the
+// (p + 1)^3 lattice of its nodes, or p x p x p linear hexes on the same lattice (see refine.hpp).
+// New node positions, by priority:
 //  1. hexes of generated components: the component's exact map at fractional grid coordinates;
 //  2. other hexes: the trilinear map plus the bulge of their curved edges (transfinite edge
 //     blending), where edges are curved only on a *SMOOTH_MESH surface (surface_smoothing.hpp).
@@ -160,10 +161,12 @@ Vec3 blended_point(const HexPoints& x, const std::array<Vec3, 12>& bulge, bool c
   return p;
 }
 
-// Replaces every hex of order p > 1 by its p x p x p children (same part, new ids after the
-// largest id). Existing nodes of refined hexes join the merger so the lattices reuse them.
-void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& faces,
-                 const std::unordered_map<std::uint64_t, Vec3>& curvature) {
+// Places the (p + 1)^3 lattice nodes of every hex of order p > 1 and replaces the hex by one
+// Lagrange hexahedron on them (POrderForm::lagrange: hex27, hex64, same id and part) or by its
+// p x p x p children (split: same part, new ids after the largest id). Existing nodes of refined
+// hexes join the merger so the lattices reuse them.
+void raise_order(Mesh& mesh, const std::vector<int>& order, const FaceUses& faces,
+                 const std::unordered_map<std::uint64_t, Vec3>& curvature, POrderForm form) {
   const std::size_t hex_count = mesh.hex_count();
   Vec3 lo = mesh.nodes.size() > 0 ? mesh.nodes.position(0) : Vec3{};
   Vec3 hi = lo;
@@ -211,7 +214,8 @@ void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
 
   const std::size_t nodes_before = mesh.nodes.size();
   std::int64_t next_node = mesh.next_node_id(), next_hex = mesh.next_hex_id();
-  Mesh out;  // collects the new hex list; nodes are appended to mesh.nodes directly
+  Mesh out;    // collects the new hex list; nodes are appended to mesh.nodes directly
+  Mesh cells;  // the Lagrange hexahedra
   for (std::size_t h = 0; h < hex_count; ++h) {
     const int p = order[h];
     if (p == 1) {
@@ -266,6 +270,16 @@ void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
         }
       }
     }
+    if (form == POrderForm::lagrange) {  // the lattice in the cell's node order
+      const CellType type = p == 2 ? CellType::hex27 : CellType::hex64;
+      std::vector<std::int32_t> nodes;
+      for (const auto& xi : topology(type).natural)
+        nodes.push_back(at(static_cast<int>(std::lround(0.5 * (xi[0] + 1) * p)),
+                           static_cast<int>(std::lround(0.5 * (xi[1] + 1) * p)),
+                           static_cast<int>(std::lround(0.5 * (xi[2] + 1) * p))));
+      cells.add_cell(type, mesh.hex_id[h], mesh.hex_part[h], nodes);
+      continue;
+    }
     for (int k = 0; k < p; ++k) {
       for (int j = 0; j < p; ++j) {
         for (int i = 0; i < p; ++i) {
@@ -290,6 +304,9 @@ void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
   mesh.hex_shape = std::move(out.hex_shape);
   mesh.hex_cell = std::move(out.hex_cell);
   mesh.hex_element = std::move(out.hex_element);
+  for (const CellBlock& block : cells.cells)
+    for (std::size_t c = 0; c < block.size(); ++c)
+      mesh.add_cell(block.type, block.id[c], block.part[c], block.cell(c));
   if (new_nodes != expected_new_nodes) {
     throw InputError("*CHANGE_P-ORDER: refinement produced " + std::to_string(new_nodes) +
                      " new nodes where a conforming mesh has " +
@@ -303,7 +320,7 @@ void split_hexes(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
 
 std::vector<std::string> refine_and_smooth(Mesh& mesh, const std::vector<OrderChange>& orders,
                                            const std::vector<SurfaceSmoothing>& smoothing,
-                                           const RefinementCheck& check) {
+                                           const RefinementCheck& check, POrderForm form) {
   const std::size_t hex_count = mesh.hex_count();
   mesh.hex_shape.resize(hex_count, -1);
   mesh.hex_cell.resize(hex_count);
@@ -401,7 +418,7 @@ std::vector<std::string> refine_and_smooth(Mesh& mesh, const std::vector<OrderCh
   // 3. Split. A count of new nodes that does not add up is a fault of the refinement as a whole:
   // it is reported at the first *CHANGE_P-ORDER line.
   try {
-    split_hexes(mesh, order, faces, curvature);
+    raise_order(mesh, order, faces, curvature, form);
   } catch (const InputError& e) {
     if (!e.where().file.empty() || orders.empty() || orders.front().where.file.empty()) throw;
     std::string message = e.message();
@@ -422,6 +439,10 @@ std::vector<std::string> refine_and_smooth(Mesh& mesh, const std::vector<OrderCh
         note += "no hex centroid inside the *CHANGE_P-ORDER region; nothing changed";
       } else if (change.order == 1) {
         note += std::to_string(chosen.size()) + " hexes stay linear (order 1)";
+      } else if (form == POrderForm::lagrange) {
+        note += std::to_string(split) + " hexes made " +
+                std::to_string((change.order + 1) * (change.order + 1) * (change.order + 1)) +
+                "-node Lagrange hexahedra (order " + std::to_string(change.order) + ")";
       } else {
         note += std::to_string(split) + " hexes split " + split_name(change.order) + " into " +
                 std::to_string(

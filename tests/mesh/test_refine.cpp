@@ -2,11 +2,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <numbers>
 
 #include "abut/core/error.hpp"
 #include "abut/mesh/generators.hpp"
 #include "abut/mesh/refine.hpp"
+#include "abut/mesh/skin.hpp"
 #include "mesh_checks.hpp"
 
 namespace abut {
@@ -117,6 +119,42 @@ TEST(Refine, SphereOrder3PutsNewNodesOnTheSphere) {
   const double fine_volume = total_volume(seed_sphere(9));
   EXPECT_NEAR(total_volume(mesh), fine_volume, 1e-12 * exact);
   EXPECT_NEAR(coarse_deficit / (exact - total_volume(mesh)), 9.0, 0.9);
+}
+
+// The Lagrange form takes the same lattice nodes as the split and makes one hex27 / hex64 of each
+// hex, with its id and part. Its volume interpolates the sphere with polynomials of order p
+// through the nodes (an error of O(h^(p+1)) against the O(h^2) of the split's flat facets on the
+// same nodes): closer to 4/3 pi r^3 than the split by a factor above 2 (order 2) and 10 (order 3).
+TEST(Refine, LagrangeFormMakesOneHexahedronOfOrderPOnTheSameNodes) {
+  const double exact = 4.0 / 3.0 * kPi * 1e-6;
+  for (const int order : {2, 3}) {
+    SCOPED_TRACE(order);
+    Mesh split = seed_sphere(3), lagrange = seed_sphere(3);
+    refine_and_smooth(split, {change(1, order)}, {});
+    const auto notes =
+        refine_and_smooth(lagrange, {change(1, order)}, {}, {}, POrderForm::lagrange);
+    EXPECT_EQ(lagrange.hex_count(), 0u);
+    ASSERT_EQ(lagrange.cells.size(), 1u);
+    const CellBlock& block = lagrange.cells[0];
+    EXPECT_EQ(block.type, order == 2 ? CellType::hex27 : CellType::hex64);
+    ASSERT_EQ(block.size(), 135u);
+    EXPECT_EQ(block.id.front(), 1);
+    EXPECT_EQ(block.id.back(), 135);
+    for (std::int64_t p : block.part) EXPECT_EQ(p, 1);
+    EXPECT_EQ(lagrange.nodes.size(), split.nodes.size());
+    for (std::size_t n = 0; n < split.nodes.size(); ++n)
+      EXPECT_EQ(norm(lagrange.nodes.position(n) - split.nodes.position(n)), 0.0);
+    double volume = 0.0;
+    for (std::size_t e = 0; e < lagrange.solid_count(); ++e) volume += solid_volume(lagrange, e);
+    const double split_error = std::abs(exact - total_volume(split));
+    std::cout << "order " << order << ": volume error, split " << split_error / exact
+              << ", Lagrange " << (exact - volume) / exact << "\n";
+    EXPECT_GT(split_error / std::abs(exact - volume), order == 2 ? 2.0 : 10.0);
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_THAT(notes[0], HasSubstr("135 hexes made " +
+                                    std::to_string((order + 1) * (order + 1) * (order + 1)) +
+                                    "-node Lagrange hexahedra"));
+  }
 }
 
 TEST(Refine, RegionSelectsHexesByCentroid) {

@@ -1,8 +1,11 @@
 #pragma once
-// *CHANGE_P-ORDER and *SMOOTH_MESH. Until true higher-order elements exist, raising the order
-// of a hex to p splits it into p x p x p hexes (the nodal resolution of an order-p element).
-// New nodes on the exterior follow the exact shape of generated components and, where
-// *SMOOTH_MESH applies, a smooth surface through the original exterior nodes.
+// *CHANGE_P-ORDER and *SMOOTH_MESH. Raising the order of a hex to p places the nodes of the
+// equispaced (p + 1)^3 lattice in it and makes it one Lagrange hexahedron of order p on them
+// (hex27, hex64 of mesh/topology.hpp: IMPETUS's higher-order elements), or splits it into
+// p x p x p linear hexes on the same nodes (the nodal resolution of an order-p element, with the
+// one-point hexahedra of the explicit solver). New nodes on the exterior follow the exact shape
+// of generated components and, where *SMOOTH_MESH applies, a smooth surface through the
+// original exterior nodes.
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -37,11 +40,15 @@ struct SurfaceSmoothing {     // *SMOOTH_MESH, or the alpha_max of *PART, resolv
 // would not fit in memory (the deck reader's memory budget).
 using RefinementCheck = std::function<void(const MeshSize& added, const SourceLocation& where)>;
 
+enum class POrderForm { lagrange, split };
+
 // Applies all smoothing and order changes of the deck to the mesh (node and hex ids of new
 // entities continue after the largest existing ones). Returns one plain-English note per
-// action for the user (e.g. "part 1: 189 hexes split 3x3x3 into 5103 (order 3 ...)").
+// action for the user (e.g. "part 1: 189 hexes split 3x3x3 into 5103 (order 3 ...)"). A
+// Lagrange hexahedron keeps its hex's id and part.
 std::vector<std::string> refine_and_smooth(Mesh& mesh, const std::vector<OrderChange>& orders,
                                            const std::vector<SurfaceSmoothing>& smoothing,
-                                           const RefinementCheck& check = {});
+                                           const RefinementCheck& check = {},
+                                           POrderForm form = POrderForm::split);
 
 }  // namespace abut
