@@ -48,11 +48,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <map>
 #include <numbers>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -113,21 +116,86 @@ void add_block(Mesh& mesh, std::int64_t part, const std::vector<double>& xs,
                     at(i + 1, j + 1, 0), at(i + 1, j + 1, 1), at(i, j + 1, 1)});
 }
 
+// The same mapped block as cells of `type` (hex20, hex27 or tet10) of twice the size: each cell
+// spans two columns and two rows of (xs, f), whose in-between values are its lattice of edge,
+// face and centre nodes (so curved edges follow bottom(x)); a tet10 is one of the 6 tetrahedra
+// around the diagonal 0-6 of such a cell, its midside nodes on that lattice too. Only the nodes
+// the cells use are made. Returns, per cell, whether each node lies on the bottom (lattice row 0)
+// through `on_bottom` (indexed by node).
+template <class Bottom, class Top>
+void add_cells(Mesh& mesh, std::int64_t part, CellType type, const std::vector<double>& xs,
+               const std::vector<double>& f, Bottom bottom, Top top,
+               std::vector<std::uint8_t>& on_bottom) {
+  const std::size_t nx = xs.size(), nz = f.size();  // odd: 2 cells' lattice + 1
+  std::map<std::array<std::size_t, 3>, std::int32_t> made;
+  const auto node = [&](std::size_t i, std::size_t j, std::size_t k) {
+    const auto it = made.find({i, j, k});
+    if (it != made.end()) return it->second;
+    const double zb = bottom(xs[i]), zt = top(xs[i]);
+    const std::int32_t n = mesh.nodes.add(
+        mesh.next_node_id(), {xs[i], 0.5 * static_cast<double>(k) * kT, zb + f[j] * (zt - zb)});
+    on_bottom.resize(mesh.nodes.size(), 0);
+    on_bottom[static_cast<std::size_t>(n)] = j == 0;
+    made.emplace(std::array<std::size_t, 3>{i, j, k}, n);
+    return n;
+  };
+  // The cell's natural (xi, eta, zeta) run along x, y, z: lattice (2i + xi + 1, 2j + zeta + 1,
+  // eta + 1).
+  const auto lattice = [](double xi) { return static_cast<std::size_t>(std::lround(xi + 1.0)); };
+  for (std::size_t i = 0; i + 2 < nx; i += 2)
+    for (std::size_t j = 0; j + 2 < nz; j += 2) {
+      const CellTopology& hex = topology(type == CellType::tet10 ? CellType::hex27 : type);
+      std::vector<std::array<std::size_t, 3>> place;
+      for (const auto& xi : hex.natural)
+        place.push_back({i + lattice(xi[0]), j + lattice(xi[2]), lattice(xi[1])});
+      if (type != CellType::tet10) {
+        std::vector<std::int32_t> cell;
+        for (const auto& q : place) cell.push_back(node(q[0], q[1], q[2]));
+        mesh.add_cell(type, 1000000 + static_cast<std::int64_t>(mesh.solid_count()), part, cell);
+        continue;
+      }
+      constexpr int kTets[6][4] = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6},
+                                   {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
+      for (const auto& tet : kTets) {
+        std::array<std::array<std::size_t, 3>, 4> c = {place[tet[0]], place[tet[1]], place[tet[2]],
+                                                       place[tet[3]]};
+        const auto at = [&](int a) { return mesh.nodes.position(node(c[a][0], c[a][1], c[a][2])); };
+        if (dot(cross(at(1) - at(0), at(2) - at(0)), at(3) - at(0)) < 0.0) std::swap(c[1], c[2]);
+        std::vector<std::int32_t> cell;
+        for (const auto& q : c) cell.push_back(node(q[0], q[1], q[2]));
+        for (const EdgeTopology& e : topology(CellType::tet10).edges)
+          cell.push_back(node((c[e.a][0] + c[e.b][0]) / 2, (c[e.a][1] + c[e.b][1]) / 2,
+                              (c[e.a][2] + c[e.b][2]) / 2));
+        mesh.add_cell(CellType::tet10, 1000000 + static_cast<std::int64_t>(mesh.solid_count()),
+                      part, cell);
+      }
+    }
+}
+
 struct HertzModel {
   Model model;
   std::vector<std::int32_t> top;  // the driven nodes of the cylinder
 };
 
-HertzModel cylinder_on_plane(Discretisation discretisation, double penalty) {
+HertzModel cylinder_on_plane(Discretisation discretisation, double penalty,
+                             CellType type = CellType::hex8) {
   HertzModel hm;
   Model& m = hm.model;
-  // Part 1: the cylinder, fine at its bottom.
-  const std::vector<double> x1 = graded(kH1, kFine, kGrowth, kWidth);
+  // Part 1: the cylinder, fine at its bottom. Quadratic cells span two of the linear spacings, so
+  // that the nodes are as far apart as the hexahedra's (an odd count of positions: cells of two).
+  std::vector<double> x1 = graded(kH1, kFine, kGrowth, kWidth);
   std::vector<double> f1 = graded(kH1, kFine, kGrowth, kHeight);
   for (double& v : f1) v /= kHeight;
-  add_block(
-      m.mesh, 1, x1, f1, [](double x) { return kR - std::sqrt(kR * kR - x * x); },
-      [](double) { return kHeight; });
+  const auto circle = [](double x) { return kR - std::sqrt(kR * kR - x * x); };
+  std::vector<std::uint8_t> on_bottom;
+  if (type == CellType::hex8) {
+    add_block(m.mesh, 1, x1, f1, circle, [](double) { return kHeight; });
+  } else {
+    for (auto* s : {&x1, &f1})
+      if (s->size() % 2 == 0) s->erase(s->end() - 2);  // merge the last two spacings
+    add_cells(
+        m.mesh, 1, type, x1, f1, circle, [](double) { return kHeight; }, on_bottom);
+  }
   const std::size_t hexes1 = m.mesh.hex_count(), nodes1 = m.mesh.nodes.size();
   // Part 2: the plane, fine at its top.
   const std::vector<double> x2 = graded(kH2, kFine, kGrowth, kWidth);
@@ -168,8 +236,22 @@ HertzModel cylinder_on_plane(Discretisation discretisation, double penalty) {
   bottom.id = 1;
   top.id = 2;
   const std::size_t rows1 = f1.size() - 1, rows2 = f2.size() - 1;
-  for (std::size_t i = 0; i + 1 < x1.size(); ++i)
-    bottom.faces.push_back({static_cast<std::int32_t>(i * rows1), 0});
+  if (type == CellType::hex8) {
+    for (std::size_t i = 0; i + 1 < x1.size(); ++i)
+      bottom.faces.push_back({static_cast<std::int32_t>(i * rows1), 0});
+  } else {  // the faces whose nodes all lie on the bottom; cells follow the plane's hexes
+    const CellBlock& cells = m.mesh.cells.at(0);
+    for (std::size_t c = 0; c < cells.size(); ++c)
+      for (std::size_t k = 0; k < topology(cells.type).faces.size(); ++k) {
+        const FaceTopology& face = topology(cells.type).faces[k];
+        bool all = true;
+        for (int a = 0; a < face.size(); ++a)
+          all = all && on_bottom[static_cast<std::size_t>(cells.cell(c)[face.nodes[a]])];
+        if (all)
+          bottom.faces.push_back(
+              {static_cast<std::int32_t>(m.mesh.hex_count() + c), static_cast<std::int8_t>(k)});
+      }
+  }
   for (std::size_t i = 0; i + 1 < x2.size(); ++i)
     top.faces.push_back({static_cast<std::int32_t>(hexes1 + i * rows2 + rows2 - 1), 1});
   m.face_sets.push_back(bottom);
@@ -189,9 +271,10 @@ HertzModel cylinder_on_plane(Discretisation discretisation, double penalty) {
 
 // `edge`: the pressure is held to the ellipse at the points farther than this inside the Hertz
 // edge.
-void check_hertz(Discretisation discretisation, double penalty, double edge) {
+void check_hertz(Discretisation discretisation, double penalty, double edge,
+                 CellType type = CellType::hex8, double tolerance = 0.03) {
   const auto start = std::chrono::steady_clock::now();
-  const HertzModel hm = cylinder_on_plane(discretisation, penalty);
+  const HertzModel hm = cylinder_on_plane(discretisation, penalty, type);
   StaticControls controls;  // far below the defaults: the discretisation is measured
   controls.force_tolerance = 1e-8;
   controls.displacement_tolerance = 1e-6;
@@ -232,9 +315,10 @@ void check_hertz(Discretisation discretisation, double penalty, double edge) {
   const double contact = 2.0 * s.contacts()[0].total_force().z / kT;
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::cout << (discretisation == Discretisation::SurfaceToSurface ? "S2S" : "N2S") << ": "
-            << hm.model.mesh.hex_count() << " hexes, " << s.statistics().equations << " equations, "
-            << s.statistics().iterations << " iterations, " << seconds << " s\n"
+  std::cout << (discretisation == Discretisation::SurfaceToSurface ? "S2S" : "N2S") << " "
+            << topology(type).name << ": " << hm.model.mesh.solid_count() << " solids, "
+            << s.statistics().equations << " equations, " << s.statistics().iterations
+            << " iterations, " << seconds << " s\n"
             << "  P = " << load << " N/mm (contact force " << contact << "), Hertz b = " << b
             << " mm (b/R = " << b / kR << "), p0 = " << p0 << " MPa\n"
             << "  half-width (fit) " << b_fit << " (" << 100.0 * (b_fit / b - 1.0)
@@ -243,10 +327,13 @@ void check_hertz(Discretisation discretisation, double penalty, double edge) {
             << "  last point with pressure at " << extent << " (" << 100.0 * (extent / b - 1.0)
             << "%), worst interior pressure error " << 100.0 * profile / p0 << "% of p0\n";
   EXPECT_NEAR(contact, load, 1e-6 * load);
-  EXPECT_NEAR(b_fit, b, 0.03 * b);
-  EXPECT_NEAR(peak, p0, 0.03 * p0);
-  EXPECT_NEAR(p0_fit, p0, 0.03 * p0);
-  EXPECT_LT(profile, 0.03 * p0);
+  EXPECT_NEAR(b_fit, b, tolerance * b);
+  EXPECT_NEAR(peak, p0, tolerance * p0);
+  EXPECT_NEAR(p0_fit, p0, tolerance * p0);
+  // The point-wise profile is held for the linear hexahedra only (see the quadratic cells' test).
+  if (type == CellType::hex8) {
+    EXPECT_LT(profile, 0.03 * p0);
+  }
   EXPECT_NEAR(extent, b, 2.0 * kH1);  // the points resolve the edge to an element or two
 }
 
@@ -265,6 +352,23 @@ TEST(StaticHertz, CylinderOnPlaneNodeToSurface) {
 // penalty of CalculiX's advice the profile holds to 3% up to two elements from the edge.
 TEST(StaticHertz, CylinderOnPlaneSurfaceToSurfaceSoftPenalty) {
   check_hertz(Discretisation::SurfaceToSurface, 10.0 * kE / kH1, 2.0 * kH1);
+}
+
+// The cylinder of quadratic and Lagrange cells, each two of the linear spacings wide (the same
+// node spacing h1 = 0.1 at the contact): faces curved through their midside nodes on the
+// circle, the contact on their true faces (curved_faces.hpp, 4 x 4 facets per face). The issue's
+// bound for these cells, 2% on the contact half-width and the peak pressure, holds (2026-12-04:
+// b +0.74 / +0.81 / +1.03%, peak +0.42 / +0.42 / +0.69% for hex20 / hex27 / tet10). The point
+// pressures ripple more than the linear hexahedra's: 3.1 / 3.3 / 9.1% of p0 at worst more than
+// three elements inside the edge, which is not claimed. Node-to-surface is not claimed for these
+// cells either: its points are the corners of the 4 x 4 facets of each face, 25 constraints on a
+// face of 8 to 9 nodes, and with this penalty their pressures alternate by up to +-35% about the
+// ellipse (peak +21%, fit p0 -2.3%, though b is within 0.2% and the force is exact).
+TEST(StaticHertz, QuadraticCylinderOnPlaneSurfaceToSurface) {
+  for (const CellType type : {CellType::hex20, CellType::hex27, CellType::tet10}) {
+    SCOPED_TRACE(std::string(topology(type).name));
+    check_hertz(Discretisation::SurfaceToSurface, 100.0 * kE / kH1, 3.0 * kH1, type, 0.02);
+  }
 }
 
 }  // namespace
