@@ -4,8 +4,9 @@
 //  1. hexes of generated components: the component's exact map at fractional grid coordinates;
 //  2. other hexes: the trilinear map plus the bulge of their curved edges (transfinite edge
 //     blending), where edges are curved only on a *SMOOTH_MESH surface (surface_smoothing.hpp).
-// Nodes shared by neighbouring hexes are merged by position (tolerance relative to model size);
-// a count check then proves the refined mesh is conforming.
+// Nodes shared by neighbouring hexes are found by their place between shared corner nodes (not
+// by position, so bodies that only touch stay apart); a count check then proves the refined mesh
+// is conforming.
 #include "abut/mesh/refine.hpp"
 
 #include <algorithm>
@@ -14,13 +15,13 @@
 #include <cstddef>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "abut/core/error.hpp"
 #include "mesh/hex_geometry.hpp"
-#include "mesh/node_merger.hpp"
 #include "mesh/surface_smoothing.hpp"
 
 namespace abut {
@@ -163,37 +164,21 @@ Vec3 blended_point(const HexPoints& x, const std::array<Vec3, 12>& bulge, bool c
 
 // Places the (p + 1)^3 lattice nodes of every hex of order p > 1 and replaces the hex by one
 // Lagrange hexahedron on them (POrderForm::lagrange: hex27, hex64, same id and part) or by its
-// p x p x p children (split: same part, new ids after the largest id). Existing nodes of refined
-// hexes join the merger so the lattices reuse them.
+// p x p x p children (split: same part, new ids after the largest id). A new node is shared by
+// the hexes whose lattices hold it, found by where it lies between the hex's corner nodes, not by
+// its position: lattice point (i, j, k) of a hex has the trilinear weights prod (i or p - i) on
+// its corners; the corners with non-zero weight (2 on an edge, 4 on a face, 8 inside) and their
+// weights are the same from every hex around it (same order p: check_conformity), and two bodies
+// that only touch share no corner node, so they stay apart.
 void raise_order(Mesh& mesh, const std::vector<int>& order, const FaceUses& faces,
                  const std::unordered_map<std::uint64_t, Vec3>& curvature, POrderForm form) {
   const std::size_t hex_count = mesh.hex_count();
-  Vec3 lo = mesh.nodes.size() > 0 ? mesh.nodes.position(0) : Vec3{};
-  Vec3 hi = lo;
-  for (std::size_t n = 0; n < mesh.nodes.size(); ++n) {
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = std::min(lo[a], mesh.nodes.position(n)[a]);
-      hi[a] = std::max(hi[a], mesh.nodes.position(n)[a]);
-    }
-  }
-  // New nodes merge within a fraction of the child edge (merge_tolerance): the model's extent
-  // says nothing about the spacing of a slender or far-away mesh.
-  Vec3 farthest;
-  for (int a = 0; a < 3; ++a) farthest[a] = std::max(std::fabs(lo[a]), std::fabs(hi[a]));
-  detail::NodeMerger merger(detail::largest_merge_tolerance(norm(farthest), norm(hi - lo)));
-  std::vector<char> registered(mesh.nodes.size(), 0);
   std::size_t expected_new_nodes = 0, refined_hexes = 0;
   for (std::size_t h = 0; h < hex_count; ++h) {
     if (order[h] == 1) continue;
     ++refined_hexes;
     expected_new_nodes +=
         static_cast<std::size_t>((order[h] - 1) * (order[h] - 1) * (order[h] - 1));
-    for (std::int32_t n : mesh.hexes[h]) {
-      if (!registered[static_cast<std::size_t>(n)]) {
-        registered[static_cast<std::size_t>(n)] = 1;
-        merger.insert(n, mesh.nodes.position(static_cast<std::size_t>(n)));
-      }
-    }
   }
   if (refined_hexes == 0) return;
   {  // Each distinct edge and face of a refined hex owns (p-1) and (p-1)^2 new nodes.
@@ -214,6 +199,9 @@ void raise_order(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
 
   const std::size_t nodes_before = mesh.nodes.size();
   std::int64_t next_node = mesh.next_node_id(), next_hex = mesh.next_hex_id();
+  // Sorted (corner node, weight) pairs, weights of a repeated node summed: the node they place.
+  using Place = std::vector<std::pair<std::int32_t, int>>;
+  std::map<Place, std::int32_t> placed;
   Mesh out;    // collects the new hex list; nodes are appended to mesh.nodes directly
   Mesh cells;  // the Lagrange hexahedra
   for (std::size_t h = 0; h < hex_count; ++h) {
@@ -239,12 +227,6 @@ void raise_order(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
         curved = true;
       }
     }
-    double shortest_edge = std::numeric_limits<double>::infinity();
-    for (const auto& e : kHexEdges) {
-      const double length = norm(x[e[1]] - x[e[0]]);
-      if (length > 0.0) shortest_edge = std::min(shortest_edge, length);
-    }
-    if (!std::isfinite(shortest_edge)) shortest_edge = 0.0;
     const int m = p + 1;
     std::vector<std::int32_t> lattice(static_cast<std::size_t>(m * m * m));
     auto at = [&](int i, int j, int k) -> std::int32_t& {
@@ -265,8 +247,28 @@ void raise_order(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
               shape >= 0 ? shape_point(mesh.shapes[static_cast<std::size_t>(shape)], cell.block,
                                        cell.lo + cell.size * Vec3{s[0], s[1], s[2]})
                          : blended_point(x, bulge, curved, s);
-          at(i, j, k) = merger.find_or_add(mesh.nodes, point, next_node,
-                                           detail::merge_tolerance(point, shortest_edge / p));
+          Place place;
+          for (int c = 0; c < 8; ++c) {
+            const int* at_corner = kHexCorner[c];
+            const int weight = (at_corner[0] ? i : p - i) * (at_corner[1] ? j : p - j) *
+                               (at_corner[2] ? k : p - k);
+            if (weight > 0) place.emplace_back(mesh.hexes[h][c], weight);
+          }
+          std::sort(place.begin(), place.end());
+          Place merged;
+          for (const auto& [node, weight] : place) {
+            if (!merged.empty() && merged.back().first == node)
+              merged.back().second += weight;
+            else
+              merged.emplace_back(node, weight);
+          }
+          const auto found = placed.find(merged);
+          if (found != placed.end()) {
+            at(i, j, k) = found->second;
+          } else {
+            at(i, j, k) = mesh.nodes.add(next_node++, point);
+            placed.emplace(std::move(merged), at(i, j, k));
+          }
         }
       }
     }

@@ -157,6 +157,29 @@ TEST(Refine, LagrangeFormMakesOneHexahedronOfOrderPOnTheSameNodes) {
   }
 }
 
+// Two generated boxes that touch along a face without sharing nodes (a punch standing on a base,
+// examples/static_block_press.k) stay two bodies: their new nodes on the touching faces coincide
+// in position but not in the corners they lie between. (Merging them by position made the node
+// count disagree with a conforming mesh and refused the deck.)
+TEST(Refine, TouchingBodiesStayApart) {
+  Mesh mesh = seed_box(1);  // 2 x 2 x 1 hexes, z in [0, 0.01]
+  BoxComponent top;
+  top.part_id = 2;
+  top.nx = 2, top.ny = 2, top.nz = 1;
+  top.corner1 = {-0.03, -0.03, 0.01};
+  top.corner2 = {0.03, 0.03, 0.02};
+  generate_box(mesh, top);
+  ASSERT_EQ(mesh.nodes.size(), 2u * 18u);
+  for (const POrderForm form : {POrderForm::split, POrderForm::lagrange}) {
+    Mesh refined = mesh;
+    OrderChange both;
+    both.parts = {1, 2};
+    both.order = 3;
+    refine_and_smooth(refined, {both}, {}, {}, form);
+    EXPECT_EQ(refined.nodes.size(), 2u * 7u * 7u * 4u);  // two 6 x 6 x 3 lattices, none shared
+  }
+}
+
 TEST(Refine, RegionSelectsHexesByCentroid) {
   Mesh a = seed_box(1), b = seed_box(2);
   for (double& x : b.nodes.x) x += 1.0;  // two separate boxes, no shared nodes
