@@ -15,6 +15,7 @@
 #include "abut/element/solid_full.hpp"
 #include "abut/material/elastic.hpp"
 #include "cell_grid.hpp"
+#include "dense_checks.hpp"
 
 namespace abut {
 namespace {
@@ -52,40 +53,10 @@ std::vector<double> coordinates(const test::CellGrid& g, std::size_t cell) {
   return X;
 }
 
-// The largest eigenvalue of a dense symmetric matrix by cyclic Jacobi rotations (Golub & Van
-// Loan, Matrix Computations, section 8.5): an independent check of the Householder reduction and
-// bisection.
-double largest_eigenvalue(std::vector<double> a, std::size_t n) {
-  for (int sweep = 0; sweep < 100; ++sweep) {
-    double off = 0.0, all = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = 0; j < n; ++j) {
-        all += a[i * n + j] * a[i * n + j];
-        if (i != j) off += a[i * n + j] * a[i * n + j];
-      }
-    if (off <= 1e-30 * all) break;
-    for (std::size_t p = 0; p < n; ++p)
-      for (std::size_t q = p + 1; q < n; ++q) {
-        if (a[p * n + q] == 0.0) continue;
-        const double theta = (a[q * n + q] - a[p * n + p]) / (2.0 * a[p * n + q]);
-        const double t =
-            (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1));
-        const double c = 1.0 / std::sqrt(t * t + 1), s = t * c;
-        for (std::size_t k = 0; k < n; ++k) {  // columns p, q
-          const double akp = a[k * n + p], akq = a[k * n + q];
-          a[k * n + p] = c * akp - s * akq;
-          a[k * n + q] = s * akp + c * akq;
-        }
-        for (std::size_t k = 0; k < n; ++k) {  // rows p, q
-          const double apk = a[p * n + k], aqk = a[q * n + k];
-          a[p * n + k] = c * apk - s * aqk;
-          a[q * n + k] = s * apk + c * aqk;
-        }
-      }
-  }
-  double largest = 0.0;
-  for (std::size_t i = 0; i < n; ++i) largest = std::max(largest, a[i * n + i]);
-  return largest;
+// The largest eigenvalue of a dense symmetric matrix by cyclic Jacobi rotations
+// (hex8_fixtures.hpp): an independent check of the Householder reduction and bisection.
+double largest_eigenvalue(const std::vector<double>& a, std::size_t n) {
+  return test::jacobi_eigenvalues(a, static_cast<int>(n)).back();
 }
 
 // ---- Lumped mass -----------------------------------------------------------------------------

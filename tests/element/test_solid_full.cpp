@@ -12,6 +12,7 @@
 #include "abut/element/solid_full.hpp"
 #include "abut/mesh/shape_functions.hpp"
 #include "cell_grid.hpp"
+#include "dense_checks.hpp"
 
 namespace abut {
 namespace {
@@ -124,30 +125,6 @@ void evaluate(const Rule& rule, const Nodes& nodes, const std::vector<std::int32
   solid_full_with(in, kSteel, out);
 }
 
-// Solves A x = b (dense, partial pivoting); A is n x n row-major.
-std::vector<double> solve(std::vector<double> a, std::vector<double> b) {
-  const std::size_t n = b.size();
-  for (std::size_t c = 0; c < n; ++c) {
-    std::size_t p = c;
-    for (std::size_t r = c + 1; r < n; ++r)
-      if (std::abs(a[r * n + c]) > std::abs(a[p * n + c])) p = r;
-    for (std::size_t k = 0; k < n; ++k) std::swap(a[c * n + k], a[p * n + k]);
-    std::swap(b[c], b[p]);
-    for (std::size_t r = c + 1; r < n; ++r) {
-      const double f = a[r * n + c] / a[c * n + c];
-      for (std::size_t k = c; k < n; ++k) a[r * n + k] -= f * a[c * n + k];
-      b[r] -= f * b[c];
-    }
-  }
-  std::vector<double> x(n);
-  for (std::size_t r = n; r-- > 0;) {
-    double s = b[r];
-    for (std::size_t k = r + 1; k < n; ++k) s -= a[r * n + k] * x[k];
-    x[r] = s / a[r * n + r];
-  }
-  return x;
-}
-
 // The patch test: a 2x2x2 patch of the unit cube whose inner corner is moved off centre (so no
 // element is regular), boundary nodes displaced by a linear field u = A x, inner nodes solved
 // for. The exact solution is the linear field: inner displacements and the stress at every point
@@ -198,7 +175,7 @@ TEST(SolidFull, PatchTestOnAnIrregularPatch) {
       ri[p] = -r[inner[p]];
       for (std::size_t q = 0; q < n; ++q) kii[p * n + q] = k[inner[p] * dofs + inner[q]];
     }
-    const std::vector<double> du = solve(kii, ri);
+    const std::vector<double> du = test::solve_dense(kii, ri);
     for (std::size_t p = 0; p < n; ++p) u[inner[p]] = du[p];
     for (std::size_t a = 0; a < g.nodes.size(); ++a) {
       if (g.on_boundary[a]) continue;
@@ -212,39 +189,6 @@ TEST(SolidFull, PatchTestOnAnIrregularPatch) {
         for (int c = 0; c < 6; ++c) EXPECT_NEAR(out.stress[6 * p + c], sigma[c], 1e-8);
     }
   }
-}
-
-// Eigenvalues of a symmetric matrix by cyclic Jacobi rotations (Golub & Van Loan, Matrix
-// Computations, 4th ed., section 8.5).
-std::vector<double> eigenvalues(std::vector<double> a, std::size_t n) {
-  for (int sweep = 0; sweep < 100; ++sweep) {
-    double off = 0.0;
-    for (std::size_t p = 0; p < n; ++p)
-      for (std::size_t q = p + 1; q < n; ++q) off += a[p * n + q] * a[p * n + q];
-    if (off < 1e-30) break;
-    for (std::size_t p = 0; p < n; ++p)
-      for (std::size_t q = p + 1; q < n; ++q) {
-        if (a[p * n + q] == 0.0) continue;
-        const double theta = (a[q * n + q] - a[p * n + p]) / (2.0 * a[p * n + q]);
-        const double t =
-            (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1));
-        const double c = 1.0 / std::sqrt(t * t + 1), s = t * c;
-        for (std::size_t k = 0; k < n; ++k) {  // columns p, q
-          const double akp = a[k * n + p], akq = a[k * n + q];
-          a[k * n + p] = c * akp - s * akq;
-          a[k * n + q] = s * akp + c * akq;
-        }
-        for (std::size_t k = 0; k < n; ++k) {  // rows p, q
-          const double apk = a[p * n + k], aqk = a[q * n + k];
-          a[p * n + k] = c * apk - s * aqk;
-          a[q * n + k] = s * apk + c * aqk;
-        }
-      }
-  }
-  std::vector<double> lambda(n);
-  for (std::size_t i = 0; i < n; ++i) lambda[i] = a[i * n + i];
-  std::sort(lambda.begin(), lambda.end());
-  return lambda;
 }
 
 // One distorted element of each type: its stiffness has exactly the zero eigenvalues of its
@@ -267,7 +211,7 @@ TEST(SolidFull, ZeroEnergyModesOfOneElement) {
     evaluate(rule, nodes, cell, std::vector<double>(3 * t.nodes, 0.0), false, out);
     ASSERT_GT(out.min_jacobian, 0.0);
     const std::size_t m = 3 * static_cast<std::size_t>(t.nodes);
-    const std::vector<double> lambda = eigenvalues(out.stiffness, m);
+    const std::vector<double> lambda = test::jacobi_eigenvalues(out.stiffness, static_cast<int>(m));
     const double largest = lambda.back();
     int zeros = 0;
     for (const double l : lambda) {
