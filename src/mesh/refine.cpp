@@ -313,8 +313,8 @@ void raise_order(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
     throw InputError("*CHANGE_P-ORDER: refinement produced " + std::to_string(new_nodes) +
                      " new nodes where a conforming mesh has " +
                      std::to_string(expected_new_nodes) +
-                     "; hexes sharing nodes follow different shapes (e.g. nodes merged between "
-                     "generated components or a *SMOOTH_MESH surface meeting one)");
+                     "; the hexes do not fit together edge to edge (a hex with a repeated corner "
+                     "node, or neighbours that share corner nodes but not whole edges and faces)");
   }
 }
 
