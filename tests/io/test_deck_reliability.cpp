@@ -319,8 +319,8 @@ TEST(DeckReliability, RefinementErrorsAreAtTheirLine) {
 }
 
 TEST(DeckReliability, RefinementOfSlenderAndFarMeshesKeepsItsNodes) {
-  // Hexes of *ELEMENT_SOLID (no exact shape) split 2x2x2: the new nodes of neighbouring hexes
-  // merge within a fraction of their own edges, whatever the model's extent or position.
+  // Hexes of *ELEMENT_SOLID (no exact shape) split 2x2x2: the new nodes of neighbouring hexes are
+  // shared, whatever the model's extent or position.
   const auto num = [](double v) {
     std::ostringstream text;
     text.precision(17);
