@@ -210,22 +210,7 @@ void SolidBlock::von_mises_stress(std::vector<double>& out) const {
 }
 
 void SolidBlock::set_erosion(const ErosionCriteria& criteria) {
-  Impl& m = *impl_;
-  if (!(criteria.min_step >= 0.0) || !(criteria.max_geometric_strain > 0.0) ||
-      !(criteria.max_volumetric_strain > 0.0))
-    throw InputError(input_prefix(m.part_id) +
-                     "erosion limits must be > 0 (the time step limit >= 0)");
-  m.erosion = criteria;
-  const std::size_t n = m.hexes.size();
-  if (!criteria.any() && !m.fails_by_damage) {
-    m.eroded.clear();
-    return;
-  }
-  m.eroded.assign(n, 0);
-  m.element_internal.assign(n, 0.0);
-  m.element_hourglass.assign(n, 0.0);
-  m.geometric_strain.assign(n, 0.0);
-  m.volume_ratio.assign(n, 1.0);
+  set_block_erosion(*impl_, criteria, impl_->hexes.size());
 }
 
 const std::vector<std::uint8_t>& SolidBlock::eroded() const { return impl_->eroded; }
@@ -272,10 +257,7 @@ void SolidBlock::set_hourglass_coefficient(double coefficient) {
 double SolidBlock::hourglass_coefficient() const { return impl_->hourglass_coefficient; }
 
 void SolidBlock::set_bulk_viscosity(double quadratic, double linear) {
-  if (!(quadratic >= 0.0) || !(linear >= 0.0))
-    throw InputError("bulk viscosity coefficients must be >= 0");
-  impl_->bulk_viscosity_quadratic = quadratic;
-  impl_->bulk_viscosity_linear = linear;
+  set_block_bulk_viscosity(*impl_, quadratic, linear);
 }
 
 void SolidBlock::set_thermal(const ThermalCoupling& coupling) {

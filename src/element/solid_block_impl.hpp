@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "abut/core/error.hpp"
 #include "abut/core/lanes.hpp"
 #include "abut/element/solid_block.hpp"
 #include "abut/material/metal.hpp"
@@ -35,6 +36,37 @@ inline std::string input_prefix(std::int64_t part_id) {
 // density, moduli in range, a flow curve for a metal (SolidBlock, SolidCellBlock).
 void check_solid_material(std::int64_t part_id, const MaterialParams& material,
                           const FunctionTable* functions);
+
+// Takes a block's erosion criteria (SolidBlock, SolidCellBlock): InputError at the part for a
+// limit out of range; the per-element erosion arrays of `block`'s Impl (eroded, element_internal,
+// element_hourglass, geometric_strain, volume_ratio) sized to `count` elements, or `eroded` left
+// empty when nothing can erode (no criterion and no damage).
+template <class Impl>
+void set_block_erosion(Impl& m, const ErosionCriteria& criteria, std::size_t count) {
+  if (!(criteria.min_step >= 0.0) || !(criteria.max_geometric_strain > 0.0) ||
+      !(criteria.max_volumetric_strain > 0.0))
+    throw InputError(input_prefix(m.part_id) +
+                     "erosion limits must be > 0 (the time step limit >= 0)");
+  m.erosion = criteria;
+  if (!criteria.any() && !m.fails_by_damage) {
+    m.eroded.clear();
+    return;
+  }
+  m.eroded.assign(count, 0);
+  m.element_internal.assign(count, 0.0);
+  m.element_hourglass.assign(count, 0.0);
+  m.geometric_strain.assign(count, 0.0);
+  m.volume_ratio.assign(count, 1.0);
+}
+
+// Takes a block's bulk viscosity coefficients: InputError unless both are >= 0.
+template <class Impl>
+void set_block_bulk_viscosity(Impl& m, double quadratic, double linear) {
+  if (!(quadratic >= 0.0) || !(linear >= 0.0))
+    throw InputError("bulk viscosity coefficients must be >= 0");
+  m.bulk_viscosity_quadratic = quadratic;
+  m.bulk_viscosity_linear = linear;
+}
 
 // Effective deviatoric logarithmic strain sqrt(2/3 e_dev:e_dev) of the deformation gradient F
 // (erosion's geometric strain).

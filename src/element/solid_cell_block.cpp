@@ -258,31 +258,13 @@ void SolidCellBlock::damage(std::vector<double>& out) const {
 }
 
 void SolidCellBlock::set_erosion(const ErosionCriteria& criteria) {
-  Impl& m = *impl_;
-  if (!(criteria.min_step >= 0.0) || !(criteria.max_geometric_strain > 0.0) ||
-      !(criteria.max_volumetric_strain > 0.0))
-    throw InputError(input_prefix(m.part_id) +
-                     "erosion limits must be > 0 (the time step limit >= 0)");
-  m.erosion = criteria;
-  const std::size_t n = m.size();
-  if (!criteria.any() && !m.fails_by_damage) {
-    m.eroded.clear();
-    return;
-  }
-  m.eroded.assign(n, 0);
-  m.element_internal.assign(n, 0.0);
-  m.element_hourglass.assign(n, 0.0);
-  m.geometric_strain.assign(n, 0.0);
-  m.volume_ratio.assign(n, 1.0);
+  set_block_erosion(*impl_, criteria, impl_->size());
 }
 
 const std::vector<std::uint8_t>& SolidCellBlock::eroded() const { return impl_->eroded; }
 
 void SolidCellBlock::set_bulk_viscosity(double quadratic, double linear) {
-  if (!(quadratic >= 0.0) || !(linear >= 0.0))
-    throw InputError("bulk viscosity coefficients must be >= 0");
-  impl_->bulk_viscosity_quadratic = quadratic;
-  impl_->bulk_viscosity_linear = linear;
+  set_block_bulk_viscosity(*impl_, quadratic, linear);
 }
 
 void SolidCellBlock::set_thermal(const ThermalCoupling& coupling) {
