@@ -57,9 +57,27 @@ void clip_polygon(const Polygon& subject, const Polygon& clip, Polygon& out) {
   out = a;
 }
 
+// A triangle is a quad whose last corner repeats the third (mesh.hpp, Quad4).
+bool is_triangle(const std::array<P2, 4>& c) { return c[2] == c[3]; }
+
+// Area coordinates of the point x of the plane in the triangle c[0], c[1], c[2].
+std::array<double, 3> area_coordinates(const std::array<P2, 4>& c, const P2& x) {
+  const double whole = cross2(c[0], c[1], c[2]);
+  if (whole == 0.0) return {1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0};
+  const double l1 = cross2(c[0], x, c[2]) / whole, l2 = cross2(c[0], c[1], x) / whole;
+  return {1.0 - l1 - l2, l1, l2};
+}
+
 // Reference coordinates of the point x of the plane in the bilinear quad with plane corners c
-// (Newton from the centre; one step for a parallelogram).
+// (Newton from the centre; one step for a parallelogram). A triangle's map collapses its edge
+// eta = 1 into the third corner, where Newton's method fails: its exact inverse from the area
+// coordinates instead (eta = 2 l2 - 1, xi = (l1 - l0) / (l0 + l1)).
 P2 reference_of(const std::array<P2, 4>& c, const P2& x) {
+  if (is_triangle(c)) {
+    const auto l = area_coordinates(c, x);
+    const double base = l[0] + l[1];
+    return {base != 0.0 ? (l[1] - l[0]) / base : 0.0, 2.0 * l[2] - 1.0};
+  }
   double xi = 0.0, eta = 0.0;
   for (int it = 0; it < 12; ++it) {
     const auto n = quad_shape(xi, eta);
@@ -81,25 +99,36 @@ P2 reference_of(const std::array<P2, 4>& c, const P2& x) {
 
 // Adds int over the polygon of each N_a of the quads `first` and `second` (reference
 // coordinates affine on each triangle of a fan: the edge-midpoint rule, exact for quadratics).
+// On a triangle the N_a are its area coordinates, affine in the plane (the fourth, a repeat of
+// the third node, gets 0): the same rule is exact for them.
 void integrate(const Polygon& poly, const std::array<P2, 4>& first, const std::array<P2, 4>& second,
                std::array<double, 4>& n_first, std::array<double, 4>& n_second, double scale) {
   std::array<P2, kMaxVertices> r1, r2;
+  const bool tri1 = is_triangle(first), tri2 = is_triangle(second);
+  auto coordinates = [](const std::array<P2, 4>& c, bool triangle, const P2& x) -> P2 {
+    if (!triangle) return reference_of(c, x);
+    const auto l = area_coordinates(c, x);
+    return {l[1], l[2]};
+  };
   for (int i = 0; i < poly.n; ++i) {
-    r1[i] = reference_of(first, poly.v[i]);
-    r2[i] = reference_of(second, poly.v[i]);
+    r1[i] = coordinates(first, tri1, poly.v[i]);
+    r2[i] = coordinates(second, tri2, poly.v[i]);
   }
-  auto add_midpoint = [](const P2& a, const P2& b, double w, std::array<double, 4>& out) {
-    const auto n = quad_shape(0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]));
+  auto add_midpoint = [](bool triangle, const P2& a, const P2& b, double w,
+                         std::array<double, 4>& out) {
+    const double u = 0.5 * (a[0] + b[0]), v = 0.5 * (a[1] + b[1]);
+    const std::array<double, 4> n =
+        triangle ? std::array<double, 4>{1.0 - u - v, u, v, 0.0} : quad_shape(u, v);
     for (int k = 0; k < 4; ++k) out[k] += w * n[k];
   };
   for (int i = 1; i + 1 < poly.n; ++i) {
     const double w = cross2(poly.v[0], poly.v[i], poly.v[i + 1]) / 6.0 * scale;  // area / 3
-    add_midpoint(r1[0], r1[i], w, n_first);
-    add_midpoint(r1[i], r1[i + 1], w, n_first);
-    add_midpoint(r1[i + 1], r1[0], w, n_first);
-    add_midpoint(r2[0], r2[i], w, n_second);
-    add_midpoint(r2[i], r2[i + 1], w, n_second);
-    add_midpoint(r2[i + 1], r2[0], w, n_second);
+    add_midpoint(tri1, r1[0], r1[i], w, n_first);
+    add_midpoint(tri1, r1[i], r1[i + 1], w, n_first);
+    add_midpoint(tri1, r1[i + 1], r1[0], w, n_first);
+    add_midpoint(tri2, r2[0], r2[i], w, n_second);
+    add_midpoint(tri2, r2[i], r2[i + 1], w, n_second);
+    add_midpoint(tri2, r2[i + 1], r2[0], w, n_second);
   }
 }
 

@@ -48,6 +48,42 @@ TEST(QuadProjection, MatchesBruteForceOnAWarpedFacet) {
   }
 }
 
+// Distance from p to the triangle a, b, c: the foot in its plane where its area coordinates are
+// all >= 0, else the nearest of its three edges (segments).
+double triangle_distance(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
+  const Vec3 n = cross(b - a, c - a);
+  const Vec3 foot = p - n * (dot(p - a, n) / dot(n, n));
+  const double l0 = dot(cross(c - b, foot - b), n), l1 = dot(cross(a - c, foot - c), n),
+               l2 = dot(cross(b - a, foot - a), n);
+  if (l0 >= 0.0 && l1 >= 0.0 && l2 >= 0.0) return norm(p - foot);
+  auto segment = [&](const Vec3& s, const Vec3& t) {
+    const double r = std::clamp(dot(p - s, t - s) / dot(t - s, t - s), 0.0, 1.0);
+    return norm(p - (s + (t - s) * r));
+  };
+  return std::min({segment(a, b), segment(b, c), segment(c, a)});
+}
+
+// A triangle is a quad whose fourth node repeats the third (tetrahedra's and wedges' faces,
+// triangular shells): the bilinear map collapses its edge eta = 1 into that corner. Points all
+// around it, many near the collapsed corner, from any start: the closest point of the triangle.
+TEST(QuadProjection, TriangleFindsItsClosestPointAlsoNearTheCollapsedCorner) {
+  const Vec3 a{0, 0, 0}, b{2, 0.2, 0.3}, c{0.7, 1.6, -0.4};
+  const QuadCorners tri{a, b, c, c};
+  const Vec3 normal = normalized(cross(b - a, c - a));
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 3.0), h(-0.8, 0.8), near(-0.3, 0.3),
+      start(-1.0, 1.0);
+  for (int k = 0; k < 400; ++k) {
+    const Vec3 p =
+        k % 2 == 0 ? Vec3{u(rng), u(rng) * 0.8, h(rng)} : c + Vec3{near(rng), near(rng), near(rng)};
+    const QuadProjection q =
+        k % 4 < 2 ? project_onto_quad(tri, p) : project_onto_quad(tri, p, start(rng), start(rng));
+    EXPECT_NEAR(q.distance, triangle_distance(a, b, c, p), 1e-9) << "point " << k;
+    EXPECT_NEAR(norm(quad_point(tri, q.xi, q.eta) - q.point), 0.0, 1e-12);
+    EXPECT_NEAR(dot(q.normal, normal), 1.0, 1e-9) << "point " << k;
+  }
+}
+
 // The contact starts each projection on last step's partner where the point lay then: any start
 // in the facet must find the same closest point.
 TEST(QuadProjection, AnyStartInTheFacetFindsTheSameClosestPoint) {

@@ -99,6 +99,66 @@ double nodal_share(const std::vector<P2>& polygon, double xa, double xb, double 
   return s;
 }
 
+// Area and first moments of the part of `polygon` inside the unit square (the bilinear shares
+// of nodal_share sum to 1, x and y there).
+std::array<double, 3> moments_in_unit_square(const std::vector<P2>& polygon) {
+  std::array<double, 3> m{};
+  for (const P2 corner : {P2{0, 0}, P2{1, 0}, P2{1, 1}, P2{0, 1}}) {
+    const double share = nodal_share(polygon, 0, 1, 0, 1, corner[0], corner[1]);
+    m[0] += share;
+    m[1] += share * corner[0];
+    m[2] += share * corner[1];
+  }
+  return m;
+}
+
+// Triangles (tetrahedra's and wedges' faces, triangular shells) are quads whose fourth node
+// repeats the third; the bilinear map collapses the edge eta = 1 into that corner, where it cannot
+// be inverted. A triangle under a unit square cell with its third corner inside the cell, and the
+// same with the roles swapped: the weights are the integrals of the triangle's area coordinates
+// over the overlap, which reproduce its area and first moments (the area coordinates interpolate
+// x and y exactly; three moments fix the three weights), and the square's side as in the test
+// above. Reference: the overlap clipped here against the square, independently of the cells.
+// (Before the inverse map knew triangles, Newton's method at the collapsed corner returned
+// weights that made a tetrahedral sphere's contact gap -2.8 km.)
+TEST(Mortar, TriangleFacetsIntegrateTheirAreaCoordinatesExactly) {
+  const std::vector<P2> triangle{{-1.0, -0.5}, {2.0, -1.0}, {0.4, 0.7}};
+  const auto exact = moments_in_unit_square(triangle);
+  const QuadCorners square_down{Vec3{0, 0, 0}, Vec3{0, 1, 0}, Vec3{1, 1, 0}, Vec3{1, 0, 0}};
+  const QuadCorners tri_up{
+      Vec3{triangle[0][0], triangle[0][1], -0.01}, Vec3{triangle[1][0], triangle[1][1], -0.01},
+      Vec3{triangle[2][0], triangle[2][1], -0.01}, Vec3{triangle[2][0], triangle[2][1], -0.01}};
+  auto check_triangle = [&](const std::array<double, 4>& w, const QuadCorners& c) {
+    EXPECT_EQ(w[3], 0.0);
+    double area = 0.0, mx = 0.0, my = 0.0;
+    for (int b = 0; b < 4; ++b) {
+      EXPECT_GE(w[b], 0.0);
+      area += w[b];
+      mx += w[b] * c[b].x;
+      my += w[b] * c[b].y;
+    }
+    EXPECT_NEAR(area, exact[0], 1e-14);
+    EXPECT_NEAR(mx, exact[1], 1e-14);
+    EXPECT_NEAR(my, exact[2], 1e-14);
+  };
+  const std::int32_t id = 3;
+  const CellOverlap below = overlap_cell(square_down, {}, {0, 0, 1}, {&id, 1}, {&tri_up, 1});
+  ASSERT_EQ(below.count, 1);
+  EXPECT_NEAR(below.area, exact[0], 1e-14);
+  check_triangle(below.target[0], tri_up);
+  // The triangle is the cell (facing -z, so its corners turn the other way), the square below.
+  const QuadCorners tri_down{tri_up[1], tri_up[0], tri_up[2], tri_up[2]};
+  const QuadCorners square_up{Vec3{0, 0, -0.02}, Vec3{1, 0, -0.02}, Vec3{1, 1, -0.02},
+                              Vec3{0, 1, -0.02}};
+  const CellOverlap above = overlap_cell(tri_down, {}, {0, 0, 1}, {&id, 1}, {&square_up, 1});
+  ASSERT_EQ(above.count, 1);
+  EXPECT_NEAR(above.area, exact[0], 1e-14);
+  check_triangle(above.own, tri_down);
+  double area = 0.0;
+  for (int b = 0; b < 4; ++b) area += above.target[0][b];
+  EXPECT_NEAR(area, exact[0], 1e-14);
+}
+
 struct PatchResult {
   double plate_error = 0.0, block_error = 0.0, total_error = 0.0;
 };
