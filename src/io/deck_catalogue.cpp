@@ -31,7 +31,8 @@ const std::map<std::string, KeywordReader, std::less<>>& supported() {
       {"*COMPONENT_SHELL_PLATE", read_component_shell_plate},
       {"*COMPONENT_SHELL_TUBE", read_component_shell_tube},
       {"*CHANGE_P-ORDER", read_change_p_order},
-      {"*CONTROL_P-ORDER", read_control_p_order},  // abut's own
+      {"*CONTROL_P-ORDER", read_control_p_order},            // abut's own
+      {"*CHANGE_TO_TETRAHEDRA", read_change_to_tetrahedra},  // abut's own
       {"*SMOOTH_MESH", read_smooth_mesh},
       {"*MERGE_DUPLICATED_NODES", read_merge_duplicated_nodes},
       {"*MAT_ELASTIC", read_mat_elastic},

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "abut/mesh/refine.hpp"
+#include "abut/mesh/tetrahedra.hpp"
 #include "abut/solver/contact_surfaces.hpp"
 #include "abut/solver/pressure_loads.hpp"
 #include "deck_reader.hpp"
@@ -265,24 +266,38 @@ DeckResult DeckReader::finish() {
     for (const CellBlock& b : mesh.cells)
       for (std::size_t c = 0; c < b.size(); ++c)
         if (std::find(parts.begin(), parts.end(), b.part[c]) != parts.end())
-          throw InputError(where, std::string(keyword) + " on part " + std::to_string(b.part[c]) +
-                                      ", which has " + std::string(element_label(b.type)) +
-                                      " elements, is not supported yet (it refines and smooths "
-                                      "8-node hexahedra)");
+          throw InputError(where, "part " + std::to_string(b.part[c]) + " has " +
+                                      std::string(element_label(b.type)) + " elements: " + keyword +
+                                      " works on 8-node hexahedra, other cells are not "
+                                      "supported yet");
   };
   for (const OrderChange& c : order_changes) require_hexahedra(c.parts, c.where, "*CHANGE_P-ORDER");
   for (const SurfaceSmoothing& c : smoothings) require_hexahedra(c.parts, c.where, "*SMOOTH_MESH");
+  // Order 3 makes 27 hexes of one: counted against the memory like a generated component.
+  const auto fits = [&](const MeshSize& added, const SourceLocation& where) {
+    const MeshSize total{
+        static_cast<double>(mesh.solid_count() + mesh.shell_count()) + added.elements,
+        static_cast<double>(mesh.nodes.size()) + added.nodes};
+    require_memory(total, available_memory(), where);
+  };
   if (!order_changes.empty() || !smoothings.empty()) {
-    // Order 3 makes 27 hexes of one: counted against the memory like a generated component.
-    const auto fits = [&](const MeshSize& added, const SourceLocation& where) {
-      const MeshSize total{
-          static_cast<double>(mesh.hex_count() + mesh.shell_count()) + added.elements,
-          static_cast<double>(mesh.nodes.size()) + added.nodes};
-      require_memory(total, available_memory(), where);
-    };
     for (std::string& note : refine_and_smooth(mesh, order_changes, smoothings, fits, p_order_form))
       notes.push_back(std::move(note));
   }
+  // Tetrahedra are cut from the hexahedra as refinement left them (SPLIT: the children).
+  std::vector<TetrahedraChange> tetrahedra_changes;
+  for (const PendingTetrahedra& t : tetrahedra) {
+    TetrahedraChange c;
+    c.parts = solid_parts_of(t.entity);
+    c.type = t.type;
+    if (t.region) c.region = geometry_of(model, *t.region);
+    c.where = with_field(t.entity.where, "");
+    tetrahedra_changes.push_back(std::move(c));
+  }
+  for (const TetrahedraChange& c : tetrahedra_changes)
+    require_hexahedra(c.parts, c.where, "*CHANGE_TO_TETRAHEDRA");
+  for (std::string& note : change_to_tetrahedra(mesh, tetrahedra_changes, fits))
+    notes.push_back(std::move(note));
 
   // OptiStruct ADJUST: secondary nodes onto the main surface, before anything uses the geometry.
   for (std::string& note : adjust_contact_nodes(model)) notes.push_back(std::move(note));

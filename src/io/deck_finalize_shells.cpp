@@ -38,8 +38,9 @@ void require_area(const Mesh& mesh, const ShellNodes& e, const SourceLocation& w
 }
 
 // Refining hexes puts nodes on their faces that a shell attached to them would not share.
+// `change`: what would be done to the hex ("refining it").
 void require_unrefined_shell_nodes(const Mesh& mesh, const std::vector<std::int64_t>& parts,
-                                   const SourceLocation& where) {
+                                   const SourceLocation& where, const std::string& change) {
   std::vector<std::uint8_t> on_shell(mesh.nodes.size(), 0);
   for (const Quad4& q : mesh.shells)
     for (const std::int32_t n : q) on_shell[static_cast<std::size_t>(n)] = 1;
@@ -49,7 +50,8 @@ void require_unrefined_shell_nodes(const Mesh& mesh, const std::vector<std::int6
       if (on_shell[static_cast<std::size_t>(n)]) {
         throw InputError(where, "hexahedron " + std::to_string(mesh.hex_id[h]) + " of part " +
                                     std::to_string(mesh.hex_part[h]) +
-                                    " shares nodes with shells: refining it would detach them, "
+                                    " shares nodes with shells: " + change +
+                                    " would detach them, "
                                     "which is not supported yet by abut");
       }
     }
@@ -132,7 +134,13 @@ void DeckReader::resolve_shells() {
   };
   for (const PendingOrder& o : orders) {
     const std::vector<std::int64_t> parts = require_solid_parts(o.entity, "*CHANGE_P-ORDER");
-    if (o.order > 1) require_unrefined_shell_nodes(mesh, parts, o.entity.where);
+    if (o.order > 1) require_unrefined_shell_nodes(mesh, parts, o.entity.where, "refining it");
+  }
+  for (const PendingTetrahedra& t : tetrahedra) {
+    const std::vector<std::int64_t> parts = require_solid_parts(t.entity, "*CHANGE_TO_TETRAHEDRA");
+    if (t.type == CellType::tet10)
+      require_unrefined_shell_nodes(mesh, parts, t.entity.where,
+                                    "giving its tetrahedra midside nodes");
   }
   for (const PendingSmoothing& s : smoothing) require_solid_parts(s.entity, "surface smoothing");
 }

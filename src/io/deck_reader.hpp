@@ -132,6 +132,12 @@ struct PendingOrder {
   std::optional<IdReference> region;
 };
 
+struct PendingTetrahedra {  // *CHANGE_TO_TETRAHEDRA
+  EntityRef entity;
+  CellType type = CellType::tet4;
+  std::optional<IdReference> region;
+};
+
 struct PendingSmoothing {
   EntityRef entity;
   double max_angle = 0.0;
@@ -288,6 +294,7 @@ class DeckReader {
   std::vector<PendingOrder> orders;
   POrderForm p_order_form = POrderForm::split;  // *CONTROL_P-ORDER
   std::vector<PendingSmoothing> smoothing;
+  std::vector<PendingTetrahedra> tetrahedra;
   std::vector<PendingVelocity> velocities;
   std::vector<PendingMerge> merges;
   std::vector<EntityRef> entity_references;  // entities that must exist
@@ -333,6 +340,7 @@ void read_component_sphere(DeckReader&, Block&);
 void read_component_cylinder(DeckReader&, Block&);
 void read_change_p_order(DeckReader&, Block&);
 void read_control_p_order(DeckReader&, Block&);
+void read_change_to_tetrahedra(DeckReader&, Block&);
 void read_smooth_mesh(DeckReader&, Block&);
 void read_merge_duplicated_nodes(DeckReader&, Block&);
 void read_mat_elastic(DeckReader&, Block&);

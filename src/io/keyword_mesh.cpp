@@ -300,6 +300,20 @@ void read_change_p_order(DeckReader& d, Block& b) {
   }
 }
 
+void read_change_to_tetrahedra(DeckReader& d, Block& b) {
+  if (b.done()) throw InputError(b.where(), "missing data line: expected entype, enid, nodes, gid");
+  while (!b.done()) {
+    const Row r = b.row({"entype", "enid", "nodes", "gid"});
+    PendingTetrahedra t;
+    t.entity = d.entity(r, 0, 1, {EntityType::Part, EntityType::PartSet, EntityType::All});
+    const std::int64_t nodes = r.integer(2);
+    r.require(nodes == 4 || nodes == 10, 2, "expected 4 or 10 (nodes per tetrahedron)");
+    t.type = nodes == 4 ? CellType::tet4 : CellType::tet10;
+    t.region = region(d, r, 3);
+    d.tetrahedra.push_back(t);
+  }
+}
+
 void read_smooth_mesh(DeckReader& d, Block& b) {
   b.title();
   do {

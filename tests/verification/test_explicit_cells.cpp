@@ -235,5 +235,41 @@ TEST(ExplicitCells, LagrangeHexahedraTwoBarsTouchForTwoLOverC) {
   }
 }
 
+// The wave bar and the two bars again, as generated boxes cut into tetrahedra by
+// *CHANGE_TO_TETRAHEDRA (5 or 6 per hex, each cut by its own node numbers, so the tetrahedra
+// are not the regular 6-per-cube pattern of the card meshes above, and the bars' end faces are
+// triangulated independently of each other).
+TEST(ExplicitCells, GeneratedTetrahedraWaveBarAndTwoBars) {
+  for (const int nodes : {4, 10}) {
+    SCOPED_TRACE(nodes);
+    const std::string name = nodes == 4 ? "generated C3D4" : "generated C3D10";
+    const std::string cut = "*CHANGE_TO_TETRAHEDRA\nALL, 0, " + std::to_string(nodes) + "\n";
+    const std::string bar =
+        "*UNIT_SYSTEM\nSI\n*TIME\n2.5e-4\n*COMPONENT_BOX\n1, 1, 100, 1, 1\n0.0, 0.0, 0.0, 1.0, "
+        "0.01, 0.01\n" +
+        cut + kMaterial +
+        "*PART\n\"bar\"\n1, 1\n*INITIAL_VELOCITY\nP, 1, 10.0, 0.0, 0.0\n"
+        "*GEOMETRY_BOX\n1\n0.999, -1.0, -1.0, 1.001, 1.0, 1.0\n*BC_MOTION\nG, 1, XYZ\n*END\n";
+    check_wave_bar(read_deck_string(bar, "wave_bar.k"), name, 100, 1.0, 0.01, 20);
+
+    constexpr double kL = 0.1;
+    const auto box = [&](int id, double x0) {
+      return fmt::format(
+          "*COMPONENT_BOX\n{0}, {0}, 100, 1, 1\n{1:.17g}, 0.0, 0.0, {2:.17g}, {3}, {3}\n", id, x0,
+          x0 + kL, kSideOfBars);
+    };
+    const std::string bars =
+        "*UNIT_SYSTEM\nSI\n*TIME\n6e-5\n" + box(1, -kL - 0.00005) + box(2, 0.00005) + cut +
+        kMaterial +
+        "*PART\n\"left bar\"\n1, 1\n\"right bar\"\n2, 1\n*INITIAL_VELOCITY\nP, 1, 10.0, 0.0, "
+        "0.0\n*INITIAL_VELOCITY\nP, 2, -10.0, 0.0, 0.0\n*CONTACT\n\"bar ends\"\n1\nP, 1, P, 2, "
+        "0.0, " +
+        fmt::format("{:.17g}", kE * 100 / kL) + "\n*END\n";
+    const Model model = read_deck_string(bars, "bars.k");
+    ASSERT_EQ(model.mesh.hex_count(), 0u);
+    check_two_bars(model, name, kL, kSideOfBars);
+  }
+}
+
 }  // namespace
 }  // namespace abut
