@@ -57,6 +57,19 @@ std::set<std::int64_t> face_ids(const Model& m, const SolidFace& f) {
   return ids;
 }
 
+// A node that no element uses is kept, and a note names it (the static solver gives it no
+// equations, as CalculiX does).
+TEST(InpMesh, NodeOfNoElementIsNoted) {
+  const DeckResult r = read(kNodes + "13, 5., 5., 5.\n" + kElements + kSection + kStep);
+  EXPECT_EQ(r.model.mesh.nodes.size(), 13u);
+  bool noted = false;
+  for (const std::string& note : r.notes)
+    noted = noted || note.find("1 node (13) belongs to no element") != std::string::npos;
+  EXPECT_TRUE(noted);
+  for (const std::string& note : read(kNodes + kElements + kSection + kStep).notes)
+    EXPECT_EQ(note.find("belong"), std::string::npos) << note;
+}
+
 TEST(InpMesh, NodesAndElementsKeepTheirIdsAndOrder) {
   const Model m = model_of(kNodes + kElements + kSection + kStep);
   ASSERT_EQ(m.mesh.nodes.size(), 12u);

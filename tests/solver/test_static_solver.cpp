@@ -128,6 +128,41 @@ TEST(StaticSolver, PrescribedDisplacementGivesTheReaction) {
   EXPECT_NEAR(rx, sigma * 1.0, 1e-9 * sigma);
 }
 
+// A node that no element uses (CalculiX's cubef2f1/2 decks hold one) has no stiffness: it takes
+// no equation and stays put, and the bar's answer is unchanged; a force on it is an error, since
+// nothing would carry it.
+TEST(StaticSolver, NodeOfNoElementTakesNoPart) {
+  const double d = 0.004;
+  std::int32_t stray = -1;
+  auto with_stray_node = [&]() {
+    Model m = bar();
+    stray = m.mesh.nodes.add(999, {0.0, 0.0, 5.0});
+    for (const std::int32_t i : nodes_at_x(m, kL))
+      m.static_steps[0].displacements.push_back({i, 0, d, {}, {}});
+    return m;
+  };
+  Model m = with_stray_node();
+  StaticSolver s(m);
+  s.run();
+  m.mesh.nodes.x.pop_back();  // expect_uniaxial walks the bar's nodes
+  m.mesh.nodes.y.pop_back();
+  m.mesh.nodes.z.pop_back();
+  expect_uniaxial(m, s, kE * d / kL);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_EQ(s.displacement()[3 * static_cast<std::size_t>(stray) + k], 0.0);
+  Model loaded = with_stray_node();
+  loaded.static_steps[0].forces.push_back({stray, 2, 1.0, {}, {}});
+  StaticSolver t(loaded);
+  try {
+    t.run();
+    FAIL() << "expected an error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("node 999, which belongs to no element"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 // Large stretch with NLGEOM, nu = 0: St Venant-Kirchhoff S11 = E (lambda^2 - 1)/2, first
 // Piola-Kirchhoff P11 = lambda S11 = the end force per reference area; Cauchy = P11 (no
 // contraction with nu = 0).

@@ -300,6 +300,30 @@ void finish_mesh(Reader& r) {
   make_surfaces(r);
 }
 
+// Nodes that no element uses (CalculiX decks keep stray ones): the static solver gives them no
+// equations, as CalculiX does; say so once.
+void Reader::note_unattached_nodes() {
+  const Mesh& mesh = model.mesh;
+  std::vector<std::uint8_t> used(mesh.nodes.size(), 0);
+  for (std::size_t e = 0; e < mesh.solid_count(); ++e)
+    for (const std::int32_t node : mesh.solid(e).nodes) used[static_cast<std::size_t>(node)] = 1;
+  for (const Quad4& q : mesh.shells)
+    for (const std::int32_t node : q) used[static_cast<std::size_t>(node)] = 1;
+  std::vector<std::int64_t> stray;
+  for (std::size_t i = 0; i < used.size(); ++i)
+    if (!used[i]) stray.push_back(mesh.nodes.id[i]);
+  if (stray.empty()) return;
+  std::string list;
+  for (std::size_t i = 0; i < std::min<std::size_t>(stray.size(), 5); ++i)
+    list += (i ? ", " : "") + std::to_string(stray[i]);
+  if (stray.size() > 5) list += ", ...";
+  const bool one = stray.size() == 1;
+  notes.push_back(std::to_string(stray.size()) + (one ? " node (" : " nodes (") + list +
+                  (one ? ") belongs" : ") belong") + " to no element: no stiffness holds " +
+                  (one ? "it, so it takes" : "them, so they take") +
+                  " no part in the analysis (as in CalculiX)");
+}
+
 DeckResult Reader::finish() {
   if (change_behaviour) {
     throw InputError(where(step().changes.back().where, "*CHANGE SURFACE BEHAVIOR"),
@@ -326,6 +350,7 @@ DeckResult Reader::finish() {
   finish_ties(*this);
   finish_steps(*this);
   model.functions.resolve();
+  note_unattached_nodes();
   // CalculiX ADJUST: slave nodes onto the master surface, in the reference configuration.
   for (std::string& n : adjust_contact_nodes(model)) notes.push_back(std::move(n));
   const std::size_t n = model.mesh.nodes.size();

@@ -188,6 +188,7 @@ class Reader {
   // Reads one card (inp_reader.cpp dispatches it to the keyword's reader).
   void read(const Card& card);
   // The end of the input: resolves every reference and builds the model (inp_finish*.cpp).
+  void note_unattached_nodes();
   DeckResult finish();
 
   // Locations for messages.

@@ -123,6 +123,9 @@ struct StaticSolver::Impl {
   // *EQUATION cards, then u_s = sum N_a u_a of each tied node, eliminated by DofMap.
   std::vector<TiedNode> tied;
   std::vector<LinearConstraint> constraints;
+  // Dofs of nodes that belong to no element, constraint or tie: no stiffness holds them, so they
+  // get no equation (CalculiX leaves such nodes out of its system too); they stay where they are.
+  std::vector<std::uint8_t> unattached;
 
   Impl(const Model& m, StaticControls c) : model(m), controls(c), elements(m) {
     if (!m.motions.empty() || !m.gravity.empty() || !m.pressures.empty())
@@ -148,6 +151,14 @@ struct StaticSolver::Impl {
                                          " binds to its facet: put another dof first");
     }
     for (LinearConstraint& eq : tie_constraints(m, tied)) constraints.push_back(std::move(eq));
+    unattached.assign(u.size(), 1);
+    auto attach = [&](std::int32_t node) {
+      for (int d = 0; d < 3; ++d) unattached[3 * static_cast<std::size_t>(node) + d] = 0;
+    };
+    for (std::size_t e = 0; e < elements.count(); ++e)
+      for (const std::int32_t node : elements.nodes(e)) attach(node);
+    for (const LinearConstraint& eq : constraints)
+      for (const LinearConstraint::Term& t : eq.terms) attach(t.node);
     const Nodes& x = m.mesh.nodes;
     for (std::size_t i = 0; i < x.size(); ++i)
       coordinate_size =
@@ -375,7 +386,15 @@ struct StaticSolver::Impl {
                                  " but has a boundary condition in direction " + "xyz"[d] +
                                  " in step " + std::to_string(s + 1) +
                                  ": prescribe the nodes of the facet it is tied to instead");
-      const detail::DofMap dofs(model.mesh.nodes.size(), loads.prescribed(), constraints);
+      for (const auto& [dof, force] : loads.history(step.period).forces)
+        if (force != 0.0 && unattached[static_cast<std::size_t>(dof)])
+          throw InputError("step " + std::to_string(s + 1) +
+                           ": a concentrated force acts on node " +
+                           std::to_string(model.mesh.nodes.id[static_cast<std::size_t>(dof / 3)]) +
+                           ", which belongs to no element: nothing would carry it");
+      std::vector<std::uint8_t> held(loads.prescribed().begin(), loads.prescribed().end());
+      for (std::size_t d = 0; d < held.size(); ++d) held[d] = held[d] || unattached[d];
+      const detail::DofMap dofs(model.mesh.nodes.size(), held, constraints);
       ElementEquations base;
       for (std::size_t e = 0; e < elements.count(); ++e) base.add(elements.nodes(e), dofs);
       stats.equations = std::max<std::int64_t>(stats.equations, dofs.equations());
