@@ -14,6 +14,7 @@
 #include "abut/element/solid_cell_block.hpp"
 #include "abut/element/solid_full.hpp"
 #include "abut/material/elastic.hpp"
+#include "abut/material/mooney_rivlin.hpp"
 #include "cell_grid.hpp"
 #include "dense_checks.hpp"
 
@@ -246,6 +247,112 @@ TEST(SolidCellBlock, ConstantStrainRatePatch) {
       }
     EXPECT_GT(largest, 0.0);
     EXPECT_LT(inner, 1e-10 * largest);
+  }
+}
+
+// Every law of a solid through every cell type (the material-point seam): a homogeneous
+// deformation with the velocity v = l x at the mid-step (l symmetric, so no spin), 30 steps, on the
+// distorted grid. Each point of each cell must hold the stress of the homogeneous state:
+//  - *MAT_JC with n = 1, c = 0 (linear hardening, sigma_y = A + B epsp): on this radial path
+//    (a fixed direction of D) the equivalent strain e = sqrt(2/3 dev(eps):dev(eps)) gives in
+//    closed form q = 3 G e below yield, else epsp = (e - A/3G) / (1 + B/3G) and q = A + B epsp
+//    (the radial return is exact for radial loading with linear hardening: Simo & Hughes 1998,
+//    3.3), the deviator along dev(D), the pressure K tr(eps); eps the sum of the increments;
+//  - *MAT_MOONEY_RIVLIN (no viscous terms): its stress at the homogeneous F of the positions the
+//    step starts from, F = (I + dt A)^n with v = A x^n (the law alone, test_mooney_rivlin.cpp).
+TEST(SolidCellBlock, EveryLawOfASolidInEveryCellHoldsTheHomogeneousState) {
+  constexpr double dt = 1e-3;
+  constexpr int steps = 30;
+  const double l[3][3] = {{0.12, 0.03, 0.0}, {0.03, -0.05, 0.04}, {0.0, 0.04, -0.06}};
+  // The block takes the rates at x^{n-1/2} = x^n - dt/2 v (the mid-step of the velocities it is
+  // given): v = A x^n with A = (I + dt/2 l)^-1 l puts v = l x there.
+  double m[3][3], a[3][3] = {};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) m[i][j] = (i == j ? 1.0 : 0.0) + 0.5 * dt * l[i][j];
+  const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                     m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                     m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  double inv[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const int i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
+      inv[i][j] = (m[i1][j1] * m[i2][j2] - m[i1][j2] * m[i2][j1]) / det;
+    }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) a[i][j] += inv[i][k] * l[k][j];
+
+  MetalParams metal;
+  metal.density = kRho;
+  metal.young = kE;
+  metal.poisson = kNu;
+  metal.johnson_cook = true;
+  metal.a = 200.0;
+  metal.b = 1000.0;
+  metal.n = 1.0;
+  MooneyRivlinParams rubber;
+  rubber.density = 1.5e-9;
+  rubber.bulk = 2000.0;
+  rubber.c1 = 0.8;
+  rubber.c2 = 0.2;
+
+  // The metal's closed form after `steps` increments of sym(l) dt.
+  const double g = kE / (2.0 * (1.0 + kNu)), k = kE / (3.0 * (1.0 - 2.0 * kNu));
+  const Sym3 eps{{l[0][0] * dt * steps, l[1][1] * dt * steps, l[2][2] * dt * steps,
+                  l[0][1] * dt * steps, l[1][2] * dt * steps, l[2][0] * dt * steps}};
+  const Sym3 dev = deviator(eps);
+  const double e = std::sqrt(2.0 / 3.0 * double_dot(dev, dev));
+  const double yield_e = metal.a / (3.0 * g);
+  ASSERT_GT(e, 2.0 * yield_e);  // well into the plastic range
+  const double epsp = (e - yield_e) / (1.0 + metal.b / (3.0 * g));
+  const double q = metal.a + metal.b * epsp;
+  Sym3 metal_stress;
+  for (int c = 0; c < 6; ++c) metal_stress[c] = 2.0 / 3.0 * q / e * dev[c];
+  for (int c = 0; c < 3; ++c) metal_stress[c] += k * (eps[0] + eps[1] + eps[2]);
+
+  for (const CellType type : kTypes) {
+    for (const bool is_metal : {true, false}) {
+      SCOPED_TRACE(std::string(topology(type).name) + (is_metal ? " metal" : " rubber"));
+      const auto grid = moved_grid(type, 3, 2, 2);
+      const MaterialParams material = is_metal ? MaterialParams{metal} : MaterialParams{rubber};
+      SolidCellBlock block(1, material, type, connectivity(grid), grid.nodes);
+      block.set_bulk_viscosity(0.0, 0.0);
+      const std::size_t n = grid.nodes.size();
+      std::vector<double> x(grid.nodes.x), y(grid.nodes.y), z(grid.nodes.z), vx(n), vy(n), vz(n);
+      double f[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // F at x^n
+      double f_last[3][3];
+      for (int step = 0; step < steps; ++step) {
+        for (std::size_t p = 0; p < n; ++p) {
+          const double r[3] = {x[p], y[p], z[p]};
+          vx[p] = a[0][0] * r[0] + a[0][1] * r[1] + a[0][2] * r[2];
+          vy[p] = a[1][0] * r[0] + a[1][1] * r[1] + a[1][2] * r[2];
+          vz[p] = a[2][0] * r[0] + a[2][1] * r[1] + a[2][2] * r[2];
+        }
+        block.update({x.data(), y.data(), z.data(), vx.data(), vy.data(), vz.data()}, dt);
+        std::copy(&f[0][0], &f[0][0] + 9, &f_last[0][0]);
+        double next[3][3] = {};
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j)
+            for (int c = 0; c < 3; ++c)
+              next[i][j] += ((i == c ? 1.0 : 0.0) + dt * a[i][c]) * f[c][j];
+        std::copy(&next[0][0], &next[0][0] + 9, &f[0][0]);
+        for (std::size_t p = 0; p < n; ++p)
+          x[p] += dt * vx[p], y[p] += dt * vy[p], z[p] += dt * vz[p];
+      }
+      Sym3 expected = metal_stress;
+      if (!is_metal) {
+        Mat3 fm;
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) fm[static_cast<std::size_t>(3 * i + j)] = f_last[i][j];
+        expected = mooney_rivlin_stress(rubber, fm);
+      }
+      double scale = 0.0;
+      for (int c = 0; c < 6; ++c) scale = std::max(scale, std::abs(expected[c]));
+      std::vector<double> s;
+      block.stress(s);  // the element means: a homogeneous state makes every point the same
+      for (std::size_t el = 0; el < block.size(); ++el)
+        for (int c = 0; c < 6; ++c) ASSERT_NEAR(s[6 * el + c], expected[c], 1e-9 * scale);
+    }
   }
 }
 

@@ -38,12 +38,16 @@ enum class Discretisation { S2SSymmetric, S2SOneWay, N2SOneWay, N2SSymmetric };
 enum class Mesh { Matched, NonMatching };
 enum class Body { Rigid, Elastic };
 enum class Path { SetDown, Ramped, Stopping };
+// The hexahedra as they are, or both bodies cut into tetrahedra by *CHANGE_TO_TETRAHEDRA (the
+// contact then meets triangles on both sides, and with 10 nodes the faces' lattice facets).
+enum class Cells { Hexahedra, Tet4, Tet10 };
 
 struct Case {
   Discretisation discretisation;
   Mesh mesh;
   Body body;
   Path path;
+  Cells cells = Cells::Hexahedra;
 };
 
 std::string name(const Case& c) {
@@ -51,8 +55,10 @@ std::string name(const Case& c) {
   const char* m[] = {"matched", "non_matching"};
   const char* b[] = {"rigid", "elastic"};
   const char* p[] = {"set_down", "ramped", "stopping"};
+  const char* cells[] = {"", "_tet4", "_tet10"};
   return std::string(d[static_cast<int>(c.discretisation)]) + "_" + m[static_cast<int>(c.mesh)] +
-         "_" + b[static_cast<int>(c.body)] + "_" + p[static_cast<int>(c.path)];
+         "_" + b[static_cast<int>(c.body)] + "_" + p[static_cast<int>(c.path)] +
+         cells[static_cast<int>(c.cells)];
 }
 
 struct Slope {
@@ -110,6 +116,8 @@ std::string deck(const Case& c, const Slope& slope) {
   }
   s << "*COMPONENT_BOX\n2, 2, " << slope.plane_elements << ", 4, 1\n-0.2, -0.1, -0.02, "
     << -0.2 + 0.05 * slope.plane_elements << ", 0.1, 0.0\n";
+  if (c.cells != Cells::Hexahedra)
+    s << "*CHANGE_TO_TETRAHEDRA\nALL, 0, " << (c.cells == Cells::Tet4 ? 4 : 10) << "\n";
   s << (c.body == Body::Rigid ? "*MAT_RIGID\n1, 7800.0\n"
                               : "*MAT_ELASTIC\n1, 7800.0, 2.0e11, 0.3\n");
   s << "*MAT_RIGID\n2, 7800.0\n*PART\n\"block\"\n1, 1\n\"plane\"\n2, 2\n";
@@ -196,6 +204,24 @@ std::vector<Case> all_cases() {
 }
 
 INSTANTIATE_TEST_SUITE_P(Matrix, StaticFriction, ::testing::ValuesIn(all_cases()),
+                         [](const auto& param_info) { return name(param_info.param); });
+
+// The same with the block and the plane cut into 4-node tetrahedra, every discretisation, on the
+// non-matching mesh with the elastic block (the hardest cells above), set down and stopping.
+// With 10-node tetrahedra (Cells::Tet10, not in the suite: 1-10 minutes a cell) the stopping runs
+// hold (0.002%), and so does the set-down in S2S symmetric, but set down in S2S one-way, N2S
+// one-way and N2S symmetric the block slides: 1.2-1.7 mm in 0.1 s, 0.04 m/s (2026-12-04, not
+// found yet; docs/verification.md).
+std::vector<Case> tetrahedra_cases() {
+  std::vector<Case> cases;
+  for (auto d : {Discretisation::S2SSymmetric, Discretisation::S2SOneWay, Discretisation::N2SOneWay,
+                 Discretisation::N2SSymmetric})
+    for (auto p : {Path::SetDown, Path::Stopping})
+      cases.push_back({d, Mesh::NonMatching, Body::Elastic, p, Cells::Tet4});
+  return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(Tetrahedra, StaticFriction, ::testing::ValuesIn(tetrahedra_cases()),
                          [](const auto& param_info) { return name(param_info.param); });
 
 // Steeper than atan(mu_s): tan(30 deg) = 0.577 > 0.5. The block slides from rest at the dynamic
