@@ -1,7 +1,9 @@
 #pragma once
 // Trilinear hexahedron helpers shared by refinement and geometry tests (VTK_HEXAHEDRON order).
+#include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 #include "abut/core/vec3.hpp"
 #include "abut/mesh/mesh.hpp"
@@ -23,6 +25,28 @@ inline HexPoints hex_points(const Mesh& mesh, std::size_t hex) {
   for (int a = 0; a < 8; ++a)
     x[a] = mesh.nodes.position(static_cast<std::size_t>(mesh.hexes[hex][a]));
   return x;
+}
+
+inline Vec3 hex_centroid(const Mesh& mesh, std::size_t hex) {
+  Vec3 sum;
+  for (std::int32_t n : mesh.hexes[hex]) sum += mesh.nodes.position(static_cast<std::size_t>(n));
+  return sum / 8.0;
+}
+
+// A hex face as its sorted node indices: the key under which two hexes find the face they share.
+using HexFace = std::array<std::int32_t, 4>;
+struct HexFaceHash {
+  std::size_t operator()(const HexFace& f) const {
+    std::size_t h = 0;
+    for (std::int32_t n : f) h = h * 1000003u ^ static_cast<std::size_t>(n);
+    return h;
+  }
+};
+inline HexFace sorted_face(const Mesh& mesh, std::size_t hex, int face) {
+  HexFace f;
+  for (int a = 0; a < 4; ++a) f[a] = mesh.hexes[hex][kHexFaces[face][a]];
+  std::sort(f.begin(), f.end());
+  return f;
 }
 
 // Trilinear map of the hex at local coordinates (u, v, w) in [0, 1]^3.

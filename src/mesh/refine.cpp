@@ -28,25 +28,12 @@ namespace abut {
 namespace {
 
 using detail::edge_key;
+using detail::hex_centroid;
 using detail::HexPoints;
 using detail::kHexCorner;
 using detail::kHexEdges;
-using Face = std::array<std::int32_t, 4>;
-
-struct FaceHash {
-  std::size_t operator()(const Face& f) const {
-    std::size_t h = 0;
-    for (std::int32_t n : f) h = h * 1000003u ^ static_cast<std::size_t>(n);
-    return h;
-  }
-};
-
-Face sorted_face(const Mesh& mesh, std::size_t hex, int face) {
-  Face f;
-  for (int a = 0; a < 4; ++a) f[a] = mesh.hexes[hex][kHexFaces[face][a]];
-  std::sort(f.begin(), f.end());
-  return f;
-}
+using detail::sorted_face;
+using Face = detail::HexFace;
 
 // For every face: the hexes on it (one for an exterior face, two for an interior one).
 struct FaceUse {
@@ -54,7 +41,7 @@ struct FaceUse {
   int face = 0;
   int count = 0;
 };
-using FaceUses = std::unordered_map<Face, FaceUse, FaceHash>;
+using FaceUses = std::unordered_map<Face, FaceUse, detail::HexFaceHash>;
 FaceUses face_uses(const Mesh& mesh) {
   FaceUses uses;
   for (std::size_t h = 0; h < mesh.hex_count(); ++h) {
@@ -67,12 +54,6 @@ FaceUses face_uses(const Mesh& mesh) {
     }
   }
   return uses;
-}
-
-Vec3 centroid(const Mesh& mesh, std::size_t hex) {
-  Vec3 sum;
-  for (std::int32_t n : mesh.hexes[hex]) sum += mesh.nodes.position(static_cast<std::size_t>(n));
-  return sum / 8.0;
 }
 
 // Hexes of `part` whose centroid lies in `region` (all of the part without a region).
@@ -91,7 +72,7 @@ std::vector<std::size_t> select(const Mesh& mesh, std::int64_t part,
   for (std::size_t h = 0; h < mesh.hex_count(); ++h) {
     if (mesh.hex_part[h] != part) continue;
     part_exists = true;
-    if (!region || geometry_contains(*region, centroid(mesh, h), mesh)) selected.push_back(h);
+    if (!region || geometry_contains(*region, hex_centroid(mesh, h), mesh)) selected.push_back(h);
   }
   if (!part_exists) {
     fail(where, keyword, "refers to part " + std::to_string(part) + ", which has no hexahedra");

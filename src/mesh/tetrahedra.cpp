@@ -50,32 +50,14 @@ double reference_volume6(const Tet& t) {  // 6 x the signed volume on the unit c
   throw InputError(where, message);
 }
 
-Vec3 centroid(const Mesh& mesh, std::size_t hex) {
-  Vec3 sum;
-  for (std::int32_t n : mesh.hexes[hex]) sum += mesh.nodes.position(static_cast<std::size_t>(n));
-  return sum / 8.0;
-}
-
-using Face = std::array<std::int32_t, 4>;
-struct FaceHash {
-  std::size_t operator()(const Face& f) const {
-    std::size_t h = 0;
-    for (std::int32_t n : f) h = h * 1000003u ^ static_cast<std::size_t>(n);
-    return h;
-  }
-};
-
 // A face shared by a hex that changes and one that does not (or changes to the other type)
 // would not conform: refuse it, naming both hexes.
 void check_interfaces(const Mesh& mesh, const std::vector<int>& target,
                       const std::vector<const SourceLocation*>& where) {
-  std::unordered_map<Face, std::size_t, FaceHash> hex_of_face;
+  std::unordered_map<detail::HexFace, std::size_t, detail::HexFaceHash> hex_of_face;
   for (std::size_t h = 0; h < mesh.hex_count(); ++h) {
-    for (const auto& face : kHexFaces) {
-      Face f;
-      for (int a = 0; a < 4; ++a) f[a] = mesh.hexes[h][face[a]];
-      std::sort(f.begin(), f.end());
-      const auto [it, inserted] = hex_of_face.emplace(f, h);
+    for (int face = 0; face < 6; ++face) {
+      const auto [it, inserted] = hex_of_face.emplace(detail::sorted_face(mesh, h, face), h);
       const std::size_t other = it->second;
       if (inserted || target[other] == target[h]) continue;
       const auto name = [&](std::size_t e) {
@@ -178,7 +160,9 @@ std::vector<std::string> change_to_tetrahedra(Mesh& mesh,
       for (std::size_t h = 0; h < hex_count; ++h) {
         if (mesh.hex_part[h] != part) continue;
         part_has_hexes = true;
-        if (change.region && !geometry_contains(*change.region, centroid(mesh, h), mesh)) continue;
+        if (change.region &&
+            !geometry_contains(*change.region, detail::hex_centroid(mesh, h), mesh))
+          continue;
         chosen.push_back(h);
         if (nodes > target[h]) where[h] = &change.where;
         target[h] = std::max(target[h], nodes);
