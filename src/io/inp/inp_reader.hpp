@@ -188,8 +188,9 @@ class Reader {
   // Reads one card (inp_reader.cpp dispatches it to the keyword's reader).
   void read(const Card& card);
   // The end of the input: resolves every reference and builds the model (inp_finish*.cpp).
-  void note_unattached_nodes();
   DeckResult finish();
+  // A note naming the nodes that no element uses (the static solver gives them no equations).
+  void note_unattached_nodes();
 
   // Locations for messages.
   Loc loc(const Card& c) const { return {c.file, c.line}; }
