@@ -1,6 +1,7 @@
 #include "abut/mesh/mesh.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace abut {
 
@@ -66,6 +67,15 @@ void Mesh::add_hex(std::int64_t id, std::int64_t part, const Hex8& nodes_of_hex,
   hex_part.push_back(part);
   hex_shape.push_back(shape);
   hex_cell.push_back(cell);
+}
+
+void Mesh::take_hexes(Mesh&& from) {
+  hexes = std::move(from.hexes);
+  hex_id = std::move(from.hex_id);
+  hex_part = std::move(from.hex_part);
+  hex_shape = std::move(from.hex_shape);
+  hex_cell = std::move(from.hex_cell);
+  hex_element = std::move(from.hex_element);
 }
 
 }  // namespace abut

@@ -281,12 +281,7 @@ void raise_order(Mesh& mesh, const std::vector<int>& order, const FaceUses& face
     }
   }
   const std::size_t new_nodes = mesh.nodes.size() - nodes_before;
-  mesh.hexes = std::move(out.hexes);
-  mesh.hex_id = std::move(out.hex_id);
-  mesh.hex_part = std::move(out.hex_part);
-  mesh.hex_shape = std::move(out.hex_shape);
-  mesh.hex_cell = std::move(out.hex_cell);
-  mesh.hex_element = std::move(out.hex_element);
+  mesh.take_hexes(std::move(out));
   for (const CellBlock& block : cells.cells)
     for (std::size_t c = 0; c < block.size(); ++c)
       mesh.add_cell(block.type, block.id[c], block.part[c], block.cell(c));

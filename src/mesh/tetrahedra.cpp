@@ -29,7 +29,7 @@ namespace {
 using detail::edge_key;
 using detail::kHexCorner;
 
-// Corner bit code i + 2 j + 4 k of each local node, and its inverse.
+// Corner bit code i + 2 j + 4 k of each local node (kHexCorner's (i, j, k)).
 constexpr int bits_of(int local) {
   return kHexCorner[local][0] + 2 * kHexCorner[local][1] + 4 * kHexCorner[local][2];
 }
@@ -245,12 +245,7 @@ std::vector<std::string> change_to_tetrahedra(Mesh& mesh,
     }
     tets_of_hex[h] = static_cast<std::size_t>(cut.count);
   }
-  mesh.hexes = std::move(kept.hexes);
-  mesh.hex_id = std::move(kept.hex_id);
-  mesh.hex_part = std::move(kept.hex_part);
-  mesh.hex_shape = std::move(kept.hex_shape);
-  mesh.hex_cell = std::move(kept.hex_cell);
-  mesh.hex_element = std::move(kept.hex_element);
+  mesh.take_hexes(std::move(kept));
 
   // 3. One note per (line, part).
   std::vector<std::string> notes;

@@ -152,6 +152,9 @@ struct Mesh {
   // `element`: the user element the hex belongs to (default: itself).
   void add_hex(std::int64_t id, std::int64_t part, const Hex8& nodes_of_hex,
                std::int32_t shape = -1, const HexCell& cell = {}, std::int64_t element = 0);
+  // Replaces the hexahedra and every per-hex array by those of `from` (a hex list built with
+  // add_hex, e.g. by refinement); nodes, shells and cells stay.
+  void take_hexes(Mesh&& from);
   std::int64_t next_node_id() const;
   std::int64_t next_hex_id() const;
 };
