@@ -174,8 +174,8 @@ double clipped_area(std::span<const std::array<double, 2>> subject,
 
 CellOverlap overlap_cell(const QuadCorners& own, const CellBounds& cell, const Vec3& normal,
                          std::span<const std::int32_t> ids, std::span<const QuadCorners> corners,
-                         const FacetParent* own_parent,
-                         std::span<const FacetParent* const> parents) {
+                         const FacetParent* own_parent, std::span<const FacetParent* const> parents,
+                         std::vector<CellSample>* samples) {
   CellOverlap r;
   r.own_parent = own_parent;
   // A basis of the plane, and the cell's centre as its origin (round-off).
@@ -249,6 +249,17 @@ CellOverlap overlap_cell(const QuadCorners& own, const CellBounds& cell, const V
       integrate_face(overlap, own_plane, *own_parent, r.own_face, scale);
     if (r.target_parent[slot] && r.target_parent[slot]->curved())
       integrate_face(overlap, facet_plane, *r.target_parent[slot], r.target_face[slot], scale);
+    if (samples)
+      for (int i = 1; i + 1 < overlap.n; ++i) {
+        const double area = cross2(overlap.v[0], overlap.v[i], overlap.v[i + 1]) / 2.0 * scale;
+        for (const TrianglePoint& q : kTriangleDegree4) {
+          const double l0 = 1.0 - q.l1 - q.l2;
+          const P2 x{l0 * overlap.v[0][0] + q.l1 * overlap.v[i][0] + q.l2 * overlap.v[i + 1][0],
+                     l0 * overlap.v[0][1] + q.l1 * overlap.v[i][1] + q.l2 * overlap.v[i + 1][1]};
+          samples->push_back(
+              {q.weight * area, slot, reference_of(own_plane, x), reference_of(facet_plane, x)});
+        }
+      }
   }
   r.push = r.area > 0.0 ? push * (1.0 / r.area) : normal;
   return r;
@@ -257,7 +268,7 @@ CellOverlap overlap_cell(const QuadCorners& own, const CellBounds& cell, const V
 CellOverlap cover_cell(const std::array<std::int32_t, 4>& own, const CellBounds& cell,
                        const Vec3& normal, std::int32_t partner,
                        std::span<const std::int32_t> candidates, const CoverFacets& other,
-                       const FacetParent* own_parent) {
+                       const FacetParent* own_parent, std::vector<CellSample>* samples) {
   std::array<std::int32_t, kMaxCoverFacets> ids{};
   std::array<QuadCorners, kMaxCoverFacets> corners{};
   std::array<const FacetParent*, kMaxCoverFacets> parents{};
@@ -285,7 +296,7 @@ CellOverlap cover_cell(const std::array<std::int32_t, 4>& own, const CellBounds&
     if (g != partner) add(g);
   const QuadCorners c_own = quad_corners(own, other.x, other.y, other.z);
   CellOverlap o = overlap_cell(c_own, cell, normal, {ids.data(), count}, {corners.data(), count},
-                               own_parent, {parents.data(), count});
+                               own_parent, {parents.data(), count}, samples);
   o.normal = normal;
   return o;
 }

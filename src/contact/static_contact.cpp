@@ -1,6 +1,7 @@
 #include "abut/contact/static_contact.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -18,6 +19,36 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 Vec3 tangential(const Vec3& v, const Vec3& n) { return v - n * dot(v, n); }
+
+// Adds sign N_a at the facet's reference point r to w: the facet's bilinear shape functions on
+// its corners, or, for a facet of a curved face, the face's own on the face's nodes.
+void add_shape(ContactWeights& w, const std::array<std::int32_t, 4>& facet,
+               const FacetParent* parent, const std::array<double, 2>& r, double sign) {
+  if (parent && parent->curved()) {
+    double n[FacetParent::kMaxNodes];
+    parent->at(r[0], r[1], n);
+    for (int a = 0; a < parent->count; ++a) w.add(parent->nodes[a], sign * n[a]);
+    return;
+  }
+  const auto n = quad_shape(r[0], r[1]);
+  for (int a = 0; a < 4; ++a) w.add(facet[a], sign * n[a]);
+}
+
+// The point sum_a w_a x_a - origin of weights over the nodes of `in`.
+Vec3 weighted_point(const ContactWeights& w, const ContactInput& in, const Vec3& origin) {
+  Vec3 x;
+  for (int k = 0; k < w.count; ++k) {
+    const auto i = static_cast<std::size_t>(w.nodes[k]);
+    x += (Vec3{in.x[i], in.y[i], in.z[i]} - origin) * w.weights[k];
+  }
+  return x;
+}
+
+const FacetParent* parent_of(const ContactSurface& s, std::int32_t facet) {
+  return s.parent.empty() || !s.parent[static_cast<std::size_t>(facet)].curved()
+             ? nullptr
+             : &s.parent[static_cast<std::size_t>(facet)];
+}
 
 }  // namespace
 
@@ -104,8 +135,9 @@ void StaticContact::initial_gaps(const ContactInput& initial) {
       shift_[p] = *settings_.clearance - point.gap;
       continue;
     }
-    if (!(point.gap < 0.0)) continue;
-    const double depth = -point.gap;
+    // A cell integrated point by point: its deepest point, so that none starts loaded.
+    if (!(point.least_gap < 0.0)) continue;
+    const double depth = -point.least_gap;
     if (settings_.initial_penetration == InitialPenetration::Shift)
       committed_[p].initial_offset = depth;
     else if (depth > settings_.initial_max)
@@ -171,6 +203,12 @@ void StaticContact::evaluate(const ContactInput& host) {
       double jacobian = 0.0;
       own_normal[p] = quad_normal(c, point_xi_[p], point_eta_[p], jacobian);
       out.position = quad_point(c, point_xi_[p], point_eta_[p]);
+      // A point of a curved face that acts alone lies on the face itself.
+      if (const FacetParent* face = parent_of(secondary_, out.facet); face && !by_cells) {
+        ContactWeights w;
+        add_shape(w, secondary_.facets[out.facet], face, {point_xi_[p], point_eta_[p]}, 1.0);
+        out.position = weighted_point(w, in, Vec3{});
+      }
       out.area = point_weight_[p] * jacobian;
       if (by_cells) {  // the cell's box, and the distance to its farthest corner
         const CellBounds& b = point_cell_[p];
@@ -228,10 +266,17 @@ void StaticContact::evaluate(const ContactInput& host) {
       settings_.stick || !std::holds_alternative<Frictionless>(settings_.tangential_law);
   std::vector<StaticContactElement> slot(np);  // small: weights and a 3 x 3 tangent
   std::vector<std::uint8_t> active(np, 0), slipping(np, 0);
+  // A cell's normal law point by point (mortar.hpp, CellSample). Adhesion keeps the cell's mean
+  // gap: its zone's bond is a history of the cell.
+  const bool pointwise = by_cells && !settings_.adhesion;
   const auto count = static_cast<std::int64_t>(np);
 #pragma omp parallel for schedule(dynamic, 64)
   for (std::int64_t ip = 0; ip < count; ++ip) {
     const auto p = static_cast<std::size_t>(ip);
+    // Each thread's buffers for a cell's samples (kept from point to point).
+    thread_local std::vector<CellSample> samples;
+    thread_local std::vector<ContactWeights> sample_weights;
+    thread_local std::vector<double> sample_gaps;
     StaticContactPoint& out = points_[p];
     History& h = trial_[p];
     const History& c = committed_[p];
@@ -288,8 +333,9 @@ void StaticContact::evaluate(const ContactInput& host) {
           const FacetParent* own_parent =
               secondary_.parent.empty() ? nullptr
                                         : &secondary_.parent[static_cast<std::size_t>(out.facet)];
+          samples.clear();
           const CellOverlap o = cover_cell(own, point_cell_[p], own_normal[p] * -1.0, partner.facet,
-                                           cand, cover, own_parent);
+                                           cand, cover, own_parent, pointwise ? &samples : nullptr);
           if (!(o.area > 0.0)) continue;  // the cell lies beside the other surface
           cell = o;
         }
@@ -300,6 +346,13 @@ void StaticContact::evaluate(const ContactInput& host) {
       }
     }
     if (facet < 0) continue;
+    // A partner on a curved face: the face's own point there (the facet's differs by its sag).
+    const FacetParent* main_face = cell ? nullptr : parent_of(main_, facet);
+    if (main_face) {
+      ContactWeights w;
+      add_shape(w, main_.facets[facet], main_face, {xi, eta}, 1.0);
+      q = weighted_point(w, in, Vec3{});
+    }
     out.paired = true;
     // A cell pushes along its own normal n, from the other surface, at its mean gap over the
     // covered part, with the area of that part.
@@ -309,8 +362,28 @@ void StaticContact::evaluate(const ContactInput& host) {
     }
     const double distance =
         (cell ? cell_mean_gap(own, *cell, cover) : dot(x - q, normal)) - settings_.padding;
-    if (distance >= 0.0) h.initial_offset = 0.0;  // separated: the initial offset has done its job
-    const double gap = distance + h.initial_offset + (shift_.empty() ? 0.0 : shift_[p]);
+    // A cell point by point: each sample's weights (+N own, -phi partner) and distance.
+    const bool by_samples = cell && pointwise;
+    double least = distance;
+    if (by_samples) {
+      sample_weights.resize(samples.size());
+      sample_gaps.resize(samples.size());
+      const Vec3 origin{in.x[own[0]], in.y[own[0]], in.z[own[0]]};  // round-off, cell_mean_gap
+      for (std::size_t i = 0; i < samples.size(); ++i) {
+        const CellSample& sample = samples[i];
+        const auto k = static_cast<std::size_t>(sample.slot);
+        ContactWeights& w = sample_weights[i];
+        w = ContactWeights{};
+        add_shape(w, own, cell->own_parent, sample.own, 1.0);
+        add_shape(w, main_.facets[cell->facet[k]], cell->target_parent[k], sample.target, -1.0);
+        sample_gaps[i] = dot(weighted_point(w, in, origin), normal) - settings_.padding;
+        least = std::min(least, sample_gaps[i]);
+      }
+    }
+    if (least >= 0.0) h.initial_offset = 0.0;  // separated: the initial offset has done its job
+    const double shift = h.initial_offset + (shift_.empty() ? 0.0 : shift_[p]);
+    const double gap = distance + shift;
+    out.least_gap = least + shift;
     // A gap within round-off of the surfaces' size is a touch (d = 0, closed below): surfaces
     // placed on each other (ADJUST, a mesh generated in contact) meet at +-ulps, and would else
     // be open or closed at random.
@@ -342,13 +415,9 @@ void StaticContact::evaluate(const ContactInput& host) {
     } else if (out.node >= 0) {
       wt.add(out.node, 1.0);
     } else {
-      const auto n = quad_shape(point_xi_[p], point_eta_[p]);
-      for (int a = 0; a < 4; ++a) wt.add(own[a], n[a]);
+      add_shape(wt, own, parent_of(secondary_, out.facet), {point_xi_[p], point_eta_[p]}, 1.0);
     }
-    if (!cell) {
-      const auto phi = quad_shape(xi, eta);
-      for (int a = 0; a < 4; ++a) wt.add(main_.facets[facet][a], -phi[a]);
-    }
+    if (!cell) add_shape(wt, main_.facets[facet], main_face, {xi, eta}, -1.0);
     wt = dependents_.expand(wt);  // host nodes only
     out.weights = wt;
     out.partner = facet;
@@ -378,19 +447,61 @@ void StaticContact::evaluate(const ContactInput& host) {
       const bool adhesive = bond && c.in_contact && c.adhered && d < 0.0 && -d <= bond->zone();
       // Open beyond the law's reach. A point exactly touching (d = 0) is closed: it has no
       // pressure yet but its spring, so that bodies that only touch are not left floating.
-      if (!adhesive && (reach_open > 0.0 ? d < -reach_open : d < 0.0)) continue;
-      h.adhered = bond && (d > 0.0 || adhesive || (c.adhered && d >= 0.0));
+      auto open = [reach_open](double depth) {
+        return reach_open > 0.0 ? depth < -reach_open : depth < 0.0;
+      };
       NormalResponse r;
-      if (adhesive) {
+      if (by_samples) {
+        // Each sample by its own gap: the cell's normal spring (StaticContactElement) over the
+        // nodes of its mean weights, which hold every sample's; the cell's pressure, stiffness
+        // and energy are the samples' means, for friction and output.
+        StaticContactElement& e = slot[p];
+        const auto n = static_cast<std::size_t>(wt.count);
+        e.spring_force.assign(n, 0.0);
+        e.spring_stiffness.assign(n * n, 0.0);
+        double sum_a = 0.0, sum_p = 0.0, sum_k = 0.0, sum_e = 0.0;
+        std::array<std::size_t, ContactWeights::kCapacity> local{};
+        for (std::size_t i = 0; i < samples.size(); ++i) {
+          const double g = sample_gaps[i] + shift;
+          const double ds = g > 0.0 && g <= touching ? 0.0 : -g;
+          if (open(ds)) continue;
+          const NormalResponse ri = scaled(abut::evaluate(settings_.normal, ds, settings_.penalty),
+                                           settings_.normal_in_time.at(in.time));
+          const double a = samples[i].area;
+          sum_a += a, sum_p += a * ri.pressure, sum_k += a * ri.stiffness, sum_e += a * ri.energy;
+          const ContactWeights w = dependents_.expand(sample_weights[i]);
+          for (int k = 0; k < w.count; ++k) {
+            local[k] = static_cast<std::size_t>(
+                std::find(wt.nodes.begin(), wt.nodes.begin() + wt.count, w.nodes[k]) -
+                wt.nodes.begin());
+            assert(local[k] < n);  // the mean weights hold the same faces' nodes
+          }
+          const double f = a * settings_.weight * ri.pressure;
+          const double s = a * settings_.weight * ri.stiffness;
+          for (int k = 0; k < w.count; ++k) {
+            e.spring_force[local[k]] += f * w.weights[k];
+            for (int l = 0; l < w.count; ++l)
+              e.spring_stiffness[local[k] * n + local[l]] += s * w.weights[k] * w.weights[l];
+          }
+        }
+        if (!(sum_a > 0.0)) continue;  // every sample open
+        const double inv = 1.0 / cell->area;
+        r = {sum_p * inv, sum_k * inv, sum_e * inv};
+      } else if (adhesive) {
+        h.adhered = true;
         const double slope = bond->max_stress / bond->zone();
         r = {bond->pressure(-d), slope, 0.5 * slope * d * d};
       } else {
+        if (open(d)) continue;
+        h.adhered = bond && (d > 0.0 || (c.adhered && d >= 0.0));
         r = scaled(abut::evaluate(settings_.normal, d, settings_.penalty),
                    settings_.normal_in_time.at(in.time));
       }
       pressure = r.pressure, kn = r.stiffness, energy = r.energy;
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) C[i][j] = kn * normal[i] * normal[j];
+      // A cell integrated point by point carries its normal spring apart (above).
+      if (!by_samples)
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) C[i][j] = kn * normal[i] * normal[j];
       const Vec3 slip = tangential(motion, normal);
       if (adhesive || frictional) out.slip = slip;
       if (adhesive) {
@@ -470,7 +581,9 @@ void StaticContact::evaluate(const ContactInput& host) {
     e.nodes = wt.nodes;
     e.weights = wt.weights;
     e.area = out.area;
-    e.traction = out.push * pressure + traction;
+    e.traction = (by_samples ? Vec3{} : out.push * pressure) + traction;
+    e.push = out.push;
+    e.normal = normal;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) e.tangent[3 * i + j] = C[i][j];
   }
@@ -481,7 +594,7 @@ void StaticContact::evaluate(const ContactInput& host) {
       trial_[p].facet = settings_.tied || settings_.small_sliding ? trial_[p].facet : -1;
       continue;
     }
-    elements_.push_back(slot[p]);
+    elements_.push_back(std::move(slot[p]));
     if (slipping[p]) symmetric_ = false;
   }
   // Tied and small-sliding partners found at the first evaluation stay (also when open).
@@ -498,6 +611,30 @@ void StaticContact::commit() {
   committed_ = trial_;
   xc_ = xe_, yc_ = ye_, zc_ = ze_;
   first_ = false;
+}
+
+void StaticContactElement::add_forces(double* f) const {
+  for (int a = 0; a < count; ++a) {
+    const auto ua = static_cast<std::size_t>(a);
+    const Vec3 fa =
+        traction * (area * weights[ua]) + (spring_force.empty() ? Vec3{} : push * spring_force[ua]);
+    for (int i = 0; i < 3; ++i) f[3 * a + i] += fa[i];
+  }
+}
+
+void StaticContactElement::stiffness(double* k) const {
+  const int n = 3 * count;
+  for (int a = 0; a < count; ++a)
+    for (int b = 0; b < count; ++b) {
+      const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(b);
+      const double s = area * weights[ua] * weights[ub];
+      const double spring = spring_stiffness.empty()
+                                ? 0.0
+                                : spring_stiffness[ua * static_cast<std::size_t>(count) + ub];
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          k[(3 * a + i) * n + 3 * b + j] = s * tangent[3 * i + j] + spring * normal[i] * normal[j];
+    }
 }
 
 Vec3 StaticContact::total_force() const {

@@ -110,14 +110,17 @@ Loads loads(CellType type, int divisions, bool with_faces, bool affine = false) 
   const ContactInput at{mesh.nodes.x, mesh.nodes.y, mesh.nodes.z, {}, {}, {}, 0.0, 0.0, {}};
   StaticContact contact(s, std::move(secondary), std::move(main), {}, at, curved.dependents());
   contact.evaluate(at);
-  for (const StaticContactElement& e : contact.elements())
+  for (const StaticContactElement& e : contact.elements()) {
+    std::vector<double> force(3 * static_cast<std::size_t>(e.count));
+    e.add_forces(force.data());
     for (int a = 0; a < e.count; ++a) {
       EXPECT_LT(e.nodes[a], static_cast<std::int32_t>(mesh.nodes.size()));  // host nodes only
       if (e.nodes[a] < plate_first_node(mesh)) {                            // a node of the cell
-        out.contact[e.nodes[a]] += e.weights[a] * e.area * e.traction.z;
-        out.total_contact += e.weights[a] * e.area * e.traction.z;
+        out.contact[e.nodes[a]] += force[3 * static_cast<std::size_t>(a) + 2];
+        out.total_contact += force[3 * static_cast<std::size_t>(a) + 2];
       }
     }
+  }
   return out;
 }
 

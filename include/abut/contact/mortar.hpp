@@ -2,7 +2,8 @@
 // Cell-wise segment-to-segment integration of surface-to-surface contact (issue 27, item 3).
 //
 // An integration point of a facet stands for a cell of it: the integration cells tile the facet
-// (integration.hpp, FacetPoint's cell). Its traction is taken constant over the cell, and the
+// (integration.hpp, FacetPoint's cell). Its traction is taken constant over the cell (explicit
+// runs; static steps integrate the normal law point by point, CellSample below), and the
 // cell is integrated over its overlap with the facets of the other surface that it faces, in the
 // manner of mortar methods with a piecewise constant multiplier (Puso & Laursen 2004, "A mortar
 // segment-to-segment contact method for large deformation solid mechanics", CMAME 193:601;
@@ -33,6 +34,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "abut/contact/facet_parent.hpp"
 #include "abut/contact/quad.hpp"
@@ -67,16 +69,29 @@ struct CellOverlap {
   std::array<std::array<double, FacetParent::kMaxNodes>, kMaxOverlaps> target_face{};
 };
 
+// A point of a cell's overlap, for integrating a traction that varies over the cell (static
+// steps): the gap is not constant over a cell, and p(mean gap) times the integrals of N misses the
+// integral of p(g) N by a term of the order of the cell's size squared (CalculiX's contact4, a
+// C3D20 cube pressed into another's face: U 5.0e-4 with 8 x 8 cells per face, 1.1e-4 with 16 x
+// 16, exactly as the cells' size, whatever the faces' facets). Dunavant's degree-4 rule on every
+// triangle of each overlap polygon, as CalculiX integrates its clipped polygons point by point.
+struct CellSample {
+  double area = 0.0;                      // its share of the covered area (true, not projected)
+  int slot = 0;                           // the overlap's slot in CellOverlap (facet, face)
+  std::array<double, 2> own{}, target{};  // reference coordinates in the own and slot's facets
+};
+
 // The cell `cell` of facet `own`, projected along `normal` (unit) onto a plane, against the
 // facets `ids` of the other surface with corners `corners` (same order; the first is the
 // point's partner, into whose slot overflowing facets fold). Facets whose projection is
 // degenerate are passed over.
 // `own_parent`, `parents` (parallel to `ids`, or empty): the curved faces the facets are part of
-// (null: none).
+// (null: none). `samples`: when given, the overlap's points are appended to it.
 CellOverlap overlap_cell(const QuadCorners& own, const CellBounds& cell, const Vec3& normal,
                          std::span<const std::int32_t> ids, std::span<const QuadCorners> corners,
                          const FacetParent* own_parent = nullptr,
-                         std::span<const FacetParent* const> parents = {});
+                         std::span<const FacetParent* const> parents = {},
+                         std::vector<CellSample>* samples = nullptr);
 
 // The most facets one cell is clipped against (further candidates are passed over).
 inline constexpr std::size_t kMaxCoverFacets = 64;
@@ -103,7 +118,8 @@ struct CoverFacets {
 CellOverlap cover_cell(const std::array<std::int32_t, 4>& own, const CellBounds& cell,
                        const Vec3& normal, std::int32_t partner,
                        std::span<const std::int32_t> candidates, const CoverFacets& other,
-                       const FacetParent* own_parent = nullptr);
+                       const FacetParent* own_parent = nullptr,
+                       std::vector<CellSample>* samples = nullptr);
 
 // The mean gap over the covered part of a cell, along o.normal: the own side's centroid less the
 // other side's, both weighted by the integrals of the overlap (positive: open); a side on a

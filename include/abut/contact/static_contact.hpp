@@ -107,6 +107,12 @@ struct StaticContactSettings {
 // A contact element of the last evaluation: its nodes (no repeats) with their weights w_a, the
 // point's area A, its traction tau = p n + t and the 3 x 3 tangent C, so that
 //   force on node a   f_a = w_a A tau,      -d f_a / d u_b = A w_a w_b C.
+// A surface-to-surface cell integrated point by point (mortar.hpp, CellSample) carries its normal
+// spring apart, summed over its samples q with areas A_q, weights W_qa, pressures p_q and
+// stiffnesses k_q, and tau is its friction alone:
+//   f_a += F_a m,  F_a = sum_q A_q p_q W_qa;   -d f_a / d u_b += S_ab n n^T,  S_ab = sum_q A_q k_q
+//   W_qa W_qb
+// (m: the cell's push, n: its normal).
 struct StaticContactElement {
   std::array<std::int32_t, ContactWeights::kCapacity> nodes{};
   std::array<double, ContactWeights::kCapacity> weights{};
@@ -114,6 +120,14 @@ struct StaticContactElement {
   double area = 0.0;
   Vec3 traction;
   std::array<double, 9> tangent{};  // row-major
+  std::vector<double> spring_force;      // F_a, count entries; empty: no separate spring
+  std::vector<double> spring_stiffness;  // S_ab, count x count, row-major
+  Vec3 push, normal;
+
+  // Adds the nodal forces f_a to f (3 per node, in the element's node order).
+  void add_forces(double* f) const;
+  // The local stiffness -d f / d u, (3 count) x (3 count), row-major.
+  void stiffness(double* k) const;
 };
 
 struct StaticContactPoint {
@@ -130,6 +144,7 @@ struct StaticContactPoint {
                           // a cell's own, from the other surface)
   Vec3 push;              // direction of the normal traction: n, or a cell's push (mortar.hpp)
   double gap = 0.0;       // negative = penetration (after the initial shifts, see settings)
+  double least_gap = 0.0;  // the smallest over a cell's samples (mortar.hpp); else the gap
   double pressure = 0.0;  // normal traction, positive in compression
   Vec3 traction;          // tangential traction on the point
   Vec3 slip;              // tangential relative motion since the last converged state

@@ -92,17 +92,6 @@ struct ElementEquations {
   }
 };
 
-// The local matrix of a contact element: A w_a w_b C in 3 x 3 blocks.
-void contact_matrix(const StaticContactElement& c, double* k) {
-  const int n = 3 * c.count;
-  for (int a = 0; a < c.count; ++a)
-    for (int b = 0; b < c.count; ++b) {
-      const double s = c.area * c.weights[a] * c.weights[b];
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) k[(3 * a + i) * n + 3 * b + j] = s * c.tangent[3 * i + j];
-    }
-}
-
 }  // namespace
 
 struct StaticSolver::Impl {
@@ -190,6 +179,7 @@ struct StaticSolver::Impl {
     const std::size_t nodes = n / 3;
     const auto neq = static_cast<std::size_t>(dofs.equations());
     std::vector<double> f(n), external(n), applied(n), r(neq), dq(neq), element_values, csr;
+    std::vector<double> element_force(3 * ContactWeights::kCapacity);
     std::vector<double> x(nodes), y(nodes), z(nodes);
     for (int it = 0; it <= max_iterations; ++it) {
       const auto t0 = Clock::now();
@@ -217,10 +207,12 @@ struct StaticSolver::Impl {
         // read in static steps as in explicit runs (docs/deck-reference.md, *STATIC).
         c.evaluate({x, y, z, {}, {}, {}, loads.step_start() + tau, dtau, {}});
         symmetric = symmetric && c.symmetric();
-        for (const StaticContactElement& e : c.elements())
+        for (const StaticContactElement& e : c.elements()) {
+          std::fill(element_force.begin(), element_force.begin() + 3 * e.count, 0.0);
+          e.add_forces(element_force.data());
           for (int a = 0; a < e.count; ++a)
-            for (int k = 0; k < 3; ++k)
-              external[3 * e.nodes[a] + k] += e.weights[a] * e.area * e.traction[k];
+            for (int k = 0; k < 3; ++k) external[3 * e.nodes[a] + k] += element_force[3 * a + k];
+        }
       }
       // The average force: over the element nodal forces before assembly (Abaqus's spatially
       // averaged force, Analysis User's Guide 7.2.3), not over the assembled totals, which
@@ -287,7 +279,7 @@ struct StaticSolver::Impl {
       std::vector<double> k(9 * ContactWeights::kCapacity * ContactWeights::kCapacity);
       for (const StaticContact& c : contacts)
         for (const StaticContactElement& ce : c.elements()) {
-          contact_matrix(ce, k.data());
+          ce.stiffness(k.data());
           ee.transform_add(e, k.data(),
                            &element_values[static_cast<std::size_t>(
                                assembly.value_start(static_cast<std::int64_t>(e)))]);
