@@ -110,9 +110,9 @@ struct StaticContactSettings {
 // A surface-to-surface cell integrated point by point (mortar.hpp, CellSample) carries its normal
 // spring apart, summed over its samples q with areas A_q, weights W_qa, pressures p_q and
 // stiffnesses k_q, and tau is its friction alone:
-//   f_a += F_a m,  F_a = sum_q A_q p_q W_qa;   -d f_a / d u_b += S_ab n n^T,  S_ab = sum_q A_q k_q
-//   W_qa W_qb
-// (m: the cell's push, n: its normal).
+//   f_a += F_a m,  F_a = sum_q A_q p_q W_qa;
+//   -d f_a / d u_b += S_ab l n^T,  S_ab = sum_q A_q k_q W_qa W_qb
+// (m: the cell's push, n: its normal, l: m where m turns steeply from n, else n).
 struct StaticContactElement {
   std::array<std::int32_t, ContactWeights::kCapacity> nodes{};
   std::array<double, ContactWeights::kCapacity> weights{};
@@ -122,7 +122,7 @@ struct StaticContactElement {
   std::array<double, 9> tangent{};  // row-major
   std::vector<double> spring_force;      // F_a, count entries; empty: no separate spring
   std::vector<double> spring_stiffness;  // S_ab, count x count, row-major
-  Vec3 push, normal;
+  Vec3 push, lead, normal;
 
   // Adds the nodal forces f_a to f (3 per node, in the element's node order).
   void add_forces(double* f) const;
