@@ -52,15 +52,16 @@ SLAVE_R = A + 1.5e-3  # block top faces within this radius form the slave surfac
 COMPARISON = """\
 ** Punch force, the sum of RF_z over NPUNCHTOP (quarter model; x 4 for the whole punch):
 **   punch travel [mm]    0.25     0.50     0.75     1.00
-**   abut [N]            84.52   158.11   224.95   283.99
-**   ccx 2.20 [N]        84.67   157.81   224.83   283.74    (abut +0.09 % at 1 mm)
-** Newton iterations per increment: abut 4 5 5 4 (18), ccx 3 5 6 5 (19). One core, otherwise
-** idle machine: abut 18 s (17 s of it in LU factorisations: friction that slips makes the
-** tangent unsymmetric), ccx 10 s. Whole punch 4 x 284 N = 1.14 kN; Boussinesq's rigid flat
-** punch on an elastic half-space gives 2 a E delta / (1 - nu^2) = 1.10 kN.
-** CalculiX integrates over the slave faces clipped by the master faces, abut at Gauss points of
-** the slave faces: the totals agree, the *CONTACT PRINT rows do not match one to one.
-** abut does not print the TOTALS=YES sum of a *NODE PRINT (ccx does): add up its rows."""
+**   abut [N]            84.66   157.96   224.91   283.73
+**   ccx 2.20 [N]        84.67   157.81   224.83   283.74    (abut -0.004 % at 1 mm)
+** Newton iterations per increment: abut 6 4 7 5 (22), ccx 3 5 6 5 (19). One core, otherwise
+** idle machine: abut 11 s (10.6 s of it in LU factorisations: friction that slips and the
+** chamfer's sloped contact make the tangent unsymmetric), ccx 8.4 s. Whole punch 4 x 284 N =
+** 1.14 kN; Boussinesq's rigid flat punch on an elastic half-space gives
+** 2 a E delta / (1 - nu^2) = 1.10 kN.
+** CalculiX integrates over the slave faces clipped by the master faces, abut per integration
+** cell of the slave faces (each cell over its overlaps, point by point): the totals agree, the
+** *CONTACT PRINT rows do not match one to one."""
 
 
 def header():
