@@ -132,6 +132,21 @@ void integrate(const Polygon& poly, const std::array<P2, 4>& first, const std::a
   }
 }
 
+// Calls f(x, w) for each point of Dunavant's degree-4 rule on every triangle of the polygon's fan,
+// w its weight times the triangle's area times `scale`.
+template <class F>
+void for_each_degree4_point(const Polygon& poly, double scale, F&& f) {
+  for (int i = 1; i + 1 < poly.n; ++i) {
+    const double area = cross2(poly.v[0], poly.v[i], poly.v[i + 1]) / 2.0 * scale;
+    for (const TrianglePoint& q : kTriangleDegree4) {
+      const double l0 = 1.0 - q.l1 - q.l2;
+      f(P2{l0 * poly.v[0][0] + q.l1 * poly.v[i][0] + q.l2 * poly.v[i + 1][0],
+           l0 * poly.v[0][1] + q.l1 * poly.v[i][1] + q.l2 * poly.v[i + 1][1]},
+        q.weight * area);
+    }
+  }
+}
+
 // Adds int over the polygon of each N_a of a curved face whose facet has the plane corners
 // `facet`: Dunavant's degree-4 rule on each triangle of a fan, each point's reference coordinates
 // found in the facet (exact for a parallelogram facet, where N_a is a polynomial of degree 3 at
@@ -139,17 +154,11 @@ void integrate(const Polygon& poly, const std::array<P2, 4>& first, const std::a
 void integrate_face(const Polygon& poly, const std::array<P2, 4>& facet, const FacetParent& parent,
                     std::array<double, FacetParent::kMaxNodes>& out, double scale) {
   double n[FacetParent::kMaxNodes];
-  for (int i = 1; i + 1 < poly.n; ++i) {
-    const double area = cross2(poly.v[0], poly.v[i], poly.v[i + 1]) / 2.0 * scale;
-    for (const TrianglePoint& q : kTriangleDegree4) {
-      const double l0 = 1.0 - q.l1 - q.l2;
-      const P2 x{l0 * poly.v[0][0] + q.l1 * poly.v[i][0] + q.l2 * poly.v[i + 1][0],
-                 l0 * poly.v[0][1] + q.l1 * poly.v[i][1] + q.l2 * poly.v[i + 1][1]};
-      const P2 r = reference_of(facet, x);
-      parent.at(r[0], r[1], n);
-      for (int a = 0; a < parent.count; ++a) out[a] += q.weight * area * n[a];
-    }
-  }
+  for_each_degree4_point(poly, scale, [&](const P2& x, double weight) {
+    const P2 r = reference_of(facet, x);
+    parent.at(r[0], r[1], n);
+    for (int a = 0; a < parent.count; ++a) out[a] += weight * n[a];
+  });
 }
 
 // A facet's outward normal m scaled to unit component along n (mortar.hpp: the cell's push); its
@@ -250,16 +259,10 @@ CellOverlap overlap_cell(const QuadCorners& own, const CellBounds& cell, const V
     if (r.target_parent[slot] && r.target_parent[slot]->curved())
       integrate_face(overlap, facet_plane, *r.target_parent[slot], r.target_face[slot], scale);
     if (samples)
-      for (int i = 1; i + 1 < overlap.n; ++i) {
-        const double area = cross2(overlap.v[0], overlap.v[i], overlap.v[i + 1]) / 2.0 * scale;
-        for (const TrianglePoint& q : kTriangleDegree4) {
-          const double l0 = 1.0 - q.l1 - q.l2;
-          const P2 x{l0 * overlap.v[0][0] + q.l1 * overlap.v[i][0] + q.l2 * overlap.v[i + 1][0],
-                     l0 * overlap.v[0][1] + q.l1 * overlap.v[i][1] + q.l2 * overlap.v[i + 1][1]};
-          samples->push_back(
-              {q.weight * area, slot, reference_of(own_plane, x), reference_of(facet_plane, x)});
-        }
-      }
+      for_each_degree4_point(overlap, scale, [&](const P2& x, double weight) {
+        samples->push_back(
+            {weight, slot, reference_of(own_plane, x), reference_of(facet_plane, x)});
+      });
   }
   r.push = r.area > 0.0 ? push * (1.0 / r.area) : normal;
   return r;
