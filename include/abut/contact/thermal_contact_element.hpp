@@ -13,10 +13,11 @@ namespace abut {
 // The nodes of a contact element with their weights, repeated nodes merged (a triangle repeats
 // its third node; a node-to-surface point is one node). At most the nodes of the point's own
 // face and of each face of the other surface its cell covers (mortar.hpp): 4 each for linear
-// facets, up to 8 for the facets of a quadratic face once its dependent corners are replaced by
-// the face's nodes (dependent_nodes.hpp).
+// facets, up to 16 for the facets of a curved face once its dependent corners are replaced by the
+// face's nodes (dependent_nodes.hpp; quad8, quad9, quad16 of the cubic Lagrange hexahedron). add()
+// does not check: this bound holds by construction (it was 8 until 2026-12-04, below a quad9's 9).
 struct ContactWeights {
-  static constexpr int kMaxFaceNodes = 8;
+  static constexpr int kMaxFaceNodes = FacetParent::kMaxNodes;
   static constexpr int kCapacity = kMaxFaceNodes * (1 + kMaxOverlaps);
   std::array<std::int32_t, kCapacity> nodes{};
   std::array<double, kCapacity> weights{};
