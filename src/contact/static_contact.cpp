@@ -51,6 +51,15 @@ Vec3 weighted_point(const ContactWeights& w, const ContactInput& in, const Vec3&
   return x;
 }
 
+// The point of a facet at its reference point r, on its curved face when it has one.
+Vec3 surface_point(const std::array<std::int32_t, 4>& facet, const FacetParent* parent,
+                   const std::array<double, 2>& r, const ContactInput& in) {
+  ContactWeights w;
+  add_shape(w, facet, parent, r, 1.0);
+  return weighted_point(w, in, Vec3{});
+}
+
+// The curved face of a surface's facet, or null.
 const FacetParent* parent_of(const ContactSurface& s, std::int32_t facet) {
   return s.parent.empty() || !s.parent[static_cast<std::size_t>(facet)].curved()
              ? nullptr
@@ -211,11 +220,9 @@ void StaticContact::evaluate(const ContactInput& host) {
       own_normal[p] = quad_normal(c, point_xi_[p], point_eta_[p], jacobian);
       out.position = quad_point(c, point_xi_[p], point_eta_[p]);
       // A point of a curved face that acts alone lies on the face itself.
-      if (const FacetParent* face = parent_of(secondary_, out.facet); face && !by_cells) {
-        ContactWeights w;
-        add_shape(w, secondary_.facets[out.facet], face, {point_xi_[p], point_eta_[p]}, 1.0);
-        out.position = weighted_point(w, in, Vec3{});
-      }
+      if (const FacetParent* face = parent_of(secondary_, out.facet); face && !by_cells)
+        out.position =
+            surface_point(secondary_.facets[out.facet], face, {point_xi_[p], point_eta_[p]}, in);
       out.area = point_weight_[p] * jacobian;
       if (by_cells) {  // the cell's box, and the distance to its farthest corner
         const CellBounds& b = point_cell_[p];
@@ -337,12 +344,10 @@ void StaticContact::evaluate(const ContactInput& host) {
           if (faces(facing)) partner = facing;
         }
         if (faces(partner)) {
-          const FacetParent* own_parent =
-              secondary_.parent.empty() ? nullptr
-                                        : &secondary_.parent[static_cast<std::size_t>(out.facet)];
           samples.clear();
-          const CellOverlap o = cover_cell(own, point_cell_[p], own_normal[p] * -1.0, partner.facet,
-                                           cand, cover, own_parent, pointwise ? &samples : nullptr);
+          const CellOverlap o =
+              cover_cell(own, point_cell_[p], own_normal[p] * -1.0, partner.facet, cand, cover,
+                         parent_of(secondary_, out.facet), pointwise ? &samples : nullptr);
           if (!(o.area > 0.0)) continue;  // the cell lies beside the other surface
           cell = o;
         }
@@ -355,11 +360,7 @@ void StaticContact::evaluate(const ContactInput& host) {
     if (facet < 0) continue;
     // A partner on a curved face: the face's own point there (the facet's differs by its sag).
     const FacetParent* main_face = cell ? nullptr : parent_of(main_, facet);
-    if (main_face) {
-      ContactWeights w;
-      add_shape(w, main_.facets[facet], main_face, {xi, eta}, 1.0);
-      q = weighted_point(w, in, Vec3{});
-    }
+    if (main_face) q = surface_point(main_.facets[facet], main_face, {xi, eta}, in);
     out.paired = true;
     // A cell pushes along its own normal n, from the other surface, at its mean gap over the
     // covered part, with the area of that part.
