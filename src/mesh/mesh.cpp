@@ -69,6 +69,15 @@ void Mesh::add_hex(std::int64_t id, std::int64_t part, const Hex8& nodes_of_hex,
   hex_cell.push_back(cell);
 }
 
+std::vector<std::uint8_t> Mesh::nodes_in_elements() const {
+  std::vector<std::uint8_t> used(nodes.size(), 0);
+  for (std::size_t e = 0; e < solid_count(); ++e)
+    for (const std::int32_t node : solid(e).nodes) used[static_cast<std::size_t>(node)] = 1;
+  for (const Quad4& q : shells)
+    for (const std::int32_t node : q) used[static_cast<std::size_t>(node)] = 1;
+  return used;
+}
+
 void Mesh::take_hexes(Mesh&& from) {
   hexes = std::move(from.hexes);
   hex_id = std::move(from.hex_id);

@@ -146,6 +146,8 @@ struct Mesh {
   void add_cell(CellType type, std::int64_t id, std::int64_t part,
                 std::span<const std::int32_t> nodes_of_cell);
   std::size_t shell_count() const { return shells.size(); }
+  // 1 for each node that a solid or a shell uses, 0 for a node of no element.
+  std::vector<std::uint8_t> nodes_in_elements() const;
   void add_shell(std::int64_t id, std::int64_t part, const Quad4& nodes_of_shell);
   std::int64_t next_shell_id() const;
   // Appends a hex and keeps all per-hex arrays parallel.

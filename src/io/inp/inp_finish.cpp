@@ -304,11 +304,7 @@ void finish_mesh(Reader& r) {
 // equations, as CalculiX does; say so once.
 void Reader::note_unattached_nodes() {
   const Mesh& mesh = model.mesh;
-  std::vector<std::uint8_t> used(mesh.nodes.size(), 0);
-  for (std::size_t e = 0; e < mesh.solid_count(); ++e)
-    for (const std::int32_t node : mesh.solid(e).nodes) used[static_cast<std::size_t>(node)] = 1;
-  for (const Quad4& q : mesh.shells)
-    for (const std::int32_t node : q) used[static_cast<std::size_t>(node)] = 1;
+  const std::vector<std::uint8_t> used = mesh.nodes_in_elements();
   std::vector<std::int64_t> stray;
   for (std::size_t i = 0; i < used.size(); ++i)
     if (!used[i]) stray.push_back(mesh.nodes.id[i]);

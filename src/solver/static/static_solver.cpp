@@ -140,14 +140,12 @@ struct StaticSolver::Impl {
                                          " binds to its facet: put another dof first");
     }
     for (LinearConstraint& eq : tie_constraints(m, tied)) constraints.push_back(std::move(eq));
-    unattached.assign(u.size(), 1);
-    auto attach = [&](std::int32_t node) {
-      for (int d = 0; d < 3; ++d) unattached[3 * static_cast<std::size_t>(node) + d] = 0;
-    };
-    for (std::size_t e = 0; e < elements.count(); ++e)
-      for (const std::int32_t node : elements.nodes(e)) attach(node);
+    // The elements are the mesh's solids (StaticElements refuses shells).
+    std::vector<std::uint8_t> used = m.mesh.nodes_in_elements();
     for (const LinearConstraint& eq : constraints)
-      for (const LinearConstraint::Term& t : eq.terms) attach(t.node);
+      for (const LinearConstraint::Term& t : eq.terms) used[static_cast<std::size_t>(t.node)] = 1;
+    unattached.assign(u.size(), 0);
+    for (std::size_t d = 0; d < unattached.size(); ++d) unattached[d] = !used[d / 3];
     const Nodes& x = m.mesh.nodes;
     for (std::size_t i = 0; i < x.size(); ++i)
       coordinate_size =
