@@ -18,13 +18,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// A push turned from n by more than this slope (about 3 degrees) takes the tangent k m (x) n of
-// its force k g m, unsymmetric (LU); flatter ones keep the symmetric k n (x) n (Cholesky). The
-// choice sets Newton's convergence, not the solution: a punch's 45-degree chamfer took 36
-// iterations with a cut-back with n (x) n, 22 with m (x) n; hueeber1 the same 13 either way, but
-// twice the solve time in LU (examples/punch.inp, CalculiX's hueeber1).
-constexpr double kSteepPush = 0.05;
-
 Vec3 tangential(const Vec3& v, const Vec3& n) { return v - n * dot(v, n); }
 
 // Adds sign N_a at the facet's reference point r to w: the facet's bilinear shape functions on
@@ -279,7 +272,7 @@ void StaticContact::evaluate(const ContactInput& host) {
   const bool frictional =
       settings_.stick || !std::holds_alternative<Frictionless>(settings_.tangential_law);
   std::vector<StaticContactElement> slot(np);  // small: weights and a 3 x 3 tangent
-  std::vector<std::uint8_t> active(np, 0), slipping(np, 0), steep(np, 0);
+  std::vector<std::uint8_t> active(np, 0), slipping(np, 0);
   // A cell's normal law point by point (mortar.hpp, CellSample). Adhesion keeps the cell's mean
   // gap: its zone's bond is a history of the cell.
   const bool pointwise = by_cells && !settings_.adhesion;
@@ -368,12 +361,10 @@ void StaticContact::evaluate(const ContactInput& host) {
       normal = cell->normal;
       out.area = cell->area * settings_.weight;
     }
-    // A cell's pressure pushes along the slope of the facets it covers (mortar.hpp: the gradient
-    // of its energy); its tangent keeps the frozen-geometry part, k n (x) n as CalculiX's does,
-    // or k m (x) n where the push turns steeply (kSteepPush).
+    // A cell's pressure pushes along the slope m of the facets it covers (mortar.hpp): m is the
+    // gradient of the gap along n with respect to the cell's own position, so the frozen-geometry
+    // tangent of the force k g m is k m (x) m, symmetric; for a point (and a flat cover) m = n.
     const Vec3 push = cell ? cell->push : normal;
-    steep[p] = norm(push - normal) > kSteepPush;
-    const Vec3 lead = steep[p] ? push : normal;
     const double distance =
         (cell ? cell_mean_gap(own, *cell, cover) : dot(x - q, normal)) - settings_.padding;
     // A cell point by point: each sample's weights (+N own, -phi partner) and distance.
@@ -515,7 +506,7 @@ void StaticContact::evaluate(const ContactInput& host) {
       // A cell integrated point by point carries its normal spring apart (above).
       if (!by_samples)
         for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) C[i][j] = kn * lead[i] * normal[j];
+          for (int j = 0; j < 3; ++j) C[i][j] = kn * push[i] * push[j];
       const Vec3 slip = tangential(motion, normal);
       if (adhesive || frictional) out.slip = slip;
       if (adhesive) {
@@ -595,8 +586,6 @@ void StaticContact::evaluate(const ContactInput& host) {
     e.area = out.area;
     e.traction = (by_samples ? Vec3{} : out.push * pressure) + traction;
     e.push = push;
-    e.lead = lead;
-    e.normal = normal;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) e.tangent[3 * i + j] = C[i][j];
   }
@@ -608,7 +597,7 @@ void StaticContact::evaluate(const ContactInput& host) {
       continue;
     }
     elements_.push_back(std::move(slot[p]));
-    if (slipping[p] || steep[p]) symmetric_ = false;
+    if (slipping[p]) symmetric_ = false;
   }
   // Tied and small-sliding partners found at the first evaluation stay (also when open).
   if (settings_.tied || settings_.small_sliding)
@@ -646,7 +635,7 @@ void StaticContactElement::stiffness(double* k) const {
                                 : spring_stiffness[ua * static_cast<std::size_t>(count) + ub];
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
-          k[(3 * a + i) * n + 3 * b + j] = s * tangent[3 * i + j] + spring * lead[i] * normal[j];
+          k[(3 * a + i) * n + 3 * b + j] = s * tangent[3 * i + j] + spring * push[i] * push[j];
     }
 }
 

@@ -10,6 +10,7 @@
 // with the samples (test_ccx_conformance.py).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <vector>
@@ -108,6 +109,62 @@ TEST(StaticCellSamples, APartlyOpenCellPushesWithItsClosedPart) {
   const double exact = kPenalty * kSlope / 8;
   std::cout << "partly open cell: force " << pushed << " of " << exact << "\n";
   EXPECT_NEAR(pushed, exact, 0.1 * exact);
+}
+
+// The tangent of a cell whose push m turns from its normal n: sliding the secondary facet rigidly
+// by dx changes every sample's penetration by m . dx (the main plane is z = d0 + s x, the gap is
+// measured along n = z, and the samples keep their places on the facet), so the secondary's forces
+// F_a m change by exactly S_ab m (m . dx): the tangent is S_ab m (x) m. A slide along the surface,
+// dx = e_x, changes the forces by -s S_ab m, which a tangent S_ab n (x) n misses altogether; it
+// made Newton converge linearly on CalculiX's beamcontact with its penalty x 100, where the push of
+// a beam bent against a plate turned by a slope of 0.035 (docs/contact.md). Reference: central
+// differences of the forces, exact to round-off here (linear law, every sample closed).
+TEST(StaticCellSamples, TheTangentIsTheForcesDerivativeUnderARigidSlide) {
+  TiltedPress press;
+  constexpr double kSteepSlope = 0.03;
+  for (int n = 4; n < 8; ++n) press.z[n] = kDepth + kSteepSlope * press.x[n];
+  StaticContact contact = press.contact();
+  // The secondary's nodal forces, summed per direction, with the facet moved by h along axis.
+  auto secondary_force = [&](int axis, double h) {
+    TiltedPress moved = press;
+    std::vector<double>* coordinate[3] = {&moved.x, &moved.y, &moved.z};
+    for (int n = 0; n < 4; ++n) (*coordinate[axis])[static_cast<std::size_t>(n)] += h;
+    contact.evaluate({moved.x, moved.y, moved.z, {}, {}, {}, 0, 0, {}});
+    EXPECT_EQ(contact.elements().size(), 1u);
+    const StaticContactElement& e = contact.elements()[0];
+    const std::vector<double> f = forces(e);
+    std::array<double, 3> sum{};
+    for (int a = 0; a < e.count; ++a)
+      if (e.nodes[static_cast<std::size_t>(a)] < 4)
+        for (int i = 0; i < 3; ++i)
+          sum[static_cast<std::size_t>(i)] +=
+              f[3 * static_cast<std::size_t>(a) + static_cast<std::size_t>(i)];
+    return sum;
+  };
+  contact.evaluate({press.x, press.y, press.z, {}, {}, {}, 0, 0, {}});
+  const StaticContactElement e = contact.elements()[0];
+  const auto m = static_cast<std::size_t>(3 * e.count);
+  std::vector<double> k(m * m);
+  e.stiffness(k.data());
+  constexpr double h = 1e-6;
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::array<double, 3> plus = secondary_force(axis, h), minus = secondary_force(axis, -h);
+    for (int i = 0; i < 3; ++i) {
+      // -d f_i / d u_axis of the secondary's nodes, summed over the slid nodes (columns) too.
+      double tangent = 0.0;
+      for (int a = 0; a < e.count; ++a)
+        for (int b = 0; b < e.count; ++b)
+          if (e.nodes[static_cast<std::size_t>(a)] < 4 && e.nodes[static_cast<std::size_t>(b)] < 4)
+            tangent += k[(3 * static_cast<std::size_t>(a) + static_cast<std::size_t>(i)) * m +
+                         3 * static_cast<std::size_t>(b) + static_cast<std::size_t>(axis)];
+      const double derivative =
+          -(plus[static_cast<std::size_t>(i)] - minus[static_cast<std::size_t>(i)]) / (2 * h);
+      EXPECT_NEAR(tangent, derivative, 1e-6 * kPenalty * kSteepSlope)
+          << "force "
+          << "xyz"[i] << " under a slide along "
+          << "xyz"[axis];
+    }
+  }
 }
 
 }  // namespace

@@ -24,7 +24,7 @@
 // Tangent (-df/du), with the partner point and normal frozen within an iteration as CalculiX
 // does for its face-to-face contact (CalculiX User's Manual 2.x, "Face-to-Face Penalty Contact",
 // eq. 193; the geometric terms of node-to-face contact, eqs. 118-122, are left out):
-//   normal   A w_a w_b (dp/dd) n (x) n
+//   normal   A w_a w_b (dp/dd) m (x) m   (m: the push, the gap's gradient; n for a point)
 //   stick    A w_a w_b k_t (I - n (x) n)
 //   slip     A w_a w_b [(dL/dp)(dp/dd) t^ (x) n - (dL/dV) / dt t^ (x) s^
 //                       + (L k_t / |t_trial|)(I - t^ (x) t^)(I - n (x) n)]
@@ -111,8 +111,8 @@ struct StaticContactSettings {
 // spring apart, summed over its samples q with areas A_q, weights W_qa, pressures p_q and
 // stiffnesses k_q, and tau is its friction alone:
 //   f_a += F_a m,  F_a = sum_q A_q p_q W_qa;
-//   -d f_a / d u_b += S_ab l n^T,  S_ab = sum_q A_q k_q W_qa W_qb
-// (m: the cell's push, n: its normal, l: m where m turns steeply from n, else n).
+//   -d f_a / d u_b += S_ab m m^T,  S_ab = sum_q A_q k_q W_qa W_qb
+// (m: the cell's push, the gradient of its gap).
 struct StaticContactElement {
   std::array<std::int32_t, ContactWeights::kCapacity> nodes{};
   std::array<double, ContactWeights::kCapacity> weights{};
@@ -122,7 +122,7 @@ struct StaticContactElement {
   std::array<double, 9> tangent{};  // row-major
   std::vector<double> spring_force;      // F_a, count entries; empty: no separate spring
   std::vector<double> spring_stiffness;  // S_ab, count x count, row-major
-  Vec3 push, lead, normal;
+  Vec3 push;
 
   // Adds the nodal forces f_a to f (3 per node, in the element's node order).
   void add_forces(double* f) const;
