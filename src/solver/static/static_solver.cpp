@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "abut/contact/static_contact.hpp"
 #include "abut/linalg/linear_solver.hpp"
@@ -170,6 +172,13 @@ struct StaticSolver::Impl {
     const double displacement_tolerance =
         step.displacement_tolerance.value_or(controls.displacement_tolerance);
     const int max_iterations = step.max_iterations.value_or(controls.max_iterations);
+    // An iteration in which a contact point opened or closed does not count against the limit,
+    // up to as many again: Abaqus's severe-discontinuity iterations (Analysis User's Guide 7.1.1)
+    // and CalculiX, which raises its iteration limits while the contact elements change
+    // (checkconvergence.c, iflagact). Points sitting at a gap of zero, as bodies that start
+    // touching, open and close for some iterations before the set settles.
+    int limit = max_iterations;
+    std::vector<std::uint8_t> status, last_status;
     const std::vector<double> start = state;
     loads.prescribe(tau, state);
     dofs.update_dependent(state);
@@ -179,7 +188,7 @@ struct StaticSolver::Impl {
     std::vector<double> f(n), external(n), applied(n), r(neq), dq(neq), element_values, csr;
     std::vector<double> element_force(3 * ContactWeights::kCapacity);
     std::vector<double> x(nodes), y(nodes), z(nodes);
-    for (int it = 0; it <= max_iterations; ++it) {
+    for (int it = 0; it <= limit; ++it) {
       const auto t0 = Clock::now();
       try {
         elements.evaluate(state, nonlinear_geometry);
@@ -199,12 +208,14 @@ struct StaticSolver::Impl {
         z[i] = reference.z[i] + state[3 * i + 2];
       }
       bool symmetric = true;
+      status.clear();
       for (StaticContact& c : contacts) {
         // The increment's length: the sliding speed of rate-dependent friction is the slip over
         // it (laws/tangential.hpp). The time: the total time, which the deck's functions of t
         // read in static steps as in explicit runs (docs/deck-reference.md, *STATIC).
         c.evaluate({x, y, z, {}, {}, {}, loads.step_start() + tau, dtau, {}});
         symmetric = symmetric && c.symmetric();
+        for (const StaticContactPoint& p : c.points()) status.push_back(p.active ? 1 : 0);
         for (const StaticContactElement& e : c.elements()) {
           std::fill(element_force.begin(), element_force.begin() + 3 * e.count, 0.0);
           e.add_forces(element_force.data());
@@ -258,7 +269,9 @@ struct StaticSolver::Impl {
         stats.assembly_seconds += seconds_since(t0);
         return it;
       }
-      if (it == max_iterations) break;
+      if (it > 0 && status != last_status) limit = std::min(limit + 1, 2 * max_iterations);
+      last_status.swap(status);
+      if (it >= limit) break;
       // Tangent: T^T k T of every hex and contact element, assembled.
       ElementEquations ee = base;
       for (const StaticContact& c : contacts)
