@@ -272,7 +272,7 @@ void StaticContact::evaluate(const ContactInput& host) {
   const bool frictional =
       settings_.stick || !std::holds_alternative<Frictionless>(settings_.tangential_law);
   std::vector<StaticContactElement> slot(np);  // small: weights and a 3 x 3 tangent
-  std::vector<std::uint8_t> active(np, 0), slipping(np, 0);
+  std::vector<std::uint8_t> active(np, 0), slipping(np, 0), stabilized(np, 0);
   // A cell's normal law point by point (mortar.hpp, CellSample). Adhesion keeps the cell's mean
   // gap: its zone's bond is a history of the cell.
   const bool pointwise = by_cells && !settings_.adhesion;
@@ -432,6 +432,32 @@ void StaticContact::evaluate(const ContactInput& host) {
       const std::int32_t n = wt.nodes[k];
       motion = motion + Vec3{in.x[n] - xc_[n], in.y[n] - yc_[n], in.z[n] - zc_[n]} * wt.weights[k];
     }
+    // Viscous stabilization (laws/stabilization.hpp): a spring on the motion since the last
+    // converged state, also for an open point within its range, which then carries it alone.
+    const ContactStabilization* damper =
+        settings_.stabilization ? &*settings_.stabilization : nullptr;
+    const double k_damper = damper ? damper->stiffness(gap, stabilization_factor_, in.dt) : 0.0;
+    auto add_damper = [&](StaticContactElement& e) {
+      if (!(k_damper > 0.0)) return;
+      const Vec3 held = damper->project(motion, normal);
+      e.traction = e.traction - held * k_damper;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          e.tangent[3 * i + j] += k_damper * damper->projector(normal, i, j);
+      h.stabilization_work = out.area * k_damper * dot(held, motion);
+    };
+    // An open point is damped only against a partner that faces it (within alpha_edge, as a
+    // cell's cover): the nearest facet of a point beside the other surface may be a side wall,
+    // found one iteration and lost the next.
+    auto damper_alone = [&]() {
+      if (!(k_damper > 0.0) || (!cell && -dot(own_normal[p], normal) < facing_cos)) return;
+      StaticContactElement& e = slot[p];
+      e = StaticContactElement{};
+      e.count = wt.count, e.nodes = wt.nodes, e.weights = wt.weights, e.area = out.area;
+      e.push = normal;
+      add_damper(e);
+      stabilized[p] = 1;
+    };
     double pressure = 0.0, kn = 0.0, energy = 0.0;
     Vec3 traction{};
     double C[3][3] = {};
@@ -489,7 +515,10 @@ void StaticContact::evaluate(const ContactInput& host) {
               e.spring_stiffness[local[k] * n + local[l]] += s * w.weights[k] * w.weights[l];
           }
         }
-        if (!(sum_a > 0.0)) continue;  // every sample open
+        if (!(sum_a > 0.0)) {  // every sample open
+          damper_alone();
+          continue;
+        }
         const double inv = 1.0 / cell->area;
         r = {sum_p * inv, sum_k * inv, sum_e * inv};
       } else if (adhesive) {
@@ -497,7 +526,10 @@ void StaticContact::evaluate(const ContactInput& host) {
         const double slope = bond->max_stress / bond->zone();
         r = {bond->pressure(-d), slope, 0.5 * slope * d * d};
       } else {
-        if (open(d)) continue;
+        if (open(d)) {
+          damper_alone();
+          continue;
+        }
         h.adhered = bond && (d > 0.0 || (c.adhered && d >= 0.0));
         r = scaled(abut::evaluate(settings_.normal, d, settings_.penalty),
                    settings_.normal_in_time.at(in.time));
@@ -588,13 +620,14 @@ void StaticContact::evaluate(const ContactInput& host) {
     e.push = push;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) e.tangent[3 * i + j] = C[i][j];
+    add_damper(e);
   }
   elements_.clear();
   symmetric_ = true;
   for (std::size_t p = 0; p < np; ++p) {
     if (!active[p]) {
       trial_[p].facet = settings_.tied || settings_.small_sliding ? trial_[p].facet : -1;
-      continue;
+      if (!stabilized[p]) continue;
     }
     elements_.push_back(std::move(slot[p]));
     if (slipping[p]) symmetric_ = false;
@@ -609,7 +642,10 @@ void StaticContact::evaluate(const ContactInput& host) {
 }
 
 void StaticContact::commit() {
-  for (const History& h : trial_) friction_work_ += h.slip_work;
+  for (const History& h : trial_) {
+    friction_work_ += h.slip_work;
+    stabilization_work_ += h.stabilization_work;
+  }
   committed_ = trial_;
   xc_ = xe_, yc_ = ye_, zc_ = ze_;
   first_ = false;

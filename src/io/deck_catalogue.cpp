@@ -78,9 +78,10 @@ const std::map<std::string, KeywordReader, std::less<>>& supported() {
       {"*CONTACT_SCALE_PENALTY", read_contact_scale_penalty},
       {"*CONTACT_STIFFNESS", read_contact_stiffness},
       {"*CONTACT_THERMAL", read_contact_thermal},
-      {"*CONTACT_SENSOR", read_contact_sensor},          // abut's own (Radioss sens_ID)
-      {"*CONTACT_RELEASE_BC", read_contact_release_bc},  // abut's own (Radioss IBC)
-      {"*SENSOR", read_sensor},                          // abut's own (Radioss /SENSOR)
+      {"*CONTACT_SENSOR", read_contact_sensor},                // abut's own (Radioss sens_ID)
+      {"*CONTACT_STABILIZATION", read_contact_stabilization},  // abut's own (OptiStruct CNTSTB)
+      {"*CONTACT_RELEASE_BC", read_contact_release_bc},        // abut's own (Radioss IBC)
+      {"*SENSOR", read_sensor},                                // abut's own (Radioss /SENSOR)
   };
   return table;
 }

@@ -61,6 +61,9 @@ void check_exact_tie(const ContactSpec& c) {
   if (c.sensor) refuse(at(c.sensor_where, c.where, "sens_id"), "a sensor cannot switch a tie");
   if (c.release_bc)
     refuse(at(c.release_bc_where, c.where, "ibcx"), "*CONTACT_RELEASE_BC is not supported");
+  if (c.stabilization)
+    refuse(at(c.stabilization->where, c.where, "scale"),
+           "a tie holds from the start: *CONTACT_STABILIZATION has nothing to stabilize");
 }
 
 }  // namespace

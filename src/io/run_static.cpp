@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -120,10 +121,18 @@ void write_contact_rows(CsvHistory& csv, const Model& model, const StaticSolver&
   }
 }
 
+// The work dissipated so far by contact stabilization (*CONTACT_STABILIZATION).
+double stabilization_work(const StaticSolver& solver) {
+  double w = 0.0;
+  for (const StaticContact& c : solver.contacts()) w += c.stabilization_work();
+  return w;
+}
+
 // energy.csv of a static run: the elements' energy (elastic, hourglass and plastic work), the
-// contact springs' energy and the friction work; with heat, the state's heat balance.
+// contact springs' energy and the friction work; with contact stabilization its work; with heat,
+// the state's heat balance.
 void write_energy_row(CsvHistory& csv, const StaticSolver& solver, const StaticHeat& heat,
-                      double time) {
+                      bool stabilized, double time) {
   double internal = 0.0, contact = 0.0, friction = 0.0;
   for (const double e : solver.element_energy()) internal += e;
   for (const StaticContact& c : solver.contacts()) {
@@ -131,6 +140,7 @@ void write_energy_row(CsvHistory& csv, const StaticSolver& solver, const StaticH
     friction += c.friction_work();
   }
   std::vector<CsvHistory::Value> row{internal, contact, friction};
+  if (stabilized) row.emplace_back(stabilization_work(solver));
   if (heat.active()) static_thermal_output::append_energy_values(heat, row);
   csv.write_row(time, row);
 }
@@ -164,6 +174,9 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
   CsvHistory increments(dir / "increments.csv",
                         {"step", "increment", "attempts", "iterations", "step_time", "residual"});
   std::vector<std::string> energy_columns{"internal", "contact", "friction"};
+  const bool stabilized = std::any_of(model.contacts.begin(), model.contacts.end(),
+                                      [](const ContactSpec& c) { return c.stabilization; });
+  if (stabilized) energy_columns.emplace_back("stabilization");
   if (heat.active())
     for (std::string& c : static_thermal_output::energy_columns())
       energy_columns.push_back(std::move(c));
@@ -187,7 +200,7 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
            inc.step_time, inc.residual});
       heat.solve(solver, inc.total_time);
       write_state(dir, series, model, solver, inc.total_time, heat);
-      write_energy_row(energy, solver, heat, inc.total_time);
+      write_energy_row(energy, solver, heat, stabilized, inc.total_time);
       if (contact) write_contact_rows(*contact, model, solver, heat, contact_heat, inc.total_time);
       print_static_results(printed, model, model.static_steps[inc.step], solver, inc);
       printed.flush();
@@ -247,6 +260,16 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
     log << "abut: the static analysis stopped: " << report.message << "\n"
         << fmt::format("abut: the last converged state (t = {:.6g}) is in the ParaView series\n",
                        last_time);
+  }
+  if (stabilized) {
+    // Abaqus's check of its stabilization: the work it dissipated beside the elements' energy.
+    double internal = 0.0;
+    for (const double e : solver.element_energy()) internal += e;
+    const double work = stabilization_work(solver);
+    log << fmt::format(
+        "abut: contact stabilization dissipated {:.4g} ({:.3g}% of the elements' energy {:.4g}; "
+        "a body that loads move across a gap dissipates their work there)\n",
+        work, internal > 0.0 ? 100.0 * work / internal : 0.0, internal);
   }
   if (heat.active()) log << static_thermal_output::end_line(heat);
   log << "abut: ParaView series: " << report.pvd.string() << " (" << series.size()

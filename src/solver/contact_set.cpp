@@ -177,6 +177,10 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
           spec.discretisation_where.file.empty() ? spec.where : spec.discretisation_where,
           "small sliding (TRACK = SMALL) is an option of static steps: the explicit "
           "solver searches partners as the bodies move (give FINITE)");
+    if (spec.stabilization)
+      throw InputError(spec.stabilization->where,
+                       "*CONTACT_STABILIZATION acts in static steps only (OptiStruct CNTSTB): the "
+                       "explicit solver's parts have their mass to hold them");
     // Node-to-surface of a node group: its nodes on the model's exterior faces that hold them.
     const auto [secondary_nodes, faces1] =
         secondary_surface(model, spec.surface1, spec.merge, !spec.no_internal);

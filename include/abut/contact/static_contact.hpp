@@ -47,6 +47,7 @@
 #include "abut/contact/interface.hpp"
 #include "abut/contact/laws/adhesion.hpp"
 #include "abut/contact/laws/normal.hpp"
+#include "abut/contact/laws/stabilization.hpp"
 #include "abut/contact/laws/tangential.hpp"
 #include "abut/contact/laws/thermal.hpp"
 #include "abut/contact/mortar.hpp"
@@ -99,6 +100,9 @@ struct StaticContactSettings {
   // CalculiX), is subtracted until the point first separates (Shift, Radioss Inacti = 5), or is
   // subtracted up to initial_offset and released for good beyond initial_max (Offset, seed 000).
   std::optional<double> clearance;
+  // Viscous stabilization of nearby surfaces (OptiStruct CNTSTB; laws/stabilization.hpp), scaled
+  // by the factor of stabilize(); points open within its range get an element of it alone.
+  std::optional<ContactStabilization> stabilization;
   InitialPenetration initial_penetration = InitialPenetration::Force;
   double initial_offset = 0.0;  // [length], Offset only
   double initial_max = 0.0;     // [length], Offset only
@@ -180,6 +184,9 @@ class StaticContact {
     settings_.penalty = penalty;
     settings_.tied = false;
   }
+  // The stabilization's factor from the next evaluation on: the step's ramp times its period
+  // (laws/stabilization.hpp); 0 switches it off.
+  void stabilize(double factor) { stabilization_factor_ = factor; }
   const StaticContactSettings& settings() const { return settings_; }
 
   std::span<const StaticContactElement> elements() const { return elements_; }
@@ -194,6 +201,8 @@ class StaticContact {
   Vec3 total_force() const;                                // on the secondary surface
   double energy() const;                                   // sum over the points
   double friction_work() const { return friction_work_; }  // dissipated so far (committed)
+  // Dissipated by the stabilization so far (committed).
+  double stabilization_work() const { return stabilization_work_; }
 
  private:
   struct History {
@@ -206,6 +215,7 @@ class StaticContact {
     Vec3 offset;    // tied: relative position x_point - x_partner when the pair formed
     Vec3 total_slip;
     double slip_work = 0.0;
+    double stabilization_work = 0.0;
     double initial_offset = 0.0;  // subtracted from the penetration until the point separates
   };
   void initial_gaps(const ContactInput& initial);
@@ -237,6 +247,8 @@ class StaticContact {
   bool symmetric_ = true;
   bool first_ = true;
   double friction_work_ = 0.0;
+  double stabilization_factor_ = 0.0;
+  double stabilization_work_ = 0.0;
 };
 
 }  // namespace abut

@@ -285,6 +285,15 @@ struct ContactSpec {
   std::optional<Exponential> exponential;
   // *CONTACT PAIR, SMALL SLIDING (OptiStruct TRACK = small): partners found once, at the start.
   bool small_sliding = false;
+  // *CONTACT_STABILIZATION (abut's own; OptiStruct CNTSTB, seed 003 comment 7): viscous damping
+  // of nearby surfaces in static steps (laws/stabilization.hpp), ramped from `start` to `end`
+  // over each step; range empty: the contact's search distance.
+  struct Stabilization {
+    double scale = 1.0, start = 1.0, end = 0.0, tangent_fraction = 1.0;
+    std::optional<double> range;
+    SourceLocation where;
+  };
+  std::optional<Stabilization> stabilization;
   // *CONTACT_SENSOR (Radioss sens_ID): the contact acts while the sensor is on (switches_off:
   // until it is on); t_beg and t_end are then not used (seed 004, comment 10). Explicit runs.
   std::optional<std::int64_t> sensor;

@@ -61,6 +61,15 @@ void check_static(const ContactSpec& spec) {
                "releasing boundary conditions at impact (*CONTACT_RELEASE_BC, Radioss IBC)");
 }
 
+// The damping coefficient of *CONTACT_STABILIZATION at scale 1, as a fraction of the contact's
+// penalty per unit of step time: over one increment the size of the step, a stiffness of 1e-4 of
+// the penalty (1e-3 E / L for the automatic 10 E / L). Small against the elements' stiffness, so
+// that the damping does not hold the loads (its work is reported beside the friction work), yet
+// a pivot 1e-3 of the elements' is far above the solver's singular ratio (1e-13). The fraction
+// is abut's choice: Abaqus's "fixed, small fraction" is not published; OptiStruct's SCALE
+// multiplies its own.
+constexpr double kStabilizationFraction = 1e-4;
+
 // Young's modulus of a part from its initial moduli: E = 9 K G / (3 K + G).
 double young_of(const Model& model, std::int64_t part) {
   const ElasticModuli m = initial_moduli(model.material_of_part(part));
@@ -133,6 +142,13 @@ StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side&
   s.search_distance = 0.5 * thickness;
   s.padding = spec.gaps.padding;
   s.clearance = spec.clearance;
+  // Stabilization: c = scale x kStabilizationFraction x the penalty (laws/stabilization.hpp), to
+  // an opening of LMTGAP, by default the search distance.
+  if (spec.stabilization)
+    s.stabilization =
+        ContactStabilization{spec.stabilization->scale * kStabilizationFraction * s.penalty,
+                             spec.stabilization->range.value_or(s.search_distance),
+                             spec.stabilization->tangent_fraction};
   s.initial_penetration = spec.initial_penetration;
   s.initial_offset = spec.initial_offset;
   s.initial_max = spec.initial_max.value_or(kDefaultInitialMaxFraction * mean_thickness(own.faces));

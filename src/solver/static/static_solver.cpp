@@ -180,6 +180,12 @@ struct StaticSolver::Impl {
     int limit = max_iterations;
     std::vector<std::uint8_t> status, last_status;
     const std::vector<double> start = state;
+    // Contact stabilization (laws/stabilization.hpp): the step's ramp at the increment's end,
+    // times the step's period (the damping's stiffness is c T / dt).
+    for (std::size_t k = 0; k < contacts.size(); ++k)
+      if (const auto& stab = model.contacts[contact_of[k]].stabilization)
+        contacts[k].stabilize((stab->start + (stab->end - stab->start) * tau / step.period) *
+                              step.period);
     loads.prescribe(tau, state);
     dofs.update_dependent(state);
     const std::size_t n = state.size();
