@@ -269,8 +269,22 @@ void StaticContact::evaluate(const ContactInput& host) {
   rules.smooth_reach = std::tan(settings_.edge_angle * kPi / 180.0);
   const double kn_default = settings_.penalty;
   const double kt = settings_.stick_slope > 0.0 ? settings_.stick_slope : kn_default;
-  const bool frictional =
-      settings_.stick || !std::holds_alternative<Frictionless>(settings_.tangential_law);
+  // The tangential law between two parts: the last covering pair's (Radioss /FRICTION), else
+  // the contact's.
+  auto law_between = [this](std::int64_t a, std::int64_t b) -> const TangentialLaw& {
+    const auto& pairs = settings_.pair_frictions;
+    for (auto it = pairs.rbegin(); it != pairs.rend(); ++it) {
+      auto holds = [](const std::vector<std::int64_t>& parts, std::int64_t part) {
+        return std::find(parts.begin(), parts.end(), part) != parts.end();
+      };
+      const bool all = it->parts1.empty();
+      const auto& second = it->parts2.empty() ? it->parts1 : it->parts2;
+      const bool a1 = all || holds(it->parts1, a), b1 = all || holds(it->parts1, b);
+      const bool a2 = all || holds(second, a), b2 = all || holds(second, b);
+      if ((a1 && b2) || (b1 && a2)) return it->law;
+    }
+    return settings_.tangential_law;
+  };
   std::vector<StaticContactElement> slot(np);  // small: weights and a 3 x 3 tangent
   std::vector<std::uint8_t> active(np, 0), slipping(np, 0), stabilized(np, 0);
   // A cell's normal law point by point (mortar.hpp, CellSample). Adhesion keeps the cell's mean
@@ -426,6 +440,21 @@ void StaticContact::evaluate(const ContactInput& host) {
     wt = dependents_.expand(wt);  // host nodes only
     out.weights = wt;
     out.partner = facet;
+    // The point's own part: its facet's, or a node's first facet's (N2S).
+    std::int64_t own_part = 0;
+    if (!settings_.pair_frictions.empty()) {
+      std::int32_t own_facet = out.facet;
+      if (out.node >= 0 && node_facet_start_[static_cast<std::size_t>(out.node)] <
+                               node_facet_start_[static_cast<std::size_t>(out.node) + 1])
+        own_facet = node_facets_[static_cast<std::size_t>(
+            node_facet_start_[static_cast<std::size_t>(out.node)])];
+      if (own_facet >= 0) own_part = secondary_.part[static_cast<std::size_t>(own_facet)];
+    }
+    const TangentialLaw& law =
+        settings_.pair_frictions.empty()
+            ? settings_.tangential_law
+            : law_between(own_part, main_.part[static_cast<std::size_t>(facet)]);
+    const bool frictional = settings_.stick || !std::holds_alternative<Frictionless>(law);
     // Relative motion since the last converged state.
     Vec3 motion{};
     for (int k = 0; k < wt.count; ++k) {
@@ -562,7 +591,7 @@ void StaticContact::evaluate(const ContactInput& host) {
         // The sliding speed: the slip over the increment (in.dt, 0: no rate).
         const double speed = in.dt > 0.0 ? norm(slip) / in.dt : 0.0;
         const SlipState state{std::max(pressure, 0.0), 1.0, speed, in.time, x};
-        const SlipLimits limits = slip_limits(settings_.tangential_law, state);
+        const SlipLimits limits = slip_limits(law, state);
         const double hold = c.in_contact && c.sliding ? limits.slide : limits.stick;
         const double size = norm(trial);
         if (!(kt_p > 0.0)) {
@@ -573,13 +602,12 @@ void StaticContact::evaluate(const ContactInput& host) {
             for (int j = 0; j < 3; ++j) C[i][j] += kt_p * P[i][j] - dkt * slip[i] * normal[j];
         } else {
           const double limit = limits.slide;
-          const double slope = slide_slope(settings_.tangential_law, state);
+          const double slope = slide_slope(law, state);
           // d limit / d u through the sliding speed: (dL/dV) (1/dt) s^, s^ the slip's direction.
           const double slip_size = norm(slip);
-          const Vec3 rate =
-              slip_size > 0.0 && in.dt > 0.0
-                  ? slip * (slide_rate_slope(settings_.tangential_law, state) / (in.dt * slip_size))
-                  : Vec3{};
+          const Vec3 rate = slip_size > 0.0 && in.dt > 0.0
+                                ? slip * (slide_rate_slope(law, state) / (in.dt * slip_size))
+                                : Vec3{};
           const Vec3 th = trial / size;
           traction = th * limit;
           slipping[p] = 1;

@@ -128,6 +128,19 @@ ThermalContactSettings thermal_of(const Model& model, const ContactSpec& spec) {
   return s;
 }
 
+std::vector<PairFriction> pair_frictions_of(const Model& model, const ContactSpec& spec) {
+  std::vector<PairFriction> out;
+  for (const ContactSpec::FrictionPair& fp : spec.friction_pairs) {
+    PairFriction pf;
+    if (fp.set1) pf.parts1 = model.parts_of(*fp.set1);
+    if (fp.set2) pf.parts2 = model.parts_of(*fp.set2);
+    pf.law = law_of_card(fp.law, fp.mu_static, fp.mu_dynamic, fp.c, {}, {}, {});
+    pf.filter = fp.filter;
+    out.push_back(std::move(pf));
+  }
+  return out;
+}
+
 ContactSettings settings_of(const Model& model, const ContactSpec& spec) {
   ContactSettings s;
   s.thermal = thermal_of(model, spec);
@@ -157,14 +170,7 @@ ContactSettings settings_of(const Model& model, const ContactSpec& spec) {
     ps.scale = sc.scale;
     s.pair_scales.push_back(std::move(ps));
   }
-  for (const ContactSpec::FrictionPair& fp : spec.friction_pairs) {
-    PairFriction pf;
-    if (fp.set1) pf.parts1 = model.parts_of(*fp.set1);
-    if (fp.set2) pf.parts2 = model.parts_of(*fp.set2);
-    pf.law = law_of_card(fp.law, fp.mu_static, fp.mu_dynamic, fp.c, {}, {}, {});
-    pf.filter = fp.filter;
-    s.pair_frictions.push_back(std::move(pf));
-  }
+  s.pair_frictions = pair_frictions_of(model, spec);
   const auto wear_rate = [table, term](FunctionRef f) -> WearRateFunction {
     if (!f.valid()) return {};
     return [table, f, term](double pres, double vtang) {

@@ -1,6 +1,7 @@
 #pragma once
 // A *CONTACT card in the contact library's terms (contact_settings_of.cpp).
 #include <string>
+#include <vector>
 
 #include "abut/contact/settings.hpp"
 #include "abut/solver/contact_report.hpp"
@@ -16,6 +17,9 @@ ThermalContactSettings thermal_of(const Model& model, const ContactSpec& spec);
 // *CONTACT_FRICTION, or seed 000's Coulomb mu (constant, or a *FUNCTION of the model's `table`
 // evaluated with term = `term`).
 TangentialLaw tangential_law_of(const ContactSpec& spec, const FunctionTable* table, double term);
+
+// The per-part-pair laws of *CONTACT_FRICTION_PAIR (Radioss /FRICTION), in deck order.
+std::vector<PairFriction> pair_frictions_of(const Model& model, const ContactSpec& spec);
 
 // The contact library's settings of a *CONTACT with its companion cards (all but the surfaces and
 // the penalties, which ContactSet builds from the mesh).

@@ -83,9 +83,10 @@ TEST(StaticContactSetup, ExplicitOnlyFeaturesAreErrorsAtTheirCard) {
         ContactSpec::FrictionPair& pair = c.friction_pairs.emplace_back();
         pair.law = ContactSpec::FrictionLaw::Coulomb;
         pair.mu_static = pair.mu_dynamic = 0.2;
+        pair.filter.kind = FrictionFilter::Kind::Simple;
         pair.where = {"t.k", 12, "", "law"};
       },
-      "friction by part pair (*CONTACT_FRICTION_PAIR) is not supported in static steps");
+      "friction filtering is not supported in static steps");  // a pair's filter, as a contact's
 }
 
 // Small sliding (OptiStruct TRACK = SMALL) pairs points once; the explicit solver searches every

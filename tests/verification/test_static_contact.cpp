@@ -387,6 +387,34 @@ TEST(StaticContact, TrescaSlidingShearIsMdKTimesAreaWhateverThePressure) {
   }
 }
 
+// Friction by part pair in a static step (*CONTACT_FRICTION_PAIR, Radioss /FRICTION fric_ID, seed
+// 004): the contact's Coulomb mu = 0.1, and mu = 0.3 between parts 1 and 2 either way round. The
+// block dragged under p = 100 MPa on A = 1 mm^2 slides at the pair's 0.3 p A = 30 N; with the pair
+// given for part 1 with itself (which no point meets here) at the contact's 0.1 p A = 10 N.
+TEST(StaticContact, FrictionByPartPairReplacesTheContactsLaw) {
+  struct Case {
+    std::int64_t set1, set2;
+    double mu;
+  };
+  for (const Case& c : {Case{2, 1, 0.3}, Case{1, 2, 0.3}, Case{1, 1, 0.1}}) {
+    DraggedBlock b(100.0, 1e-4, 4, [&](ContactSpec& spec) {
+      spec.friction_law = ContactSpec::FrictionLaw::Coulomb;
+      spec.mu_static = spec.mu_dynamic = 0.1;
+      ContactSpec::FrictionPair pair;
+      pair.set1 = EntityRef{EntityType::Part, c.set1, {}};
+      pair.set2 = EntityRef{EntityType::Part, c.set2, {}};
+      pair.law = ContactSpec::FrictionLaw::Coulomb;
+      pair.mu_static = pair.mu_dynamic = 0.3;
+      spec.friction_pairs.push_back(pair);
+    });
+    StaticSolver s(b.m, tight());
+    s.run();
+    const double shear = b.shear(s);
+    std::cout << "pair " << c.set1 << "-" << c.set2 << ": shear " << shear << " N\n";
+    EXPECT_NEAR(shear, c.mu * 100.0, 1e-3 * c.mu * 100.0);
+  }
+}
+
 // Static and dynamic Coulomb (Metafor's CoulombContactMaterial, seed 002), mu_s = 0.5, mu_d = 0.3,
 // p = 100 MPa on A = 1 mm^2, the stick spring k_t = the penalty (2.1e6 N/mm^3): the shear is
 // k_t u A while it sticks, u the drag, up to mu_s p A = 50 N at u = 2.38e-5 mm, then mu_d p A.

@@ -65,6 +65,9 @@ struct StaticContactSettings {
   // Its limits per unit area (normal force p, area 1), at the sliding speed |slip| / dt over the
   // increment (ContactInput::dt).
   TangentialLaw tangential_law = Frictionless{};
+  // Per part pair, over tangential_law (Radioss /FRICTION; settings.hpp); their filters are
+  // the explicit solver's (a static step has no time history to filter).
+  std::vector<PairFriction> pair_frictions;
   double stick_slope = 0.0;    // k_t [stress / length]; 0: the normal penalty
   // Metafor dependencies (laws/dependency.hpp), at the time of the evaluation (ContactInput::time,
   // constant within an increment): the normal law's pressure times f(t) (PEN_NORMALE TM), and

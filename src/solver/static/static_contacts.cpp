@@ -38,8 +38,8 @@ void check_static(const ContactSpec& spec) {
     not_static(spec.normal_where, "a contact sense other than POSITIVE");
   if (!spec.pair_scales.empty())
     not_static(spec.pair_scales.front().where, "*CONTACT_SCALE_PENALTY");
-  if (!spec.friction_pairs.empty())
-    not_static(spec.friction_pairs.front().where, "friction by part pair (*CONTACT_FRICTION_PAIR)");
+  for (const ContactSpec::FrictionPair& fp : spec.friction_pairs)
+    if (fp.filter.kind != FrictionFilter::Kind::None) not_static(fp.where, "friction filtering");
   if (!spec.stiffness_where.file.empty())
     not_static(spec.stiffness_where,
                "*CONTACT_STIFFNESS (the static penalty is pfac of *CONTACT, or 10 E / L)");
@@ -119,6 +119,7 @@ StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side&
   s.small_sliding = spec.small_sliding;
   s.weight = weight;
   s.tangential_law = tangential_law_of(spec, &model.functions, model.time.end_time);
+  s.pair_frictions = pair_frictions_of(model, spec);
   s.stick = spec.friction_law == Law::Stick;
   s.adhesion = spec.adhesion;
   s.tied = spec.friction_law == Law::Freeze;
