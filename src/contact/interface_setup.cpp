@@ -301,6 +301,8 @@ void ContactInterface::build_points(Side& side, const ContactInput& in, double o
   for (std::size_t f = 0; f < surface.size(); ++f) {
     const QuadCorners c = quad_corners(surface.facets[f], in.x, in.y, in.z);
     const std::array<int, 2> cells = cells_of(c);
+    // Radioss Irem_i2 = 1: a facet whose nodes are all removed has no points (its area counts).
+    const bool removed = s.removed_nodes.covers(surface.facets[f]);
     const int cells_xi = cells[0], cells_eta = cells[1];
     for (int j = 0; j < cells_eta; ++j)
       for (int i = 0; i < cells_xi; ++i) {
@@ -329,7 +331,7 @@ void ContactInterface::build_points(Side& side, const ContactInput& in, double o
             for (const double a : {cell.xi0, cell.xi1})
               for (const double b : {cell.eta0, cell.eta1})
                 reach = std::max(reach, norm(quad_point(c, a, b) - x));
-            add_point(static_cast<std::int32_t>(f), -1, xi, eta, weight, cell, reach);
+            if (!removed) add_point(static_cast<std::int32_t>(f), -1, xi, eta, weight, cell, reach);
           }
         }
       }
@@ -344,6 +346,7 @@ void ContactInterface::build_points(Side& side, const ContactInput& in, double o
     std::sort(nodes.begin(), nodes.end());
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
     for (const std::int32_t node : nodes) {
+      if (s.removed_nodes.has(node)) continue;  // Radioss Irem_i2 = 1
       if (node < 0 || static_cast<std::size_t>(node) >= mass_.size() ||
           side.node_facet_start[node] == side.node_facet_start[node + 1])
         throw ContactSetupError("secondary_nodes", "node index " + std::to_string(node) +

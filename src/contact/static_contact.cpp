@@ -91,6 +91,7 @@ StaticContact::StaticContact(StaticContactSettings settings, ContactSurface seco
       for (const auto& f : secondary_.facets) nodes.insert(nodes.end(), f.begin(), f.end());
     std::sort(nodes.begin(), nodes.end());
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    std::erase_if(nodes, [this](std::int32_t n) { return settings_.removed_nodes.has(n); });
     point_node_ = nodes;
     point_facet_.assign(nodes.size(), -1);
     // Facets around each node (for its tributary area).
@@ -108,7 +109,14 @@ StaticContact::StaticContact(StaticContactSettings settings, ContactSurface seco
           node_facets_[fill[secondary_.facets[f][a]]++] = static_cast<std::int32_t>(f);
   } else {
     const std::vector<FacetPoint> rule = facet_rule(settings_.accuracy_level, false, 0);
-    for (std::size_t f = 0; f < secondary_.size(); ++f)
+    for (std::size_t f = 0; f < secondary_.size(); ++f) {
+      // Radioss Irem_i2 = 1: a facet whose nodes (its curved face's, for a facet of one) are all
+      // removed has no points.
+      const FacetParent* face = parent_of(secondary_, static_cast<std::int32_t>(f));
+      if (face ? settings_.removed_nodes.covers(
+                     {face->nodes.data(), static_cast<std::size_t>(face->count)})
+               : settings_.removed_nodes.covers(secondary_.facets[f]))
+        continue;
       for (const FacetPoint& p : rule) {
         point_facet_.push_back(static_cast<std::int32_t>(f));
         point_node_.push_back(-1);
@@ -117,6 +125,7 @@ StaticContact::StaticContact(StaticContactSettings settings, ContactSurface seco
         point_weight_.push_back(p.weight);
         point_cell_.push_back({p.xi0, p.xi1, p.eta0, p.eta1});
       }
+    }
   }
   committed_.assign(point_facet_.size(), History{});
   trial_ = committed_;

@@ -71,7 +71,7 @@ void check_contact_options(const ContactSpec& c) {
 }
 
 void read_contact_discretization(DeckReader& d, Block& b) {
-  const Row r = b.row({"coid", "method", "symmetric", "sliding"});
+  const Row r = b.row({"coid", "method", "symmetric", "sliding", "tied_nodes"});
   const Discretisation method = word_choice(
       r, 1, Discretisation::SurfaceToSurface,
       {{"S2S", Discretisation::SurfaceToSurface}, {"N2S", Discretisation::NodeToSurface}},
@@ -83,7 +83,11 @@ void read_contact_discretization(DeckReader& d, Block& b) {
       word_choice(r, 3, false, {{"FINITE", false}, {"SMALL", true}},
                   "FINITE (partners searched as the bodies move) or SMALL (partners of the "
                   "initial configuration kept; static steps)");
-  refine_contact(d, r, [r, method, symmetric, small_sliding](ContactSpec& c) {
+  // Radioss Irem_i2: the nodes of exact ties (TYPE2) kept as secondary points (3) or not (1).
+  const bool remove_tied = word_choice(
+      r, 4, false, {{"KEEP", false}, {"REMOVE", true}, {"3", false}, {"1", true}},
+      "KEEP (tied nodes stay secondary points, Radioss Irem_i2 = 3) or REMOVE (Irem_i2 = 1)");
+  refine_contact(d, r, [r, method, symmetric, small_sliding, remove_tied](ContactSpec& c) {
     const bool node_set = c.surface1.type == EntityType::NodeSet;
     if (node_set && method == Discretisation::SurfaceToSurface) {
       r.fail(1, "surface 1 of " + contact_at(c) +
@@ -102,6 +106,7 @@ void read_contact_discretization(DeckReader& d, Block& b) {
     c.discretisation = method;
     c.symmetric = symmetric;
     c.small_sliding = small_sliding;
+    c.remove_tied_nodes = remove_tied;
     c.discretisation_where = r.where();
   });
 }

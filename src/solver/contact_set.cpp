@@ -19,6 +19,7 @@
 #include "abut/solver/contact_surfaces.hpp"
 #include "contact_checks.hpp"
 #include "contact_settings_of.hpp"
+#include "tie_search.hpp"
 
 namespace abut {
 
@@ -214,6 +215,7 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
     for (const auto& [part, p] : penalties) report.parts.push_back(p);
     describe(spec, report);
     ContactSettings settings = settings_of(model, spec);
+    if (spec.remove_tied_nodes) settings.removed_nodes = tied_node_set(model);
     // What the contact points may take: the memory still available (a model that would not fit
     // is refused at its *CONTACT line before its points are made).
     settings.memory_limit = available_memory().value_or(settings.memory_limit);

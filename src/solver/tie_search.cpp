@@ -101,6 +101,12 @@ std::vector<TiedNode> find_tied_nodes(const Model& model) {
   return out;
 }
 
+RemovedNodes tied_node_set(const Model& model) {
+  std::vector<std::int32_t> nodes;
+  for (const TiedNode& n : find_tied_nodes(model)) nodes.push_back(n.node);
+  return RemovedNodes(std::move(nodes));
+}
+
 std::vector<LinearConstraint> tie_constraints(const Model& model,
                                               const std::vector<TiedNode>& tied) {
   std::vector<LinearConstraint> out;

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "abut/contact/removed_nodes.hpp"
 #include "abut/core/vec3.hpp"
 #include "abut/solver/model.hpp"
 
@@ -29,6 +30,10 @@ struct TiedNode {
 // binds no node, a node tied by two ties (at the second), and a node that is both tied and a main
 // node of a tie (chains are not resolved).
 std::vector<TiedNode> find_tied_nodes(const Model& model);
+
+// The nodes the exact ties bind, for the contacts that drop them as secondary points (Radioss
+// Irem_i2 = 1, *CONTACT_DISCRETIZATION tied_nodes REMOVE).
+RemovedNodes tied_node_set(const Model& model);
 
 // The linear constraints u_s - sum_a N_a u_a = 0 of the tied nodes, three per node (x, y, z),
 // located at their tie's EXACT field (static steps, model_static.hpp).

@@ -167,5 +167,31 @@ TEST(DeckExactTie, StaticBoundaryConditionOnATiedNode) {
   }
 }
 
+// Radioss Irem_i2 (*CONTACT_DISCRETIZATION tied_nodes, seed 004): a contact 4 between the tied
+// blocks keeps the tied nodes as secondary points (KEEP, Irem_i2 = 3) or drops them (REMOVE,
+// Irem_i2 = 1). Block 2's bottom nodes (4 of its 8) are tied: N2S 8 points -> 4; S2S 6 facets of
+// 4 points -> 5 facets (its bottom facet's nodes are all tied), explicit and static alike.
+TEST(DeckExactTie, AContactMayDropTheTiedNodes) {
+  for (const std::string method : {"N2S", "S2S"})
+    for (const bool remove : {false, true}) {
+      const std::string deck = kBlocks + kTie + "*CONTACT\n4\nP, 2, P, 1, 0.0, 1.0e12\n" +
+                               "*CONTACT_DISCRETIZATION\n4, " + method + ", 0, , " +
+                               (remove ? "REMOVE" : "KEEP") + "\n";
+      const std::size_t expected = method == "N2S" ? (remove ? 4u : 8u) : (remove ? 20u : 24u);
+      Model m = model_of(deck);
+      ASSERT_EQ(m.contacts.size(), 1u);
+      EXPECT_EQ(m.contacts[0].remove_tied_nodes, remove);
+      {
+        const Simulation sim(m);
+        EXPECT_EQ(sim.contact_reports().at(0).points, expected) << method << " " << remove;
+      }
+      m.materials[1].params = m.materials[0].params;  // no rigid material in static steps
+      m.static_steps.push_back(StaticStep{});
+      const StaticSolver solver(m);
+      ASSERT_EQ(solver.contacts().size(), 1u);
+      EXPECT_EQ(solver.contacts()[0].points().size(), expected) << method << " " << remove;
+    }
+}
+
 }  // namespace
 }  // namespace abut

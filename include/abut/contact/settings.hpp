@@ -16,6 +16,7 @@
 #include "abut/contact/laws/normal.hpp"
 #include "abut/contact/laws/tangential.hpp"
 #include "abut/contact/laws/thermal.hpp"
+#include "abut/contact/removed_nodes.hpp"
 #include "abut/contact/stiffness_rule.hpp"
 
 namespace abut {
@@ -105,6 +106,8 @@ struct ContactSettings {
   int accuracy_level = 2;      // S2S: 1 centre point, 2: 2x2 Gauss, >2: 3x3 Gauss per facet
   bool accuracy_edge = false;  // extra integration points in strips along sharp edges
   bool one_way = false;        // only surface 1's points act (else both sides, weight 1/2 each)
+  // Nodes that are no secondary point on either side (Radioss Irem_i2 = 1; removed_nodes.hpp).
+  RemovedNodes removed_nodes;
 
   // Normal direction.
   NormalLaw normal_law = LinearPenalty{};

@@ -68,6 +68,8 @@ struct StaticContactSettings {
   // Per part pair, over tangential_law (Radioss /FRICTION; settings.hpp); their filters are
   // the explicit solver's (a static step has no time history to filter).
   std::vector<PairFriction> pair_frictions;
+  // Nodes that are no secondary point (Radioss Irem_i2 = 1; removed_nodes.hpp).
+  RemovedNodes removed_nodes;
   double stick_slope = 0.0;    // k_t [stress / length]; 0: the normal penalty
   // Metafor dependencies (laws/dependency.hpp), at the time of the evaluation (ContactInput::time,
   // constant within an increment): the normal law's pressure times f(t) (PEN_NORMALE TM), and

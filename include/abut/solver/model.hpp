@@ -194,6 +194,8 @@ struct ContactSpec {
   // *CONTACT_DISCRETIZATION
   Discretisation discretisation = Discretisation::SurfaceToSurface;
   std::optional<bool> symmetric;  // empty: symmetric unless one_way (node groups: one-way)
+  // Radioss Irem_i2 = 1: the nodes that exact ties (TieSpec) tie are no secondary points here.
+  bool remove_tied_nodes = false;
   // *CONTACT_NORMAL
   FunctionRef penalty_curve;  // pressure as a function of penetration (law CURVE)
   ContactSense sense = ContactSense::Positive;

@@ -10,6 +10,7 @@
 #include "abut/solver/curved_faces.hpp"
 #include "solver/contact_set.hpp"
 #include "solver/contact_settings_of.hpp"
+#include "solver/tie_search.hpp"
 
 namespace abut::detail {
 
@@ -110,7 +111,7 @@ double mean_thickness(const std::vector<SkinFace>& faces) {
 
 // One pass: the points of `own` against the faces of `target`.
 StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side& own,
-                        const Side& target, double weight) {
+                        const Side& target, double weight, const RemovedNodes& tied) {
   const Mesh& mesh = model.mesh;
   using Law = ContactSpec::FrictionLaw;
   StaticContactSettings s;
@@ -120,6 +121,7 @@ StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side&
   s.weight = weight;
   s.tangential_law = tangential_law_of(spec, &model.functions, model.time.end_time);
   s.pair_frictions = pair_frictions_of(model, spec);
+  if (spec.remove_tied_nodes) s.removed_nodes = tied;
   s.stick = spec.friction_law == Law::Stick;
   s.adhesion = spec.adhesion;
   s.tied = spec.friction_law == Law::Freeze;
@@ -172,6 +174,10 @@ StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side&
 
 StaticContacts make_static_contacts(const Model& model) {
   StaticContacts out;
+  // The exact ties' nodes, for the contacts that drop them (Radioss Irem_i2 = 1).
+  const bool any_removal = std::any_of(model.contacts.begin(), model.contacts.end(),
+                                       [](const ContactSpec& c) { return c.remove_tied_nodes; });
+  const RemovedNodes tied = any_removal ? tied_node_set(model) : RemovedNodes{};
   for (std::size_t i = 0; i < model.contacts.size(); ++i) {
     const ContactSpec& spec = model.contacts[i];
     check_static(spec);
@@ -185,10 +191,10 @@ StaticContacts make_static_contacts(const Model& model) {
     // sets act one way.
     const bool symmetric = spec.symmetric.value_or(!spec.one_way) && one.nodes.empty();
     const double weight = symmetric ? 0.5 : 1.0;
-    out.passes.push_back(make_pass(model, spec, one, two, weight));
+    out.passes.push_back(make_pass(model, spec, one, two, weight, tied));
     out.contact_of.push_back(i);
     if (symmetric) {
-      out.passes.push_back(make_pass(model, spec, two, one, weight));
+      out.passes.push_back(make_pass(model, spec, two, one, weight, tied));
       out.contact_of.push_back(i);
     }
   }
