@@ -261,6 +261,7 @@ SourceLocation location_of(const ContactSpec& spec, const std::string& setting) 
 void describe(const ContactSpec& spec, ContactReport& r) {
   r.discretisation = spec.discretisation == Discretisation::NodeToSurface ? "N2S" : "S2S";
   r.discretisation += one_way_of(spec) ? " one-way" : " symmetric";
+  if (spec.remove_tied_nodes) r.discretisation += ", tied nodes REMOVE";
   r.normal_law = spec.penalty_curve.valid() ? "CURVE" : "LINEAR";
   r.normal_law += spec.sense == ContactSense::Positive   ? " POSITIVE"
                   : spec.sense == ContactSense::Negative ? " NEGATIVE"

@@ -184,6 +184,8 @@ TEST(DeckExactTie, AContactMayDropTheTiedNodes) {
       {
         const Simulation sim(m);
         EXPECT_EQ(sim.contact_reports().at(0).points, expected) << method << " " << remove;
+        EXPECT_EQ(sim.contact_reports().at(0).discretisation,
+                  method + " one-way" + (remove ? ", tied nodes REMOVE" : ""));
       }
       m.materials[1].params = m.materials[0].params;  // no rigid material in static steps
       m.static_steps.push_back(StaticStep{});
