@@ -13,12 +13,7 @@ using testing::error_of;
 using ::testing::HasSubstr;
 using testing::kBoxModel;
 using testing::model_of;
-
-// The box of kBoxModel in contact with itself is enough for the reader: *CONTACT 5 between
-// part 1 and part 1.
-std::string with_contact(const std::string& extra) {
-  return std::string(kBoxModel) + "*CONTACT\n5\nP, 1, P, 1\n" + extra;
-}
+using testing::with_contact;
 
 TEST(DeckContactThermal, FidThermalAndFricHeatOfContact) {
   const Model m = model_of(std::string(kBoxModel) +

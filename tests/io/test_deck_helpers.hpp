@@ -26,6 +26,12 @@ SI
 // The box model with `extra` keywords after it.
 inline std::string with_box(const std::string& extra) { return std::string(kBoxModel) + extra; }
 
+// The box model in contact with itself, *CONTACT 5 between part 1 and part 1 (enough for the
+// reader of the contact keywords), with `extra` keywords after it.
+inline std::string with_contact(const std::string& extra) {
+  return std::string(kBoxModel) + "*CONTACT\n5\nP, 1, P, 1\n" + extra;
+}
+
 inline DeckResult read(const std::string& text) { return read_deck_string_with_notes(text, "t.k"); }
 inline Model model_of(const std::string& text) { return read_deck_string(text, "t.k"); }
 

@@ -12,11 +12,7 @@ using testing::error_of;
 using ::testing::HasSubstr;
 using testing::kBoxModel;
 using testing::model_of;
-
-// The box of kBoxModel in contact with itself: *CONTACT 5 between part 1 and part 1.
-std::string with_contact(const std::string& extra) {
-  return std::string(kBoxModel) + "*CONTACT\n5\nP, 1, P, 1\n" + extra;
-}
+using testing::with_contact;
 
 // The line of `text` on which the last occurrence of `needle` is (1-based).
 std::size_t line_of(const std::string& text, const std::string& needle) {

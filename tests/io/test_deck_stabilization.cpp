@@ -13,12 +13,8 @@ namespace {
 
 using testing::error_of;
 using ::testing::HasSubstr;
-using testing::kBoxModel;
 using testing::model_of;
-
-std::string with_contact(const std::string& extra) {
-  return std::string(kBoxModel) + "*CONTACT\n5\nP, 1, P, 1\n" + extra;
-}
+using testing::with_contact;
 
 TEST(DeckStabilization, FieldsAndDefaults) {
   const Model d = model_of(with_contact("*CONTACT_STABILIZATION\n5\n"));
