@@ -108,20 +108,12 @@ void ContactInterface::build_parts() {
   std::sort(part_ids_.begin(), part_ids_.end());
   part_ids_.erase(std::unique(part_ids_.begin(), part_ids_.end()), part_ids_.end());
   const std::size_t n = part_ids_.size();
-  auto in = [](const std::vector<std::int64_t>& set, std::int64_t part) {
-    return set.empty() || std::find(set.begin(), set.end(), part) != set.end();
-  };
-  // Every local pair (a, b) that parts1 and parts2 cover, either way round (empty parts2: parts1
-  // with itself), as a * n + b.
+  // Every local pair (a, b) that parts1 and parts2 cover (covers_pair), as a * n + b.
   auto each_covered = [&](const std::vector<std::int64_t>& parts1,
                           const std::vector<std::int64_t>& parts2, auto&& visit) {
-    const std::vector<std::int64_t>& second = parts2.empty() ? parts1 : parts2;
     for (std::size_t a = 0; a < n; ++a)
-      for (std::size_t b = 0; b < n; ++b) {
-        const std::int64_t pa = part_ids_[a], pb = part_ids_[b];
-        if ((in(parts1, pa) && in(second, pb)) || (in(parts1, pb) && in(second, pa)))
-          visit(a * n + b);
-      }
+      for (std::size_t b = 0; b < n; ++b)
+        if (covers_pair(parts1, parts2, part_ids_[a], part_ids_[b])) visit(a * n + b);
   };
   part_scale_.assign(n * n, 1.0);
   for (const PairScale& ps : settings_.pair_scales)  // in order: the last assignment wins

@@ -282,16 +282,8 @@ void StaticContact::evaluate(const ContactInput& host) {
   // the contact's.
   auto law_between = [this](std::int64_t a, std::int64_t b) -> const TangentialLaw& {
     const auto& pairs = settings_.pair_frictions;
-    for (auto it = pairs.rbegin(); it != pairs.rend(); ++it) {
-      auto holds = [](const std::vector<std::int64_t>& parts, std::int64_t part) {
-        return std::find(parts.begin(), parts.end(), part) != parts.end();
-      };
-      const bool all = it->parts1.empty();
-      const auto& second = it->parts2.empty() ? it->parts1 : it->parts2;
-      const bool a1 = all || holds(it->parts1, a), b1 = all || holds(it->parts1, b);
-      const bool a2 = all || holds(second, a), b2 = all || holds(second, b);
-      if ((a1 && b2) || (b1 && a2)) return it->law;
-    }
+    for (auto it = pairs.rbegin(); it != pairs.rend(); ++it)
+      if (covers_pair(it->parts1, it->parts2, a, b)) return it->law;
     return settings_.tangential_law;
   };
   std::vector<StaticContactElement> slot(np);  // small: weights and a 3 x 3 tangent

@@ -3,6 +3,7 @@
 // the library without a deck, a solver or a function table. Lengths, times and stresses are in the
 // caller's units. The defaults are seed 000's (IMPETUS *CONTACT). Inconsistent settings raise
 // ContactSetupError naming the setting in the library's own terms.
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -37,6 +38,17 @@ enum class InitialPenetration {
   Shift,   // Radioss Inacti = 5: the whole d0 subtracted (P' = P - P0) until separation
   Force,   // Radioss Inacti = -1: every initial penetration pushes from the start
 };
+
+// Whether part sets parts1 and parts2 cover the pair of parts (a, b), either way round: an empty
+// parts1 is every part, an empty parts2 is parts1 with itself (PairScale, PairFriction).
+inline bool covers_pair(const std::vector<std::int64_t>& parts1,
+                        const std::vector<std::int64_t>& parts2, std::int64_t a, std::int64_t b) {
+  auto in = [](const std::vector<std::int64_t>& set, std::int64_t part) {
+    return set.empty() || std::find(set.begin(), set.end(), part) != set.end();
+  };
+  const std::vector<std::int64_t>& second = parts2.empty() ? parts1 : parts2;
+  return (in(parts1, a) && in(second, b)) || (in(parts1, b) && in(second, a));
+}
 
 // Abaqus *CONTACT CONTROLS ASSIGNMENT, TYPE=SCALE PENALTY (seed 001): the springs between facets of
 // parts1 and parts2 are scaled. Empty parts1: every part of the interface; empty parts2: parts1
