@@ -19,7 +19,6 @@
 #include "abut/solver/contact_surfaces.hpp"
 #include "contact_checks.hpp"
 #include "contact_settings_of.hpp"
-#include "tie_search.hpp"
 
 namespace abut {
 
@@ -166,7 +165,7 @@ ElasticModuli radioss_moduli(const Model& model, std::int64_t part, const PartPe
 
 ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
                        std::span<const double> vx0, std::span<const double> vy0,
-                       std::span<const double> vz0)
+                       std::span<const double> vz0, const RemovedNodes& tied_nodes)
     : model_(model) {
   const double v_max = max_initial_speed(vx0, vy0, vz0);
   const Nodes& nodes = model.mesh.nodes;
@@ -215,7 +214,7 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
     for (const auto& [part, p] : penalties) report.parts.push_back(p);
     describe(spec, report);
     ContactSettings settings = settings_of(model, spec);
-    if (spec.remove_tied_nodes) settings.removed_nodes = tied_node_set(model);
+    if (spec.remove_tied_nodes) settings.removed_nodes = tied_nodes;
     // What the contact points may take: the memory still available (a model that would not fit
     // is refused at its *CONTACT line before its points are made).
     settings.memory_limit = available_memory().value_or(settings.memory_limit);

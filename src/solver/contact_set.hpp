@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "abut/contact/interface.hpp"
+#include "abut/contact/removed_nodes.hpp"
 #include "abut/contact/tool_contact.hpp"
 #include "abut/mesh/skin.hpp"
 #include "abut/solver/contact_report.hpp"
@@ -27,9 +28,11 @@ SecondarySurface secondary_surface(const Model& model, const EntityRef& surface1
 
 class ContactSet {
  public:
-  // `node_mass`: lumped nodal masses; initial velocities give v_max of the automatic penalty.
+  // `node_mass`: lumped nodal masses; initial velocities give v_max of the automatic penalty;
+  // `tied_nodes`: the exact ties' nodes, which contacts with tied_nodes REMOVE drop.
   ContactSet(const Model& model, std::span<const double> node_mass, std::span<const double> vx0,
-             std::span<const double> vy0, std::span<const double> vz0);
+             std::span<const double> vy0, std::span<const double> vz0,
+             const RemovedNodes& tied_nodes = {});
 
   bool empty() const { return slots_.empty(); }
   // Adds every interface's forces for the state `in`; also keeps them per node for output.

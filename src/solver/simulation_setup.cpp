@@ -218,10 +218,12 @@ void Simulation::Impl::setup() {
   std::vector<std::pair<std::int64_t, std::size_t>> body_of_part;
   for (std::size_t b = 0; b < bodies.size(); ++b) body_of_part.emplace_back(bodies[b].part_id, b);
   bc = resolve_boundary_conditions(model, rigid_body_of_node, body_of_part, rotary_inertia);
-  ties = KinematicTies(model, find_tied_nodes(model), mass, rigid_body_of_node, node_fixed, bc, vhx,
-                       vhy, vhz);
+  std::vector<TiedNode> tied = find_tied_nodes(model);
+  const RemovedNodes tied_nodes = tied_node_set(tied);
+  ties = KinematicTies(model, std::move(tied), mass, rigid_body_of_node, node_fixed, bc, vhx, vhy,
+                       vhz);
 
-  contacts = std::make_unique<ContactSet>(model, mass, vhx, vhy, vhz);
+  contacts = std::make_unique<ContactSet>(model, mass, vhx, vhy, vhz, tied_nodes);
   setup_sensors();
   pressure = PressureLoads(model);
 

@@ -101,9 +101,9 @@ std::vector<TiedNode> find_tied_nodes(const Model& model) {
   return out;
 }
 
-RemovedNodes tied_node_set(const Model& model) {
+RemovedNodes tied_node_set(const std::vector<TiedNode>& tied) {
   std::vector<std::int32_t> nodes;
-  for (const TiedNode& n : find_tied_nodes(model)) nodes.push_back(n.node);
+  for (const TiedNode& n : tied) nodes.push_back(n.node);
   return RemovedNodes(std::move(nodes));
 }
 

@@ -31,9 +31,9 @@ struct TiedNode {
 // node of a tie (chains are not resolved).
 std::vector<TiedNode> find_tied_nodes(const Model& model);
 
-// The nodes the exact ties bind, for the contacts that drop them as secondary points (Radioss
+// The nodes of find_tied_nodes, for the contacts that drop them as secondary points (Radioss
 // Irem_i2 = 1, *CONTACT_DISCRETIZATION tied_nodes REMOVE).
-RemovedNodes tied_node_set(const Model& model);
+RemovedNodes tied_node_set(const std::vector<TiedNode>& tied);
 
 // The linear constraints u_s - sum_a N_a u_a = 0 of the tied nodes, three per node (x, y, z),
 // located at their tie's EXACT field (static steps, model_static.hpp).

@@ -10,7 +10,6 @@
 #include "abut/solver/curved_faces.hpp"
 #include "solver/contact_set.hpp"
 #include "solver/contact_settings_of.hpp"
-#include "solver/tie_search.hpp"
 
 namespace abut::detail {
 
@@ -172,12 +171,8 @@ StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side&
 
 }  // namespace
 
-StaticContacts make_static_contacts(const Model& model) {
+StaticContacts make_static_contacts(const Model& model, const RemovedNodes& tied) {
   StaticContacts out;
-  // The exact ties' nodes, for the contacts that drop them (Radioss Irem_i2 = 1).
-  const bool any_removal = std::any_of(model.contacts.begin(), model.contacts.end(),
-                                       [](const ContactSpec& c) { return c.remove_tied_nodes; });
-  const RemovedNodes tied = any_removal ? tied_node_set(model) : RemovedNodes{};
   for (std::size_t i = 0; i < model.contacts.size(); ++i) {
     const ContactSpec& spec = model.contacts[i];
     check_static(spec);

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "abut/contact/removed_nodes.hpp"
 #include "abut/contact/static_contact.hpp"
 #include "abut/solver/model.hpp"
 
@@ -17,6 +18,7 @@ struct StaticContacts {
   std::vector<std::size_t> contact_of;  // per pass: its index in Model::contacts
 };
 
-StaticContacts make_static_contacts(const Model& model);
+// `tied_nodes`: the exact ties' nodes, which contacts with tied_nodes REMOVE drop.
+StaticContacts make_static_contacts(const Model& model, const RemovedNodes& tied_nodes);
 
 }  // namespace abut::detail

@@ -127,10 +127,10 @@ struct StaticSolver::Impl {
     u.assign(3 * m.mesh.nodes.size(), 0.0);
     reaction.assign(u.size(), 0.0);
     nodal_force.assign(u.size(), 0.0);
-    detail::StaticContacts set = detail::make_static_contacts(m);
+    tied = find_tied_nodes(m);
+    detail::StaticContacts set = detail::make_static_contacts(m, tied_node_set(tied));
     contacts = std::move(set.passes);
     contact_of = std::move(set.contact_of);
-    tied = find_tied_nodes(m);
     constraints = m.equations;
     for (const LinearConstraint& eq : m.equations) {
       const auto& first = eq.terms.front();
