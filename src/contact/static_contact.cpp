@@ -478,9 +478,21 @@ void StaticContact::evaluate(const ContactInput& host) {
     };
     // An open point is damped only against a partner that faces it (within alpha_edge, as a
     // cell's cover): the nearest facet of a point beside the other surface may be a side wall,
-    // found one iteration and lost the next.
+    // found one iteration and lost the next. A node (N2S) faces it when one of its facets does.
+    auto facing_partner = [&]() {
+      if (cell) return true;
+      if (out.node < 0) return -dot(own_normal[p], normal) >= facing_cos;
+      const auto n = static_cast<std::size_t>(out.node);
+      for (std::int32_t k = node_facet_start_[n]; k < node_facet_start_[n + 1]; ++k) {
+        double jacobian = 0.0;
+        const Vec3 facet_normal = quad_normal(
+            quad_corners(secondary_.facets[node_facets_[k]], in.x, in.y, in.z), 0.0, 0.0, jacobian);
+        if (-dot(facet_normal, normal) >= facing_cos) return true;
+      }
+      return false;
+    };
     auto damper_alone = [&]() {
-      if (!(k_damper > 0.0) || (!cell && -dot(own_normal[p], normal) < facing_cos)) return;
+      if (!(k_damper > 0.0) || !facing_partner()) return;
       StaticContactElement& e = slot[p];
       e = StaticContactElement{};
       e.count = wt.count, e.nodes = wt.nodes, e.weights = wt.weights, e.area = out.area;

@@ -96,32 +96,50 @@ TEST(StaticStabilization, CarriesAFloatingBlockAcrossItsGapAndFadesAway) {
     StaticSolver solver(m);
     EXPECT_THROW(solver.run(), StaticConvergenceError);
   }
-  const Model m = read_deck_string(floating_block("*CONTACT_STABILIZATION\n1\n"), "floating.k");
-  StaticControls tight;  // so that the comparison below is the solution's, not Newton's tolerance
-  tight.force_tolerance = 1e-8;
-  tight.displacement_tolerance = 1e-8;
-  StaticSolver solver(m, tight);
-  ASSERT_NO_THROW(solver.run());
-  const Nodes& x = m.mesh.nodes;
-  double travel = 0.0;
-  int top = 0;
-  for (std::size_t i = 0; i < x.size(); ++i)
-    if (std::abs(x.z[i] - (kGap + 2 * kH)) < 1e-9)
-      travel -= solver.displacement()[3 * i + 2], ++top;
-  travel /= top;
-  const double expected =
-      kGap + kPressure / kPfac + kPressure * kH / kSteel + kPressure * kH / kAluminium;
-  double force = 0.0, work = 0.0;
-  const auto passes = solver.contacts();  // symmetric: the second pass acts on the base
-  for (std::size_t k = 0; k < passes.size(); ++k) {
-    force += (k == 0 ? 1.0 : -1.0) * passes[k].total_force().z;
-    work += passes[k].stabilization_work();
+  // Each discretisation: S2S symmetric (the default) and one-way hold the patch test to
+  // round-off, and the travel is held to the closed form. N2S one-way does not hold it (its
+  // pressures are off by up to 14.4% on these meshes, docs/verification.md), and here its nodes on
+  // the base's border (flush with it, nu = 0) open and close: with the default Newton tolerances it
+  // converges, its force is statics and exact, but its travel ends 24% long (0.0362 mm; the block's
+  // border sinks into the base), an open finding of node-to-surface contact on a surface's border
+  // (the note), so the travel is printed, not held, for N2S.
+  struct Cell {
+    const char* discretisation;
+    bool surface_to_surface;
+  };
+  for (const Cell& cell : {Cell{"", true}, Cell{"*CONTACT_DISCRETIZATION\n1, S2S, 0\n", true},
+                           Cell{"*CONTACT_DISCRETIZATION\n1, N2S, 0\n", false}}) {
+    const Model m = read_deck_string(
+        floating_block(std::string(cell.discretisation) + "*CONTACT_STABILIZATION\n1\n"),
+        "floating.k");
+    StaticControls controls;  // tight: the comparison is the solution's, not Newton's tolerance
+    if (cell.surface_to_surface) controls.force_tolerance = controls.displacement_tolerance = 1e-8;
+    StaticSolver solver(m, controls);
+    ASSERT_NO_THROW(solver.run()) << cell.discretisation;
+    const Nodes& x = m.mesh.nodes;
+    double travel = 0.0;
+    int top = 0;
+    for (std::size_t i = 0; i < x.size(); ++i)
+      if (std::abs(x.z[i] - (kGap + 2 * kH)) < 1e-9)
+        travel -= solver.displacement()[3 * i + 2], ++top;
+    travel /= top;
+    const double expected =
+        kGap + kPressure / kPfac + kPressure * kH / kSteel + kPressure * kH / kAluminium;
+    double force = 0.0, work = 0.0;
+    const auto passes = solver.contacts();  // symmetric: the second pass acts on the base
+    for (std::size_t k = 0; k < passes.size(); ++k) {
+      force += (k == 0 ? 1.0 : -1.0) * passes[k].total_force().z;
+      work += passes[k].stabilization_work();
+    }
+    std::cout << "floating block " << cell.discretisation << ": travel " << travel
+              << " mm (closed form " << expected << "), contact force " << force
+              << " N, stabilization work " << work << " N mm\n";
+    if (cell.surface_to_surface) {
+      EXPECT_NEAR(travel, expected, 1e-6 * expected) << cell.discretisation;
+    }
+    EXPECT_NEAR(force, kPressure * kH * kH, 1e-6 * kPressure * kH * kH) << cell.discretisation;
+    EXPECT_GT(work, 0.0) << cell.discretisation;  // it did act
   }
-  std::cout << "floating block: travel " << travel << " mm (closed form " << expected
-            << "), contact force " << force << " N, stabilization work " << work << " N mm\n";
-  EXPECT_NEAR(travel, expected, 1e-6 * expected);
-  EXPECT_NEAR(force, kPressure * kH * kH, 1e-6 * kPressure * kH * kH);
-  EXPECT_GT(work, 0.0);  // it did act
 }
 
 }  // namespace
