@@ -50,9 +50,10 @@ void read_contact_gap(DeckReader& d, Block& b) {
                                   {{"BOTH", Sides::Both},
                                    {"OPENGAP", Sides::Both},
                                    {"NORM", Sides::Normal},
-                                   {"REVNORM", Sides::Reverse}},
-                                  "BOTH (or OPENGAP), NORM or REVNORM (OptiStruct MORIENT; OVERLAP "
-                                  "is not supported yet)");
+                                   {"REVNORM", Sides::Reverse},
+                                   {"OVERLAP", Sides::Overlap}},
+                                  "BOTH (or OPENGAP), NORM, REVNORM or OVERLAP (OptiStruct "
+                                  "MORIENT)");
   refine_contact(d, r, [r, g, sides](ContactSpec& c) {
     c.gaps = g;
     c.main_shell_sides = sides;

@@ -215,14 +215,19 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
     describe(spec, report);
     ContactSettings settings = settings_of(model, spec);
     if (spec.remove_tied_nodes) settings.removed_nodes = tied_nodes;
+    const std::vector<std::uint8_t> overlap_reversed =
+        spec.main_shell_sides == ContactSpec::ShellSides::Overlap
+            ? overlap_sides(model.mesh, faces1, secondary_nodes, faces2)
+            : std::vector<std::uint8_t>{};
     // What the contact points may take: the memory still available (a model that would not fit
     // is refused at its *CONTACT line before its points are made).
     settings.memory_limit = available_memory().value_or(settings.memory_limit);
     try {
-      interfaces_.emplace_back(
-          std::move(settings), contact_surface(model.mesh, faces1, penalty_of, moduli_of),
-          contact_surface(model.mesh, faces2, penalty_of, moduli_of, spec.main_shell_sides),
-          node_mass, initial, secondary_nodes);
+      interfaces_.emplace_back(std::move(settings),
+                               contact_surface(model.mesh, faces1, penalty_of, moduli_of),
+                               contact_surface(model.mesh, faces2, penalty_of, moduli_of,
+                                               spec.main_shell_sides, {}, overlap_reversed),
+                               node_mass, initial, secondary_nodes);
     } catch (const ContactSetupError& e) {
       throw InputError(location_of(spec, e.setting()), e.what());
     }

@@ -4,10 +4,12 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "abut/contact/adjust.hpp"
+#include "abut/contact/shell_orientation.hpp"
 #include "abut/core/error.hpp"
 
 namespace abut {
@@ -16,7 +18,11 @@ ContactSurface contact_surface(
     const Mesh& mesh, std::span<const SkinFace> faces,
     const std::function<double(const SkinFace&)>& penalty_of_face,
     const std::function<ElasticModuli(std::int64_t part)>& moduli_of_part,
-    ContactSpec::ShellSides shell_sides, std::span<const FacetParent> parents) {
+    ContactSpec::ShellSides shell_sides, std::span<const FacetParent> parents,
+    std::span<const std::uint8_t> overlap_reversed) {
+  using Sides = ContactSpec::ShellSides;
+  if (shell_sides == Sides::Overlap && overlap_reversed.size() != faces.size())
+    throw std::invalid_argument("contact_surface: OVERLAP needs one side per face");
   ContactSurface s;
   s.facets.reserve(faces.size());
   for (std::size_t i = 0; i < faces.size(); ++i) {
@@ -24,9 +30,10 @@ ContactSurface contact_surface(
     // The facets a face adds (a shell's sides: plain) have its parent.
     if (!parents.empty()) s.parent.resize(s.size(), FacetParent{});
     const ElasticModuli m = moduli_of_part ? moduli_of_part(f.part) : ElasticModuli{};
-    if (f.shell >= 0 && shell_sides != ContactSpec::ShellSides::Both) {
-      s.add_shell_side(f.nodes, f.part, penalty_of_face(f), f.thickness,
-                       shell_sides == ContactSpec::ShellSides::Reverse);
+    if (f.shell >= 0 && shell_sides != Sides::Both) {
+      const bool reverse =
+          shell_sides == Sides::Overlap ? overlap_reversed[i] != 0 : shell_sides == Sides::Reverse;
+      s.add_shell_side(f.nodes, f.part, penalty_of_face(f), f.thickness, reverse);
       s.element.back() = element_index(mesh, f);
       continue;
     }
@@ -45,6 +52,28 @@ ContactSurface contact_surface(
   }
   if (!parents.empty()) s.parent.resize(s.size(), FacetParent{});
   return s;
+}
+
+std::vector<std::uint8_t> overlap_sides(const Mesh& mesh, std::span<const SkinFace> secondary_faces,
+                                        std::span<const std::int32_t> secondary_nodes,
+                                        std::span<const SkinFace> main_faces) {
+  std::vector<std::int32_t> points(secondary_nodes.begin(), secondary_nodes.end());
+  for (const SkinFace& f : secondary_faces)
+    points.insert(points.end(), f.nodes.begin(), f.nodes.end());
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  std::vector<std::array<std::int32_t, 4>> shells;
+  std::vector<std::size_t> face_of;
+  for (std::size_t i = 0; i < main_faces.size(); ++i)
+    if (main_faces[i].shell >= 0) {
+      shells.push_back(main_faces[i].nodes);
+      face_of.push_back(i);
+    }
+  const std::vector<std::uint8_t> reversed =
+      overlap_push_reversed(shells, mesh.nodes.x, mesh.nodes.y, mesh.nodes.z, points);
+  std::vector<std::uint8_t> out(main_faces.size(), 0);
+  for (std::size_t k = 0; k < shells.size(); ++k) out[face_of[k]] = reversed[k];
+  return out;
 }
 
 std::int32_t element_index(const Mesh& mesh, const SkinFace& f) {

@@ -105,8 +105,8 @@ TEST(DeckContactGap, Errors) {
               HasSubstr("expected a padding >= 0"));
   EXPECT_THAT(error_at("*CONTACT_GAP\n3, 3, , , , , , 1e-3\n", l, "gpad"),
               HasSubstr("cannot be combined with igap 3"));
-  EXPECT_THAT(error_at("*CONTACT_GAP\n3, , , , , , , , OVERLAP\n", l, "shell_side"),
-              HasSubstr("OVERLAP is not supported yet"));
+  EXPECT_THAT(error_at("*CONTACT_GAP\n3, , , , , , , , SIDEWAYS\n", l, "shell_side"),
+              HasSubstr("NORM, REVNORM or OVERLAP"));
   EXPECT_THAT(error_at("*CONTACT_GAP\n3, , , , , , , , , 3\n", l, "ishape"),
               HasSubstr("SQUARE (Radioss Ishape 1) or ROUND (Ishape 2)"));
 }

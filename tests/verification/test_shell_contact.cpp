@@ -169,6 +169,29 @@ TEST(ShellContact, OneSidedShellPushesEverythingToItsSide) {
       }
 }
 
+// OptiStruct MORIENT OVERLAP (seed 003: "Slave and master bodies overlap"; the user guide: the
+// contact then pushes the bodies apart, as for a fitted bolt), *CONTACT_GAP shell_side OVERLAP:
+// the block starts with its face through the plate's mid-surface by kSink / 2, from above (gravity
+// down) or from below (gravity up). Each facet pushes back to the side the block came from, on
+// the mid-surface as NORM / REVNORM do, so the block rests with its face kSink through it
+// (pfac A d = m g). With the plate's normal +z, that is NORM from above and REVNORM from below;
+// OPENGAP (two-sided) would push it on through. Node-to-surface and surface-to-surface.
+TEST(ShellContact, OverlappingBlockIsPushedBackTheWayItCame) {
+  for (const std::string method : {"S2S", "N2S"})
+    for (const bool below : {false, true}) {
+      Case c;
+      c.from_below = below;
+      c.method = method;
+      c.symmetric = "0";
+      c.start = -0.5 * kSink;
+      c.keywords = "*CONTACT_GAP\n1, , , , , , , , OVERLAP\n";
+      const double face = face_height(c);
+      std::cout << method << (below ? " below" : " above") << ", OVERLAP: face " << face
+                << " m from the mid-surface\n";
+      EXPECT_NEAR(face, -kSink, 1e-6 * kSink) << method << " " << below;
+    }
+}
+
 // Radioss Ishape (seed 004, comment 4; *CONTACT_GAP ishape): a rigid shell sheet 0.1 x 0.1 m,
 // 10 mm thick (g_s = 5 mm), its rotations held, rests under gravity on a held rigid shell plate
 // 10 mm thick (g_m = 5 mm) whose free border lies 2 mm short of the sheet's last row of nodes

@@ -19,14 +19,22 @@ namespace abut {
 
 // `penalty_of_face`: pfac of each facet; `moduli_of_part`: bulk and shear modulus of each part
 // (Radioss stiffness rules: B for solids, E for shells; may be empty).
-// `shell_sides`: both sides of each shell, or one (OptiStruct MORIENT NORM / REVNORM).
-// `parents`: empty, or the curved face of each of `faces` (curved_faces.hpp).
+// `shell_sides`: both sides of each shell, or one (OptiStruct MORIENT NORM / REVNORM; OVERLAP:
+// the side `overlap_reversed` gives each face, shell_orientation.hpp). `parents`: empty, or the
+// curved face of each of `faces` (curved_faces.hpp).
 ContactSurface contact_surface(
     const Mesh& mesh, std::span<const SkinFace> faces,
     const std::function<double(const SkinFace&)>& penalty_of_face,
     const std::function<ElasticModuli(std::int64_t part)>& moduli_of_part = {},
     ContactSpec::ShellSides shell_sides = ContactSpec::ShellSides::Both,
-    std::span<const FacetParent> parents = {});
+    std::span<const FacetParent> parents = {}, std::span<const std::uint8_t> overlap_reversed = {});
+
+// OptiStruct MORIENT OVERLAP: for each of `main_faces`, whether its shell pushes against its
+// normal, from where the secondary surface's nodes (`secondary_faces`' and `secondary_nodes`) lie
+// through the shells at the start (shell_orientation.hpp). Entries of solid faces are 0.
+std::vector<std::uint8_t> overlap_sides(const Mesh& mesh, std::span<const SkinFace> secondary_faces,
+                                        std::span<const std::int32_t> secondary_nodes,
+                                        std::span<const SkinFace> main_faces);
 
 // Element-based automatic penalty (*CONTACT_STIFFNESS ELEMENT, in the spirit of Abaqus/Explicit's
 // default general-contact penalty, seed 001): the facet's spring on its lightest node adds at most

@@ -274,8 +274,9 @@ struct ContactSpec {
   GapSettings gaps;         // *CONTACT_GAP
   // *CONTACT_GAP shell_side (OptiStruct MORIENT, seed 003): which sides of surface 2's shells act.
   // Both: two-sided shells (OPENGAP); Normal / Reverse: one side on the mid-surface (NORM,
-  // REVNORM; ContactSurface::add_shell_side).
-  enum class ShellSides { Both, Normal, Reverse } main_shell_sides = ShellSides::Both;
+  // REVNORM; ContactSurface::add_shell_side); Overlap: one side per facet, facing away from the
+  // secondary nodes through it at the start (OVERLAP; shell_orientation.hpp).
+  enum class ShellSides { Both, Normal, Reverse, Overlap } main_shell_sides = ShellSides::Both;
   ErosionSettings erosion;  // *CONTACT_EROSION
   EdgeSettings edges;       // *CONTACT_EDGE
   SourceLocation gap_where, erosion_where, edge_where;
