@@ -10,6 +10,7 @@ std::int32_t DependentNodes::add(std::span<const std::int32_t> nodes,
   node.insert(node.end(), nodes.begin(), nodes.end());
   weight.insert(weight.end(), weights.begin(), weights.end());
   start.push_back(static_cast<std::int32_t>(node.size()));
+  if (!offset.empty()) offset.resize(3 * size(), 0.0);
   return first + static_cast<std::int32_t>(size()) - 1;
 }
 
@@ -31,6 +32,7 @@ void DependentNodes::extend(std::span<const double> x, std::span<const double> y
       const auto a = static_cast<std::size_t>(node[t]);
       px += weight[t] * x[a], py += weight[t] * y[a], pz += weight[t] * z[a];
     }
+    if (!offset.empty()) px += offset[3 * k], py += offset[3 * k + 1], pz += offset[3 * k + 2];
     ex.push_back(px), ey.push_back(py), ez.push_back(pz);
   }
 }

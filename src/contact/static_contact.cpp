@@ -63,11 +63,13 @@ const FacetParent* parent_of(const ContactSurface& s, std::int32_t facet) {
 
 StaticContact::StaticContact(StaticContactSettings settings, ContactSurface secondary,
                              ContactSurface main, std::span<const std::int32_t> secondary_nodes,
-                             const ContactInput& initial, DependentNodes dependents)
+                             const ContactInput& initial, DependentNodes dependents,
+                             NagataSmoothing smoothing)
     : settings_(settings),
       secondary_(std::move(secondary)),
       main_(std::move(main)),
-      dependents_(std::move(dependents)) {
+      dependents_(std::move(dependents)),
+      smoothing_(std::move(smoothing)) {
   for (const ContactSurface* s : {&secondary_, &main_})
     if (!s->parent.empty() && s->parent.size() != s->size())
       throw std::invalid_argument(
@@ -110,12 +112,18 @@ StaticContact::StaticContact(StaticContactSettings settings, ContactSurface seco
   } else {
     const std::vector<FacetPoint> rule = facet_rule(settings_.accuracy_level, false, 0);
     for (std::size_t f = 0; f < secondary_.size(); ++f) {
-      // Radioss Irem_i2 = 1: a facet whose nodes (its curved face's, for a facet of one) are all
-      // removed has no points.
+      // Radioss Irem_i2 = 1: a facet whose nodes (its curved face's, for a facet of one; of
+      // those the host's: a smoothed facet's patch has dependent mid-points) are all removed has
+      // no points.
       const FacetParent* face = parent_of(secondary_, static_cast<std::int32_t>(f));
-      if (face ? settings_.removed_nodes.covers(
-                     {face->nodes.data(), static_cast<std::size_t>(face->count)})
-               : settings_.removed_nodes.covers(secondary_.facets[f]))
+      std::vector<std::int32_t> host;
+      if (face)
+        for (int a = 0; a < face->count; ++a)
+          if (dependents_.empty() || face->nodes[a] < dependents_.first)
+            host.push_back(face->nodes[a]);
+      if (settings_.removed_nodes.covers(face
+                                             ? std::span<const std::int32_t>(host)
+                                             : std::span<const std::int32_t>(secondary_.facets[f])))
         continue;
       for (const FacetPoint& p : rule) {
         point_facet_.push_back(static_cast<std::int32_t>(f));
@@ -170,6 +178,7 @@ void StaticContact::initial_gaps(const ContactInput& initial) {
 
 ContactInput StaticContact::extended(const ContactInput& host) {
   if (dependents_.empty()) return host;
+  smoothing_.update(host.x, host.y, host.z, dependents_);
   dependents_.extend(host.x, host.y, host.z, ex_, ey_, ez_);
   ContactInput in = host;
   in.x = ex_, in.y = ey_, in.z = ez_;

@@ -80,6 +80,7 @@ const std::map<std::string, KeywordReader, std::less<>>& supported() {
       {"*CONTACT_THERMAL", read_contact_thermal},
       {"*CONTACT_SENSOR", read_contact_sensor},                // abut's own (Radioss sens_ID)
       {"*CONTACT_STABILIZATION", read_contact_stabilization},  // abut's own (OptiStruct CNTSTB)
+      {"*CONTACT_SMOOTHING", read_contact_smoothing},          // abut's own (OptiStruct SMOOTH)
       {"*CONTACT_RELEASE_BC", read_contact_release_bc},        // abut's own (Radioss IBC)
       {"*SENSOR", read_sensor},                                // abut's own (Radioss /SENSOR)
   };

@@ -393,6 +393,7 @@ void check_tool_contact(const Model& model, const ContactSpec& c);
 void read_contact_scale_penalty(DeckReader&, Block&);
 void read_contact_initial(DeckReader&, Block&);
 void read_contact_stabilization(DeckReader&, Block&);  // keyword_contact_stabilization.cpp
+void read_contact_smoothing(DeckReader&, Block&);      // keyword_contact_smoothing.cpp
 void read_sensor(DeckReader&, Block&);  // keyword_sensor.cpp
 void read_contact_sensor(DeckReader&, Block&);
 void read_contact_release_bc(DeckReader&, Block&);

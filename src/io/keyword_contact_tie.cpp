@@ -64,6 +64,9 @@ void check_exact_tie(const ContactSpec& c) {
   if (c.stabilization)
     refuse(at(c.stabilization->where, c.where, "scale"),
            "a tie holds from the start: *CONTACT_STABILIZATION has nothing to stabilize");
+  if (c.smoothing)
+    refuse(at(c.smoothing->where, c.where, "side"),
+           "a tie binds nodes where they are: *CONTACT_SMOOTHING has no use");
 }
 
 }  // namespace

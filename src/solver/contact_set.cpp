@@ -177,6 +177,11 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
           spec.discretisation_where.file.empty() ? spec.where : spec.discretisation_where,
           "small sliding (TRACK = SMALL) is an option of static steps: the explicit "
           "solver searches partners as the bodies move (give FINITE)");
+    if (spec.smoothing)
+      throw InputError(spec.smoothing->where,
+                       "*CONTACT_SMOOTHING acts in static steps only (OptiStruct's S2S smoothing "
+                       "belongs to its implicit analyses, seed 003): explicit contact meets the "
+                       "facets as they are");
     if (spec.stabilization)
       throw InputError(spec.stabilization->where,
                        "*CONTACT_STABILIZATION acts in static steps only (OptiStruct CNTSTB): the "

@@ -102,6 +102,9 @@ TEST(DeckExactTie, OptionsATieDoesNotUse) {
   e = error_of(kBlocks + kTie + "*CONTACT_STIFFNESS\n3, MAX\n");
   EXPECT_EQ(e.where().line, lines_of(kBlocks + kTie) + 2);
   EXPECT_THAT(e.message(), HasSubstr("no springs"));
+  e = error_of(kBlocks + kTie + "*CONTACT_SMOOTHING\n3, BOTH\n");
+  EXPECT_EQ(e.where().line, lines_of(kBlocks + kTie) + 2);
+  EXPECT_THAT(e.message(), HasSubstr("binds nodes where they are"));
   e = error_of(kBlocks +
                "*CONTACT\n3\nP, 1, P, 1\n*CONTACT_FRICTION\n3, FREEZE, , , , , , EXACT\n");
   EXPECT_THAT(e.message(), HasSubstr("tied to itself"));

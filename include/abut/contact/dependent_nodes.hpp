@@ -8,6 +8,10 @@
 // the force of a contact point is spread over the face's nodes by the face's own shape functions
 // taken at the corners of its facet (docs/contact.md, "Curved faces").
 //
+// A smoothed surface (smoothing.hpp) adds to some of them an offset o_v that it sets at each
+// evaluation, x_v = sum_a T_va x_a + o_v (the curvature of its patches); forces still go to the
+// nodes through T_va, so the offset's own dependence on the nodes is left out of the forces.
+//
 // Dependent node k has index first + k: the host's nodes come first, so that facets can name
 // both kinds in one index space.
 #include <cstdint>
@@ -23,6 +27,7 @@ struct DependentNodes {
   std::vector<std::int32_t> start{0};  // node k's terms: [start[k], start[k + 1])
   std::vector<std::int32_t> node;      // host node of each term
   std::vector<double> weight;          // T_va of each term
+  std::vector<double> offset;          // o_v, 3 per node (x, y, z); empty: none
 
   std::size_t size() const { return start.size() - 1; }
   bool empty() const { return size() == 0; }

@@ -52,6 +52,7 @@
 #include "abut/contact/laws/thermal.hpp"
 #include "abut/contact/mortar.hpp"
 #include "abut/contact/settings.hpp"
+#include "abut/contact/smoothing.hpp"
 #include "abut/contact/surface.hpp"
 #include "abut/contact/thermal_contact_element.hpp"
 
@@ -167,10 +168,11 @@ class StaticContact {
   // the secondary facets. The coordinates of `initial` are the reference configuration: tied and
   // small-sliding pairs are formed there, once. `dependents`: facet corners of curved faces that
   // are not host nodes (dependent_nodes.hpp); the inputs give the host's nodes only, and the
-  // elements and points name host nodes only.
+  // elements and points name host nodes only. `smoothing`: the smoothed surfaces' patches, whose
+  // dependent nodes (among `dependents`) it places at each evaluation (smoothing.hpp).
   StaticContact(StaticContactSettings settings, ContactSurface secondary, ContactSurface main,
                 std::span<const std::int32_t> secondary_nodes, const ContactInput& initial,
-                DependentNodes dependents = {});
+                DependentNodes dependents = {}, NagataSmoothing smoothing = NagataSmoothing{});
 
   // Evaluates every point at the coordinates of `in`.
   void evaluate(const ContactInput& in);
@@ -232,6 +234,7 @@ class StaticContact {
   StaticContactSettings settings_;
   ContactSurface secondary_, main_;
   DependentNodes dependents_;
+  NagataSmoothing smoothing_;
   std::vector<double> ex_, ey_, ez_;  // extended coordinates of the current evaluation
   std::vector<std::uint8_t> main_sharp_, main_active_, main_free_;
   std::vector<double> main_depth_, main_gap_, main_min_edge_;

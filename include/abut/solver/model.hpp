@@ -297,6 +297,15 @@ struct ContactSpec {
     SourceLocation where;
   };
   std::optional<Stabilization> stabilization;
+  // *CONTACT_SMOOTHING (OptiStruct SMOOTH / SMSIDE, seed 003): the surfaces of an S2S contact
+  // that meet as smooth Nagata patches over their facets in static steps (smoothing.hpp); crease
+  // empty: kSmoothingCrease.
+  struct Smoothing {
+    bool surface1 = false, surface2 = false;
+    std::optional<double> crease;
+    SourceLocation where;
+  };
+  std::optional<Smoothing> smoothing;
   // *CONTACT_SENSOR (Radioss sens_ID): the contact acts while the sensor is on (switches_off:
   // until it is on); t_beg and t_end are then not used (seed 004, comment 10). Explicit runs.
   std::optional<std::int64_t> sensor;

@@ -5,6 +5,7 @@
 #include <utility>
 #include <variant>
 
+#include "abut/contact/smoothing.hpp"
 #include "abut/core/error.hpp"
 #include "abut/solver/contact_surfaces.hpp"
 #include "abut/solver/curved_faces.hpp"
@@ -82,7 +83,38 @@ double young_of(const Model& model, std::int64_t part) {
 struct Side {
   std::vector<SkinFace> faces;
   std::vector<std::int32_t> nodes;  // node set only
+  bool smooth = false;              // *CONTACT_SMOOTHING of this side
 };
+
+// Replaces each plain facet of `facets` (one without a curved face) by the facets of its smooth
+// patch (smoothing.hpp), which join `dependents`.
+void smooth_plain_facets(std::vector<SkinFace>& facets, std::vector<FacetParent>& parents,
+                         NagataSmoothing& smoothing, DependentNodes& dependents) {
+  std::vector<std::array<std::int32_t, 4>> plain;
+  for (std::size_t i = 0; i < facets.size(); ++i)
+    if (!parents[i].curved()) plain.push_back(facets[i].nodes);
+  const NagataSmoothing::Facets smoothed =
+      smoothing.smooth(plain, dependents, kCurvedFaceDivisions);
+  std::vector<SkinFace> out_facets;
+  std::vector<FacetParent> out_parents;
+  std::size_t k = 0, next = 0;  // the plain facet, and its first smoothed facet
+  for (std::size_t i = 0; i < facets.size(); ++i) {
+    if (parents[i].curved()) {
+      out_facets.push_back(facets[i]);
+      out_parents.push_back(parents[i]);
+      continue;
+    }
+    for (; next < smoothed.facets.size() && smoothed.source[next] == k; ++next) {
+      SkinFace f = facets[i];
+      f.nodes = smoothed.facets[next];
+      out_facets.push_back(f);
+      out_parents.push_back(smoothed.parents[next]);
+    }
+    ++k;
+  }
+  facets = std::move(out_facets);
+  parents = std::move(out_parents);
+}
 
 Side side_of(const Model& model, const EntityRef& entity) {
   Side s;
@@ -159,14 +191,19 @@ StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side&
   const ContactInput initial{nodes.x, nodes.y, nodes.z, {}, {}, {}, 0.0, 0.0, {}};
   CurvedFaces curved(mesh);  // quadratic faces: facets on the true face
   std::vector<FacetParent> own_parents, target_parents;
-  const std::vector<SkinFace> own_facets = curved.facets(own.faces, &own_parents);
-  const std::vector<SkinFace> target_facets = curved.facets(target.faces, &target_parents);
+  std::vector<SkinFace> own_facets = curved.facets(own.faces, &own_parents);
+  std::vector<SkinFace> target_facets = curved.facets(target.faces, &target_parents);
+  DependentNodes dependents = curved.dependents();
+  NagataSmoothing smoothing(spec.smoothing ? spec.smoothing->crease.value_or(kSmoothingCrease)
+                                           : kSmoothingCrease);
+  if (own.smooth) smooth_plain_facets(own_facets, own_parents, smoothing, dependents);
+  if (target.smooth) smooth_plain_facets(target_facets, target_parents, smoothing, dependents);
   ContactSurface secondary =
       contact_surface(mesh, own_facets, no_penalty, {}, ContactSpec::ShellSides::Both, own_parents);
   ContactSurface main = contact_surface(mesh, target_facets, no_penalty, {},
                                         ContactSpec::ShellSides::Both, target_parents);
   return StaticContact(std::move(s), std::move(secondary), std::move(main), own.nodes, initial,
-                       curved.dependents());
+                       std::move(dependents), std::move(smoothing));
 }
 
 }  // namespace
@@ -181,7 +218,15 @@ StaticContacts make_static_contacts(const Model& model, const RemovedNodes& tied
     if (spec.surface2.type == EntityType::NodeSet)
       throw InputError(spec.surface2.where,
                        "surface 2 of a contact must be made of element faces, not nodes");
-    const Side one = side_of(model, spec.surface1), two = side_of(model, spec.surface2);
+    Side one = side_of(model, spec.surface1), two = side_of(model, spec.surface2);
+    if (spec.smoothing) {
+      if (spec.discretisation == Discretisation::NodeToSurface || !one.nodes.empty())
+        throw InputError(spec.smoothing->where,
+                         "smoothing is for surface-to-surface contact (OptiStruct SMOOTH, seed "
+                         "003): the points of node-to-surface contact are the nodes themselves");
+      one.smooth = spec.smoothing->surface1;
+      two.smooth = spec.smoothing->surface2;
+    }
     // Symmetric unless one-way (the explicit interface's rule, each way with weight 1/2): node
     // sets act one way.
     const bool symmetric = spec.symmetric.value_or(!spec.one_way) && one.nodes.empty();
