@@ -34,6 +34,24 @@ ToolProjection project(const AnalyticTool& tool, const ToolPose& pose, const Vec
   return r;
 }
 
+std::array<double, 9> normal_gradient(const AnalyticTool& tool, const ToolPose& pose,
+                                      const Vec3& x) {
+  std::array<double, 9> g{};
+  if (tool.shape == ToolShape::Plane) return g;
+  Vec3 radial = x - (tool.point + pose.displacement);
+  if (tool.shape == ToolShape::Cylinder) radial -= tool.axis * dot(radial, tool.axis);
+  const double distance = norm(radial);
+  if (!(distance > 0.0)) return g;
+  const Vec3 n = radial / distance;
+  const double scale = (tool.side == ToolSide::Outside ? 1.0 : -1.0) / distance;
+  const bool cylinder = tool.shape == ToolShape::Cylinder;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      g[3 * i + j] =
+          scale * ((i == j) - n[i] * n[j] - (cylinder ? tool.axis[i] * tool.axis[j] : 0.0));
+  return g;
+}
+
 Vec3 tool_velocity(const AnalyticTool& tool, const ToolPose& pose, const Vec3& x) {
   if (pose.spin == 0.0) return pose.velocity;
   return pose.velocity + cross(tool.axis * pose.spin, x - (tool.point + pose.displacement));

@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "abut/contact/adjust.hpp"
 #include "abut/contact/integration.hpp"
@@ -59,7 +60,35 @@ const FacetParent* parent_of(const ContactSurface& s, std::int32_t facet) {
              : &s.parent[static_cast<std::size_t>(facet)];
 }
 
+// The settings a tool takes (the delegating constructor's check, before anything is made).
+StaticContactSettings checked_for_tool(StaticContactSettings s) {
+  const char* refused = !s.node_to_surface ? "surface-to-surface points (a tool meets nodes)"
+                        : s.tied           ? "a tie"
+                        : s.small_sliding  ? "small sliding"
+                        : s.adhesion       ? "adhesion"
+                        : s.clearance      ? "a clearance"
+                        : s.initial_penetration != InitialPenetration::Force
+                            ? "an initial-penetration option"
+                        : !s.pair_frictions.empty()        ? "friction by part pair"
+                        : !s.removed_nodes.nodes().empty() ? "removed nodes"
+                                                           : nullptr;
+  if (refused)
+    throw std::invalid_argument(std::string("an analytic tool does not take ") + refused);
+  return s;
+}
+
 }  // namespace
+
+StaticContact::StaticContact(StaticContactSettings settings, ContactSurface secondary,
+                             AnalyticTool tool, ToolPoseAt pose,
+                             std::span<const std::int32_t> secondary_nodes,
+                             const ContactInput& initial)
+    : StaticContact(checked_for_tool(std::move(settings)), std::move(secondary), ContactSurface{},
+                    secondary_nodes, initial) {
+  tool_ = tool;
+  tool_pose_ = std::move(pose);
+  pose_ = committed_pose_ = tool_pose_ ? tool_pose_(initial.time) : ToolPose{};
+}
 
 StaticContact::StaticContact(StaticContactSettings settings, ContactSurface secondary,
                              ContactSurface main, std::span<const std::int32_t> secondary_nodes,
@@ -191,7 +220,10 @@ void StaticContact::evaluate(const ContactInput& host) {
   const double search =
       std::max(settings_.search_distance, reach_at_clearance(settings_.normal)) + settings_.padding;
   const double reach = std::max(search, settings_.depth);
-  const double edge_tolerance = 0.01 * mean_edge_length(main_, in.x, in.y, in.z);
+  // A tool: where it is now (its surface has no edges; round-off is the secondary side's).
+  if (tool_) pose_ = tool_pose_ ? tool_pose_(in.time) : ToolPose{};
+  const double edge_tolerance =
+      0.01 * mean_edge_length(tool_ ? secondary_ : main_, in.x, in.y, in.z);
   const double touching = 1e-10 * edge_tolerance;
   // S2S points meet the other surface cell by cell (mortar.hpp), but for tied and small-sliding
   // pairs, which keep the point's partner and place on it.
@@ -200,6 +232,9 @@ void StaticContact::evaluate(const ContactInput& host) {
   // Positions, areas and normals of the points, and the boxes of their cells (S2S).
   std::vector<double> qx(np), qy(np), qz(np);
   std::vector<Vec3> own_normal(np);
+  // A node's vector area, int N_a n dA over its facets: it bears with the part that faces its
+  // partner (on a block's edge the side faces' share does not).
+  std::vector<Vec3> node_area(np);
   std::vector<Box> regions(by_cells ? np : 0);
   std::vector<double> cell_reach(by_cells ? np : 0);
   for (std::size_t p = 0; p < np; ++p) {
@@ -217,11 +252,15 @@ void StaticContact::evaluate(const ContactInput& host) {
         for (const double xi : {-g, g})
           for (const double eta : {-g, g}) {
             double jacobian = 0.0;
-            quad_normal(c, xi, eta, jacobian);
+            const Vec3 n_here = quad_normal(c, xi, eta, jacobian);
+            const Vec3 dA = n_here * jacobian;
             const auto shape = quad_shape(xi, eta);
+            double share = 0.0;
             for (int a = 0; a < 4; ++a)
-              if (f[a] == n && (a < 3 || f[3] != f[2])) out.area += shape[a] * jacobian;
-            if (f[3] == f[2] && f[2] == n) out.area += shape[3] * jacobian;
+              if (f[a] == n && (a < 3 || f[3] != f[2])) share += shape[a];
+            if (f[3] == f[2] && f[2] == n) share += shape[3];
+            out.area += share * jacobian;
+            node_area[p] += dA * share;
           }
       }
     } else {
@@ -324,7 +363,13 @@ void StaticContact::evaluate(const ContactInput& host) {
     const std::array<std::int32_t, 4> own =
         out.node >= 0 ? std::array<std::int32_t, 4>{out.node, out.node, out.node, out.node}
                       : secondary_.facets[out.facet];
-    if (fixed) {
+    if (tool_) {
+      // The tool's closest point, within the search distance outside it and the detection depth
+      // inside (infinite by default: the tool is solid).
+      const ToolProjection t = project(*tool_, pose_, x);
+      if (!t.found || t.gap - settings_.padding > search || t.gap < -settings_.depth) continue;
+      facet = 0, normal = t.normal, q = t.closest;
+    } else if (fixed) {
       facet = c.facet;
       const QuadCorners corners = quad_corners(main_.facets[facet], in.x, in.y, in.z);
       if (settings_.tied) {
@@ -379,6 +424,9 @@ void StaticContact::evaluate(const ContactInput& host) {
     const FacetParent* main_face = cell ? nullptr : parent_of(main_, facet);
     if (main_face) q = surface_point(main_.facets[facet], main_face, {xi, eta}, in);
     out.paired = true;
+    // A node bears with its area facing the push (as the explicit interface's node points).
+    if (out.node >= 0 && settings_.node_area == StaticContactSettings::NodeArea::Facing)
+      out.area = settings_.weight * std::max(0.0, -dot(node_area[p], normal));
     // A cell pushes along its own normal n, from the other surface, at its mean gap over the
     // covered part, with the area of that part.
     if (cell) {
@@ -446,7 +494,7 @@ void StaticContact::evaluate(const ContactInput& host) {
     } else {
       add_shape(wt, own, parent_of(secondary_, out.facet), {point_xi_[p], point_eta_[p]}, 1.0);
     }
-    if (!cell) add_shape(wt, main_.facets[facet], main_face, {xi, eta}, -1.0);
+    if (!cell && !tool_) add_shape(wt, main_.facets[facet], main_face, {xi, eta}, -1.0);
     wt = dependents_.expand(wt);  // host nodes only
     out.weights = wt;
     out.partner = facet;
@@ -471,6 +519,8 @@ void StaticContact::evaluate(const ContactInput& host) {
       const std::int32_t n = wt.nodes[k];
       motion = motion + Vec3{in.x[n] - xc_[n], in.y[n] - yc_[n], in.z[n] - zc_[n]} * wt.weights[k];
     }
+    // Against a tool: relative to its material where the point meets it.
+    if (tool_) motion = motion - tool_increment(*tool_, committed_pose_, pose_, q);
     // Viscous stabilization (laws/stabilization.hpp): a spring on the motion since the last
     // converged state, also for an open point within its range, which then carries it alone.
     const ContactStabilization* damper =
@@ -590,6 +640,12 @@ void StaticContact::evaluate(const ContactInput& host) {
       if (!by_samples)
         for (int i = 0; i < 3; ++i)
           for (int j = 0; j < 3; ++j) C[i][j] = kn * push[i] * push[j];
+      // A curved tool's push turns as the point moves over it: t = p n(x) adds -p dn/dx.
+      if (tool_) {
+        const std::array<double, 9> turn = normal_gradient(*tool_, pose_, x);
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) C[i][j] -= pressure * turn[3 * i + j];
+      }
       const Vec3 slip = tangential(motion, normal);
       if (adhesive || frictional) out.slip = slip;
       if (adhesive) {
@@ -697,6 +753,7 @@ void StaticContact::commit() {
     stabilization_work_ += h.stabilization_work;
   }
   committed_ = trial_;
+  committed_pose_ = pose_;
   xc_ = xe_, yc_ = ye_, zc_ = ze_;
   first_ = false;
 }

@@ -125,10 +125,6 @@ void DeckReader::finish_static_steps() {
                          static_at);
   }
   for (const ContactSpec& c : model.contacts) {
-    if (c.surface2.type == EntityType::Tool)
-      throw InputError(
-          c.surface2.where,
-          "an analytic tool (*CONTACT_TOOL) is not supported in static steps yet" + static_at);
     if (c.sensor)
       throw InputError(c.sensor_where,
                        "a contact switched by a sensor (*CONTACT_SENSOR) is not supported in "

@@ -6,6 +6,7 @@ ToolMotion::ToolMotion(const Model& model, const RigidTool& tool)
     : table_(&model.functions),
       tool_(tool),
       term_(model.time.end_time),
+      start_(model.time.start_time),
       time_(model.time.start_time) {}
 
 Vec3 ToolMotion::velocity(double t) const {
@@ -35,6 +36,19 @@ ToolPose ToolMotion::advance(double t, double t_velocity) {
     time_ = t;
   }
   return {displacement_, angle_, velocity(t_velocity), spin(t_velocity)};
+}
+
+ToolPose ToolMotion::pose_at(double t) const {
+  const double t0 = start_;
+  const double h = (t - t0) / kPosePanels;
+  Vec3 displacement;
+  double angle = 0.0;
+  for (int k = 0; k < kPosePanels; ++k) {
+    const double a = t0 + k * h, m = a + 0.5 * h, b = a + h;
+    displacement += (velocity(a) + velocity(m) * 4.0 + velocity(b)) * (h / 6.0);
+    angle += (spin(a) + 4.0 * spin(m) + spin(b)) * (h / 6.0);
+  }
+  return {displacement, angle, velocity(t), spin(t)};
 }
 
 }  // namespace abut

@@ -14,6 +14,11 @@ class ToolMotion {
   // midpoint rule (exact for a velocity linear in time over the step), and the velocity at
   // `t_velocity` (the time the nodes' velocities stand for).
   ToolPose advance(double t, double t_velocity);
+  // The pose at time t from the start, whatever was asked before (static steps, whose Newton
+  // iterations and cut-backs go back and forth in time): the velocity integrated by Simpson's
+  // rule on kPosePanels panels (exact for velocities piecewise quadratic on them).
+  ToolPose pose_at(double t) const;
+  static constexpr int kPosePanels = 4096;
   void archive(StateArchive& a) { a.values(time_, displacement_, angle_); }
 
  private:
@@ -23,7 +28,8 @@ class ToolMotion {
   const FunctionTable* table_;
   RigidTool tool_;
   double term_ = 0.0;
-  double time_ = 0.0;  // of the pose so far
+  double start_ = 0.0;  // the run's start, where the tool is as defined
+  double time_ = 0.0;   // of the pose so far
   Vec3 displacement_;
   double angle_ = 0.0;
 };

@@ -36,44 +36,16 @@
 
 #include "abut/io/deck.hpp"
 #include "abut/solver/static_solver.hpp"
+#include "ring_mesh.hpp"
 
 namespace abut {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kR = 10.0, kL = 1.0, kDelta = 5e-3, kPenalty = 100.0, kMu = 0.3, kTurn = 30.0;
+using verification::Ring;
+using verification::write_ring;
+constexpr double kPi = verification::kRingPi, kL = verification::kRingLength;
+constexpr double kR = 10.0, kDelta = 5e-3, kPenalty = 100.0, kMu = 0.3, kTurn = 30.0;
 constexpr int kBearingElements = 40;
-
-struct Ring {
-  int first_node = 0;  // id of node (0, 0, 0) less 1
-  int around = 0;
-  double r0 = 0.0, r1 = 0.0;
-  int id(int ir, int it, int iz) const {
-    return first_node + 1 + ir + 3 * (it % around + around * iz);
-  }
-  double angle(int it) const { return 2.0 * kPi * it / around; }  // [radians]
-};
-
-// Nodes and hexahedra of a ring (2 elements through its wall, 1 along z).
-void write_ring(std::ostringstream& nodes, std::ostringstream& hexes, const Ring& g, int part,
-                int first_element) {
-  for (int iz = 0; iz < 2; ++iz)
-    for (int it = 0; it < g.around; ++it)
-      for (int ir = 0; ir < 3; ++ir) {
-        const double r = g.r0 + (g.r1 - g.r0) * ir / 2.0;
-        nodes << g.id(ir, it, iz) << ", " << r * std::cos(g.angle(it)) << ", "
-              << r * std::sin(g.angle(it)) << ", " << iz * kL << "\n";
-      }
-  int e = first_element;
-  for (int it = 0; it < g.around; ++it)
-    for (int ir = 0; ir < 2; ++ir) {
-      hexes << ++e << ", " << part;
-      for (int iz = 0; iz < 2; ++iz)
-        for (const auto& [dr, dt] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}})
-          hexes << ", " << g.id(ir + dr, it + dt, iz);
-      hexes << "\n";
-    }
-}
 
 std::string bearing_deck(int shaft_elements, const std::string& contact_keywords) {
   const Ring bearing{0, kBearingElements, kR, 13.0};

@@ -5,6 +5,7 @@
 // region (a half-space, a solid cylinder, a ball) or, with side Inside, the complement of one
 // (a pipe, a spherical cup): a point inside the region is pushed out along the normal of the
 // closest point of its surface. Plain values; the contact with it is tool_contact.hpp.
+#include <array>
 #include <limits>
 
 #include "abut/core/vec3.hpp"
@@ -50,6 +51,13 @@ struct ToolProjection {
 };
 
 ToolProjection project(const AnalyticTool& tool, const ToolPose& pose, const Vec3& x);
+
+// The derivative of the push direction with respect to the point, d normal / d x (row-major 3 x
+// 3): zero for a plane; (I - n n) / rho for a sphere and (I - n n - a a) / rho for a cylinder,
+// rho the distance from the centre or axis, negated inside (the normal turns the other way).
+// Zero where the projection is undefined.
+std::array<double, 9> normal_gradient(const AnalyticTool& tool, const ToolPose& pose,
+                                      const Vec3& x);
 
 // The velocity of the tool's material at x: v + spin axis x (x - axis point).
 Vec3 tool_velocity(const AnalyticTool& tool, const ToolPose& pose, const Vec3& x);

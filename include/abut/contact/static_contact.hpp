@@ -38,10 +38,12 @@
 // Evaluations do not change the history; commit() does, once an increment has converged.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
 
+#include "abut/contact/analytic_tool.hpp"
 #include "abut/contact/broad_phase.hpp"
 #include "abut/contact/dependent_nodes.hpp"
 #include "abut/contact/interface.hpp"
@@ -60,6 +62,11 @@ namespace abut {
 
 struct StaticContactSettings {
   bool node_to_surface = false;
+  // A node's area (node to surface): the part of its vector area int N_a n dA that faces its
+  // partner (Facing: a node on a block's edge bears with its share of the face that touches, not
+  // of the side face), or the sum of its shares of every face around it (EveryFace: CalculiX's
+  // rule for a nodal slave surface, *SURFACE TYPE=NODE, whose faces are every face at a node).
+  enum class NodeArea { Facing, EveryFace } node_area = NodeArea::Facing;
   int accuracy_level = 2;  // Gauss points per direction of a secondary facet: 1, 2 or 3 levels
   NormalLaw normal = LinearPenalty{};
   double penalty = 0.0;        // pfac [stress / length], passed to the normal law
@@ -174,6 +181,18 @@ class StaticContact {
                 std::span<const std::int32_t> secondary_nodes, const ContactInput& initial,
                 DependentNodes dependents = {}, NagataSmoothing smoothing = NagataSmoothing{});
 
+  // Node to surface against an analytic rigid tool (analytic_tool.hpp; Metafor's rigid contact
+  // matrices in implicit steps) instead of a main surface: each node of `secondary` (or of
+  // `secondary_nodes`) meets the tool where `pose` (of the total time, ContactInput::time) puts it,
+  // with the laws of `settings`; its friction takes the slip relative to the tool's material, and
+  // its tangent the turn of a curved tool's normal. std::invalid_argument for settings a tool
+  // does not take (S2S, ties, small sliding, adhesion, clearance, initial-penetration options,
+  // pair frictions, removed nodes).
+  using ToolPoseAt = std::function<ToolPose(double time)>;
+  StaticContact(StaticContactSettings settings, ContactSurface secondary, AnalyticTool tool,
+                ToolPoseAt pose, std::span<const std::int32_t> secondary_nodes,
+                const ContactInput& initial);
+
   // Evaluates every point at the coordinates of `in`.
   void evaluate(const ContactInput& in);
   // The evaluated state becomes the history (friction, tied pairs, small-sliding partners).
@@ -235,6 +254,11 @@ class StaticContact {
   ContactSurface secondary_, main_;
   DependentNodes dependents_;
   NagataSmoothing smoothing_;
+  // An analytic tool as the main surface (main_ then empty): where it is at a time, and where it
+  // was at the last evaluation and at the last commit.
+  std::optional<AnalyticTool> tool_;
+  ToolPoseAt tool_pose_;
+  ToolPose pose_, committed_pose_;
   std::vector<double> ex_, ey_, ez_;  // extended coordinates of the current evaluation
   std::vector<std::uint8_t> main_sharp_, main_active_, main_free_;
   std::vector<double> main_depth_, main_gap_, main_min_edge_;

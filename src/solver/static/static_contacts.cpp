@@ -1,6 +1,8 @@
 #include "solver/static/static_contacts.hpp"
 
 #include <algorithm>
+#include <limits>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <variant>
@@ -11,6 +13,7 @@
 #include "abut/solver/curved_faces.hpp"
 #include "solver/contact_set.hpp"
 #include "solver/contact_settings_of.hpp"
+#include "solver/tool_motion.hpp"
 
 namespace abut::detail {
 
@@ -146,8 +149,12 @@ StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side&
   const Mesh& mesh = model.mesh;
   using Law = ContactSpec::FrictionLaw;
   StaticContactSettings s;
-  s.node_to_surface = spec.discretisation == Discretisation::NodeToSurface || !own.nodes.empty();
+  // A tool meets nodes (the deck refuses S2S with one).
+  s.node_to_surface = spec.discretisation == Discretisation::NodeToSurface || !own.nodes.empty() ||
+                      spec.surface2.type == EntityType::Tool;
   s.accuracy_level = spec.accuracy_level;
+  // A node set's nodes: CalculiX's area rule (side_of); a surface's nodes: the facing area.
+  if (!own.nodes.empty()) s.node_area = StaticContactSettings::NodeArea::EveryFace;
   s.small_sliding = spec.small_sliding;
   s.weight = weight;
   s.tangential_law = tangential_law_of(spec, &model.functions, model.time.end_time);
@@ -156,12 +163,14 @@ StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side&
   s.stick = spec.friction_law == Law::Stick;
   s.adhesion = spec.adhesion;
   s.tied = spec.friction_law == Law::Freeze;
-  double young = 0.0;
-  for (const SkinFace& f : target.faces) young = std::max(young, young_of(model, f.part));
-  const double thickness = mean_thickness(target.faces);
   // Automatic penalty: 10 E / L, E the stiffest material of the target surface and L its mean
   // element size normal to the surface (CalculiX recommends 5 to 50 times the modulus per unit
-  // length).
+  // length); against a tool, which has no elements, the own surface's.
+  const bool tool = spec.surface2.type == EntityType::Tool;
+  const std::vector<SkinFace>& stiff = tool ? own.faces : target.faces;
+  double young = 0.0;
+  for (const SkinFace& f : stiff) young = std::max(young, young_of(model, f.part));
+  const double thickness = mean_thickness(stiff);
   s.penalty = spec.penalty ? *spec.penalty : 10.0 * young / thickness;
   s.stick_slope = spec.tangential_penalty.value_or(s.penalty);
   if (spec.penalty_curve.valid()) s.normal = curve_penalty(model, spec.penalty_curve);
@@ -172,7 +181,9 @@ StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side&
                           {function_of_one(table, spec.pen_t_in_time, term)}};
   if (spec.exponential)
     s.normal = ExponentialOverclosure{spec.exponential->c0, spec.exponential->p0};
-  s.depth = spec.detection_depth.value_or(0.5 * thickness);
+  // A tool is solid: any depth inside it counts, unless *CONTACT_NORMAL gives a detection depth.
+  s.depth = spec.detection_depth.value_or(tool ? std::numeric_limits<double>::infinity()
+                                               : 0.5 * thickness);
   s.search_distance = 0.5 * thickness;
   s.padding = spec.gaps.padding;
   s.clearance = spec.clearance;
@@ -184,11 +195,28 @@ StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side&
                              spec.stabilization->range.value_or(s.search_distance),
                              spec.stabilization->tangent_fraction};
   s.initial_penetration = spec.initial_penetration;
+  // Against a tool the default (an offset of 0, nothing released) pushes every penetration, as
+  // in explicit runs; the options proper are refused (StaticContact's tool constructor).
+  if (tool && spec.initial_penetration == InitialPenetration::Offset &&
+      spec.initial_offset == 0.0 && !spec.initial_max)
+    s.initial_penetration = InitialPenetration::Force;
   s.initial_offset = spec.initial_offset;
   s.initial_max = spec.initial_max.value_or(kDefaultInitialMaxFraction * mean_thickness(own.faces));
   const auto no_penalty = [](const SkinFace&) { return 0.0; };
   const Nodes& nodes = mesh.nodes;
   const ContactInput initial{nodes.x, nodes.y, nodes.z, {}, {}, {}, 0.0, 0.0, {}};
+  if (tool) {  // node to surface against the tool where its velocities have taken it by then
+    const RigidTool& rigid = model.tool(spec.surface2);
+    const ToolMotion motion(model, rigid);
+    try {
+      return StaticContact(
+          std::move(s), contact_surface(mesh, own.faces, no_penalty), rigid.tool,
+          [motion](double t) { return motion.pose_at(t); }, own.nodes, initial);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(spec.surface2.where,
+                       "contact " + std::to_string(spec.id) + ": " + e.what() + " in static steps");
+    }
+  }
   CurvedFaces curved(mesh);  // quadratic faces: facets on the true face
   std::vector<FacetParent> own_parents, target_parents;
   std::vector<SkinFace> own_facets = curved.facets(own.faces, &own_parents);
@@ -218,7 +246,8 @@ StaticContacts make_static_contacts(const Model& model, const RemovedNodes& tied
     if (spec.surface2.type == EntityType::NodeSet)
       throw InputError(spec.surface2.where,
                        "surface 2 of a contact must be made of element faces, not nodes");
-    Side one = side_of(model, spec.surface1), two = side_of(model, spec.surface2);
+    const bool tool = spec.surface2.type == EntityType::Tool;
+    Side one = side_of(model, spec.surface1), two = tool ? Side{} : side_of(model, spec.surface2);
     if (spec.smoothing) {
       if (spec.discretisation == Discretisation::NodeToSurface || !one.nodes.empty())
         throw InputError(spec.smoothing->where,
@@ -229,7 +258,7 @@ StaticContacts make_static_contacts(const Model& model, const RemovedNodes& tied
     }
     // Symmetric unless one-way (the explicit interface's rule, each way with weight 1/2): node
     // sets act one way.
-    const bool symmetric = spec.symmetric.value_or(!spec.one_way) && one.nodes.empty();
+    const bool symmetric = spec.symmetric.value_or(!spec.one_way) && one.nodes.empty() && !tool;
     const double weight = symmetric ? 0.5 : 1.0;
     out.passes.push_back(make_pass(model, spec, one, two, weight, tied));
     out.contact_of.push_back(i);

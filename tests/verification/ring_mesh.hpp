@@ -1,0 +1,44 @@
+#pragma once
+// A ring of hexahedra about the z axis for the static verification decks (a shaft, a bearing):
+// r0 <= r <= r1 with 2 elements through the wall, `around` elements round and 1 along z (length
+// kRingLength), as *NODE and *ELEMENT_SOLID rows.
+#include <cmath>
+#include <sstream>
+#include <utility>
+
+namespace abut::verification {
+
+inline constexpr double kRingPi = 3.14159265358979323846;
+inline constexpr double kRingLength = 1.0;
+
+struct Ring {
+  int first_node = 0;  // id of node (0, 0, 0) less 1
+  int around = 0;
+  double r0 = 0.0, r1 = 0.0;
+  int id(int ir, int it, int iz) const {
+    return first_node + 1 + ir + 3 * (it % around + around * iz);
+  }
+  double angle(int it) const { return 2.0 * kRingPi * it / around; }  // [radians]
+};
+
+inline void write_ring(std::ostringstream& nodes, std::ostringstream& hexes, const Ring& g,
+                       int part, int first_element) {
+  for (int iz = 0; iz < 2; ++iz)
+    for (int it = 0; it < g.around; ++it)
+      for (int ir = 0; ir < 3; ++ir) {
+        const double r = g.r0 + (g.r1 - g.r0) * ir / 2.0;
+        nodes << g.id(ir, it, iz) << ", " << r * std::cos(g.angle(it)) << ", "
+              << r * std::sin(g.angle(it)) << ", " << iz * kRingLength << "\n";
+      }
+  int e = first_element;
+  for (int it = 0; it < g.around; ++it)
+    for (int ir = 0; ir < 2; ++ir) {
+      hexes << ++e << ", " << part;
+      for (int iz = 0; iz < 2; ++iz)
+        for (const auto& [dr, dt] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}})
+          hexes << ", " << g.id(ir + dr, it + dt, iz);
+      hexes << "\n";
+    }
+}
+
+}  // namespace abut::verification
