@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "abut/contact/quad.hpp"
+#include "abut/core/face_subdivision.hpp"
 
 namespace abut {
 namespace {
@@ -31,36 +32,6 @@ void tri6_shape(const double xi[2], double* n) {
   n[3] = 4.0 * l[0] * l[1];
   n[4] = 4.0 * l[1] * l[2];
   n[5] = 4.0 * l[2] * l[0];
-}
-
-// The natural coordinates of the corners of the n x n facets of a quadrilateral ([-1, 1]^2) or a
-// triangle ((s, t) >= 0, s + t <= 1; its facets are triangles with a repeated last corner), and
-// the facets by corner index.
-struct Grid {
-  std::vector<std::array<double, 2>> corners;
-  std::vector<std::array<std::int32_t, 4>> facets;
-};
-Grid grid(bool quad, int n) {
-  Grid g;
-  const auto at = [n](int i, int j) { return static_cast<std::int32_t>(i + (n + 1) * j); };
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      const double s = static_cast<double>(i) / n, t = static_cast<double>(j) / n;
-      g.corners.push_back(quad ? std::array<double, 2>{-1.0 + 2.0 * s, -1.0 + 2.0 * t}
-                               : std::array<double, 2>{s, t});
-    }
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      if (quad) {
-        g.facets.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
-        continue;
-      }
-      if (i + j >= n) continue;  // beyond the hypotenuse
-      g.facets.push_back({at(i, j), at(i + 1, j), at(i, j + 1), at(i, j + 1)});
-      if (i + j + 1 < n)
-        g.facets.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1), at(i, j + 1)});
-    }
-  return g;
 }
 
 // The least-norm solution of the normal equations m c = r of an edge's conditions, from
@@ -160,7 +131,7 @@ NagataSmoothing::Facets NagataSmoothing::smooth(std::span<const std::array<std::
       parent.nodes[static_cast<std::size_t>(corners + a)] =
           mid_point(facet, a, (a + 1) % corners, dependents);
     }
-    const Grid g = grid(quad, divisions);
+    const FaceSubdivision g = subdivide_reference_face(quad, divisions);
     std::vector<std::int32_t> node_of(g.corners.size(), -1);
     const auto node_at = [&](std::int32_t c) {
       std::int32_t& v = node_of[static_cast<std::size_t>(c)];

@@ -2,9 +2,11 @@
 // Shared by the deck tests: read a deck held in a string, catch the error it must raise.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "abut/io/deck.hpp"
+#include "abut/solver/simulation.hpp"
 
 namespace abut::testing {
 
@@ -44,6 +46,20 @@ inline InputError error_of(const std::string& text) {
   }
   ADD_FAILURE() << "expected an InputError for:\n" << text;
   return InputError("no error");
+}
+
+// An explicit run of `deck` refusing the keyword on its last line (one that acts in static steps
+// only): an InputError at that line whose message has `text`.
+inline void expect_explicit_refusal(const std::string& deck, const std::string& text) {
+  const Model m = read_deck_string(deck, "t.k");
+  try {
+    Simulation sim(m);
+    ADD_FAILURE() << "an explicit run took:\n" << deck;
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, static_cast<std::size_t>(std::count(deck.begin(), deck.end(), '\n')))
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+  }
 }
 
 inline std::string deck_path(const std::string& name) {

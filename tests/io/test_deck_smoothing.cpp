@@ -5,13 +5,13 @@
 
 #include <algorithm>
 
-#include "abut/solver/simulation.hpp"
 #include "test_deck_helpers.hpp"
 
 namespace abut {
 namespace {
 
 using testing::error_of;
+using testing::expect_explicit_refusal;
 using ::testing::HasSubstr;
 using testing::model_of;
 using testing::with_contact;
@@ -50,16 +50,7 @@ TEST(DeckSmoothing, MistakesAreLocated) {
 }
 
 TEST(DeckSmoothing, ExplicitRunsRefuseIt) {
-  const std::string deck = with_contact("*CONTACT_SMOOTHING\n5, BOTH\n");
-  const Model m = model_of(deck);
-  try {
-    Simulation sim(m);
-    ADD_FAILURE() << "an explicit run took *CONTACT_SMOOTHING";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.where().line, static_cast<std::size_t>(std::count(deck.begin(), deck.end(), '\n')))
-        << e.what();
-    EXPECT_THAT(e.what(), HasSubstr("static steps only"));
-  }
+  expect_explicit_refusal(with_contact("*CONTACT_SMOOTHING\n5, BOTH\n"), "static steps only");
 }
 
 }  // namespace

@@ -3,8 +3,11 @@
 // r0 <= r <= r1 with 2 elements through the wall, `around` elements round and 1 along z (length
 // kRingLength), as *NODE and *ELEMENT_SOLID rows.
 #include <cmath>
+#include <span>
 #include <sstream>
 #include <utility>
+
+#include "abut/mesh/mesh.hpp"
 
 namespace abut::verification {
 
@@ -39,6 +42,23 @@ inline void write_ring(std::ostringstream& nodes, std::ostringstream& hexes, con
           hexes << ", " << g.id(ir + dr, it + dt, iz);
       hexes << "\n";
     }
+}
+
+// What drives a ring's inner nodes (within `radius` of the axis) takes: the sum of their
+// reactions along y and their torque about z, from the displacements u and reactions f (3 per
+// node) of a static solver's converged state.
+struct DriveReaction {
+  double vertical = 0.0, torque = 0.0;
+};
+inline DriveReaction drive_reaction(const Nodes& x, std::span<const double> u,
+                                    std::span<const double> f, double radius) {
+  DriveReaction r;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (std::hypot(x.x[i], x.y[i]) > radius) continue;
+    r.vertical += f[3 * i + 1];
+    r.torque += (x.x[i] + u[3 * i]) * f[3 * i + 1] - (x.y[i] + u[3 * i + 1]) * f[3 * i];
+  }
+  return r;
 }
 
 }  // namespace abut::verification

@@ -117,15 +117,10 @@ History turn(const std::string& deck) {
     if (inc.step != 1) return;
     // The drive's reactions on the shaft's inner nodes: the vertical force and the torque about
     // the axis; the normal force from the contact points (a symmetric pass halves its areas).
-    const auto u = solver.displacement(), f = solver.reaction();
-    const Nodes& x = m.mesh.nodes;
-    double w = 0.0, torque = 0.0, normal = 0.0;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      if (std::hypot(x.x[i], x.y[i]) > 6.5) continue;
-      const double px = x.x[i] + u[3 * i], py = x.y[i] + u[3 * i + 1];
-      w += f[3 * i + 1];
-      torque += px * f[3 * i + 1] - py * f[3 * i];
-    }
+    const verification::DriveReaction drive =
+        verification::drive_reaction(m.mesh.nodes, solver.displacement(), solver.reaction(), 6.5);
+    const double w = drive.vertical, torque = drive.torque;
+    double normal = 0.0;
     for (const StaticContact& c : solver.contacts())
       for (const StaticContactPoint& p : c.points()) normal += p.pressure * p.area;
     h.worst_w = std::max(h.worst_w, std::abs(std::abs(w) - w_ref) / w_ref);

@@ -115,7 +115,7 @@ TEST(StaticTool, ASpinningBearingTurnsAHeldShaftWithTheFrictionOfItsCircle) {
   std::ostringstream nodes, hexes;
   nodes.precision(17);
   verification::write_ring(nodes, hexes, shaft, 1, 0);
-  // Each inner node: x held, y lowered (two commands: a direction is held or driven, not both).
+  // Each inner node: x held, y lowered by curve 1.
   std::ostringstream bc;
   for (int iz = 0; iz < 2; ++iz)
     for (int it = 0; it < shaft.around; ++it)
@@ -178,14 +178,10 @@ P, 1, TOOL, 1, 0.3, 100.0
   int increments = 0;
   solver.run([&](const StaticIncrement& inc) {
     if (inc.step != 1) return;
-    const auto u = solver.displacement(), f = solver.reaction();
-    const Nodes& x = m.mesh.nodes;
-    double w = 0.0, torque = 0.0, normal = 0.0;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      if (std::hypot(x.x[i], x.y[i]) > 6.5) continue;  // the inner nodes
-      w += f[3 * i + 1];
-      torque += (x.x[i] + u[3 * i]) * f[3 * i + 1] - (x.y[i] + u[3 * i + 1]) * f[3 * i];
-    }
+    const verification::DriveReaction drive =
+        verification::drive_reaction(m.mesh.nodes, solver.displacement(), solver.reaction(), 6.5);
+    const double w = drive.vertical, torque = drive.torque;
+    double normal = 0.0;
     for (const StaticContactPoint& p : solver.contacts()[0].points()) normal += p.pressure * p.area;
     std::cout << "t = " << inc.total_time << ": W " << w << " N, N " << normal << " N, T " << torque
               << " N mm\n";

@@ -20,6 +20,7 @@
 #include <span>
 #include <vector>
 
+#include "abut/core/face_subdivision.hpp"
 #include "abut/mesh/topology.hpp"
 
 namespace abut {
@@ -118,14 +119,9 @@ void face_pressure_forces(FaceType type, std::span<const double> x, double p, st
 // (3 per node): <= 0 for a cell whose nodes are not in the type's order (or that is folded).
 double min_jacobian(CellType type, std::span<const double> X);
 
-// A face divided into n x n facets in its natural coordinates: quadrilaterals on the grid
-// xi, eta = -1 + 2i/n; triangles on the grid of area coordinates (i/n, j/n), each cell split into
-// its two triangles (a triangle repeats its third corner). Corners counter-clockwise like the
-// face's. Contact surfaces of curved faces use it (dependent_nodes.hpp of the contact library).
-struct FaceSubdivision {
-  std::vector<std::array<double, 2>> corners;       // natural coordinates
-  std::vector<std::array<std::int32_t, 4>> facets;  // indices into corners
-};
+// A face of `type` divided into n x n facets in its natural coordinates
+// (core/face_subdivision.hpp). Contact surfaces of curved faces use it (dependent_nodes.hpp of the
+// contact library).
 FaceSubdivision subdivide_face(FaceType type, int n);
 
 // The volume of a cell with coordinates X (3 per node): det J integrated by the full rule, exact
