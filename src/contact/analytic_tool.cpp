@@ -6,12 +6,20 @@
 
 namespace abut {
 
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}  // namespace
+
 ToolProjection project(const AnalyticTool& tool, const ToolPose& pose, const Vec3& x) {
   ToolProjection r;
   const Vec3 origin = tool.point + pose.displacement;
   const double sign = tool.side == ToolSide::Outside ? 1.0 : -1.0;
   Vec3 radial = x - origin;  // from the axis (cylinder) or centre (sphere) to the point
   if (tool.shape == ToolShape::Plane) {
+    if (std::isfinite(tool.span)) {  // a strip between two lines
+      const double along = dot(radial, tool.start);
+      if (along < 0.0 || along > tool.span) return r;
+    }
     const double distance = dot(radial, tool.axis);
     r.gap = sign * distance;
     r.normal = tool.axis * sign;
@@ -23,6 +31,11 @@ ToolProjection project(const AnalyticTool& tool, const ToolPose& pose, const Vec
     const double along = dot(radial, tool.axis);
     if (along < 0.0 || along > tool.length) return r;  // beyond an open end
     radial -= tool.axis * along;
+    if (std::isfinite(tool.span)) {  // an arc: its angle from `start`, in [0, 2 pi)
+      double angle = std::atan2(dot(tool.axis, cross(tool.start, radial)), dot(tool.start, radial));
+      if (angle < 0.0) angle += 2.0 * kPi;
+      if (angle > tool.span) return r;
+    }
   }
   const double distance = norm(radial);
   if (!(distance > 0.0)) return r;  // on the axis or at the centre: no direction to push

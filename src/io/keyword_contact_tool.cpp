@@ -25,7 +25,8 @@ void read_contact_tool(DeckReader& d, Block& b) {
                             "OUTSIDE (the body lies outside the tool) or INSIDE (in a pipe, a cup, "
                             "or the plane's other side)");
 
-  const Row r2 = b.row({"x0", "y0", "z0", "nx", "ny", "nz", "radius", "length"});
+  const Row r2 =
+      b.row({"x0", "y0", "z0", "nx", "ny", "nz", "radius", "length", "dx", "dy", "dz", "span"});
   const Vec3 point{r2.number(0), r2.number(1), r2.number(2)};
   t.tool.point = d.frame().transform.point(point);
   const bool sphere = t.tool.shape == ToolShape::Sphere;
@@ -56,6 +57,29 @@ void read_contact_tool(DeckReader& d, Block& b) {
   } else if (r2.given(7)) {
     r2.fail(7, "only a cylinder has a length: leave it empty");
   }
+  // Ends across the extrusion (Metafor's matrix segments): a strip of a plane from the point along
+  // (dx, dy, dz) for span [length], or an arc of a cylinder from the radial direction (dx, dy, dz)
+  // for span [degrees] about its axis.
+  if (r2.given(8) || r2.given(9) || r2.given(10) || r2.given(11)) {
+    if (sphere) r2.fail(8, "a sphere has no ends: leave dx, dy, dz and span empty");
+    const Vec3 start{r2.number(8), r2.number(9), r2.number(10)};
+    const Vec3 across = start - t.tool.axis * dot(start, t.tool.axis);
+    r2.require(norm(across) > 1e-9 * norm(start) && norm(start) > 0.0, 8,
+               t.tool.shape == ToolShape::Plane
+                   ? "expected a direction in the plane, along which the strip ends (dx, dy, dz)"
+                   : "expected a radial direction, where the arc starts (dx, dy, dz; not along "
+                     "the axis)");
+    d.require_unrotated(r2.where(8), "a tool's ends");
+    t.tool.start = across / norm(across);
+    const double span = r2.number(11);
+    if (t.tool.shape == ToolShape::Plane) {
+      r2.require(span > 0.0, 11, "expected the strip's width > 0 [length]");
+      t.tool.span = span;
+    } else {
+      r2.require(span > 0.0 && span <= 360.0, 11, "expected the arc's angle in (0, 360] degrees");
+      t.tool.span = span * 3.14159265358979323846 / 180.0;
+    }
+  }
 
   const std::size_t index = d.model.tools.size();
   if (auto r3 = b.optional_row(
@@ -75,6 +99,8 @@ void read_contact_tool(DeckReader& d, Block& b) {
       if (t.tool.shape != ToolShape::Cylinder)
         r3->fail(6, "only a cylinder spins about its axis (a roller): not supported yet for " +
                         std::string(sphere ? "a sphere" : "a plane"));
+      if (std::isfinite(t.tool.span))
+        r3->fail(6, "an arc does not spin (its ends would turn with it): give the whole cylinder");
       d.bind_function(*fid, r3->where(6),
                       [index](Model& m, FunctionRef f) { m.tools[index].spin = f; });
     } else if (r3->given(7)) {

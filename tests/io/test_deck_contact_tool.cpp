@@ -109,6 +109,32 @@ TEST(DeckContactTool, MistakesNameTheirFileLineAndField) {
                "ishape with an analytic tool");
 }
 
+// Metafor's matrix segments: a plane strip (width along a direction in the plane) and a
+// cylinder's arc (from a radial direction, in degrees), their directions made unit and projected
+// off the normal or axis; the mistakes located at their fields.
+TEST(DeckContactTool, SegmentsWithEnds) {
+  const Model m =
+      model_of(with_tool("7, PLANE\n0, 0, 0, 0, 0, 1, , , 2, 0, 1, 4.5\n"
+                         "*CONTACT_TOOL\n8, CYLINDER, INSIDE\n"
+                         "0, 0, 0, 0, 0, 1, 10, , -1, 0, 0, 180\n"));
+  ASSERT_EQ(m.tools.size(), 2u);
+  EXPECT_EQ(m.tools[0].tool.start.x, 1.0);  // (2, 0, 1) off the normal z, made unit
+  EXPECT_EQ(m.tools[0].tool.span, 4.5);
+  EXPECT_EQ(m.tools[1].tool.start.x, -1.0);
+  EXPECT_NEAR(m.tools[1].tool.span, 3.14159265358979323846, 1e-15);
+  EXPECT_FALSE(
+      std::isfinite(model_of(with_tool("7, PLANE\n0, 0, 0, 0, 0, 1\n")).tools[0].tool.span));
+  const std::string along = with_tool("7, PLANE\n0, 0, 0, 0, 0, 1, , , 0, 0, 3, 1\n");
+  expect_error(along, "0, 0, 0, 0, 0, 1, , , 0, 0, 3, 1", "dx", "a direction in the plane");
+  const std::string wide = with_tool("7, CYLINDER\n0, 0, 0, 0, 0, 1, 1, , 1, 0, 0, 400\n");
+  expect_error(wide, "0, 0, 0, 0, 0, 1, 1, , 1, 0, 0, 400", "span", "(0, 360] degrees");
+  const std::string ball = with_tool("7, SPHERE\n0, 0, 0, , , , 1, , 1, 0, 0, 90\n");
+  expect_error(ball, "0, 0, 0, , , , 1, , 1, 0, 0, 90", "dx", "a sphere has no ends");
+  const std::string turning =
+      with_tool("7, CYLINDER\n0, 0, 0, 0, 0, 1, 1, , 1, 0, 0, 90\n, , , , , , 3\n");
+  expect_error(turning, ", , , , , , 3", "fid_spin", "an arc does not spin");
+}
+
 // Static steps take tools (tests/verification/test_static_tool.cpp); what a tool refuses is
 // refused at the deck, in either kind of run.
 TEST(DeckContactTool, StaticStepsTakeTools) {

@@ -106,22 +106,23 @@ P, 1, TOOL, 1, 0.2, 1.0e4
 // the chords (-0.07%) and the facing (-0.21%): N and T 0.43% and W 0.29% below the integrals,
 // computed here from the nodes' angles. Held to 1e-3 of them: the overlap's second order
 // delta / (2 R) = 2.5e-4 and the shaft's compliance (1e-5) remain.
-TEST(StaticTool, ASpinningBearingTurnsAHeldShaftWithTheFrictionOfItsCircle) {
-  using verification::kRingLength;
-  using verification::kRingPi;
-  using verification::Ring;
-  constexpr double kR = 10.0, kDelta = 5e-3, kPenalty = 100.0, kMu = 0.3;
-  const Ring shaft{0, 48, 6.0, kR};
+constexpr double kShaftR = 10.0, kDelta = 5e-3, kPenalty = 100.0, kMu = 0.3;
+const verification::Ring kShaft{0, 48, 6.0, kShaftR};
+
+// The held shaft's deck against a bearing tool whose line 2 is `bearing` (and line 3 `motion`),
+// friction coefficient `mu`.
+std::string shaft_in_bearing(const std::string& bearing, const std::string& motion,
+                             double mu = kMu) {
   std::ostringstream nodes, hexes;
   nodes.precision(17);
-  verification::write_ring(nodes, hexes, shaft, 1, 0);
+  verification::write_ring(nodes, hexes, kShaft, 1, 0);
   // Each inner node: x held, y lowered by curve 1.
   std::ostringstream bc;
   for (int iz = 0; iz < 2; ++iz)
-    for (int it = 0; it < shaft.around; ++it)
-      bc << "*BC_MOTION\nN, " << shaft.id(0, it, iz) << ", X\nD, Y, 1, -1.0\n";
-  const std::string deck = "*UNIT_SYSTEM\nMMTONS\n*NODE\n" + nodes.str() + "*ELEMENT_SOLID\n" +
-                           hexes.str() + R"(*MAT_ELASTIC
+    for (int it = 0; it < kShaft.around; ++it)
+      bc << "*BC_MOTION\nN, " << kShaft.id(0, it, iz) << ", X\nD, Y, 1, -1.0\n";
+  return "*UNIT_SYSTEM\nMMTONS\n*NODE\n" + nodes.str() + "*ELEMENT_SOLID\n" + hexes.str() +
+         R"(*MAT_ELASTIC
 1, 7.85e-9, 2.0e7, 0.3
 *PART
 "shaft"
@@ -130,7 +131,8 @@ TEST(StaticTool, ASpinningBearingTurnsAHeldShaftWithTheFrictionOfItsCircle) {
 1, FULL
 *BC_MOTION
 P, 1, Z
-)" + bc.str() + R"(*CURVE
+)" + bc.str() +
+         R"(*CURVE
 1
 0.0, 0.0
 1.0, 5.0e-3
@@ -143,12 +145,12 @@ P, 1, Z
 3.0, 0.5235987755982988
 *CONTACT_TOOL
 1, CYLINDER, INSIDE
-0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 10.0
-, , , , , , 2, 1.0
-*CONTACT
+)" + bearing +
+         "\n" + motion + R"(*CONTACT
 "shaft in an analytic bearing"
 1
-P, 1, TOOL, 1, 0.3, 100.0
+P, 1, TOOL, 1, )" +
+         std::to_string(mu) + R"(, 100.0
 *STATIC
 "lower"
 1.0, 0.25, , , 1
@@ -157,12 +159,26 @@ P, 1, TOOL, 1, 0.3, 100.0
 2.0, 0.1, , 0.1, 1
 *END
 )";
-  const Model m = read_deck_string(deck, "bearing_tool.k");
+}
+
+// The facing area of a shaft node (chord L cos(h / 2), h the angle between nodes).
+double facing_area() {
+  const double h = 2.0 * verification::kRingPi / kShaft.around;
+  return 2.0 * kShaftR * std::sin(h / 2.0) * std::cos(h / 2.0) * verification::kRingLength;
+}
+
+TEST(StaticTool, ASpinningBearingTurnsAHeldShaftWithTheFrictionOfItsCircle) {
+  using verification::kRingLength;
+  using verification::kRingPi;
+  constexpr double kR = kShaftR;
+  const verification::Ring& shaft = kShaft;
+  const Model m = read_deck_string(
+      shaft_in_bearing("0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 10.0", ", , , , , , 2, 1.0\n"),
+      "bearing_tool.k");
   StaticSolver solver(m);
   // The nodes' sums: sum over the nodes below the axis of k delta cos(theta) (and its vertical
   // part, cos^2) times their facing areas.
-  const double h = 2.0 * kRingPi / shaft.around;
-  const double facing = 2.0 * kR * std::sin(h / 2.0) * std::cos(h / 2.0) * kRingLength;
+  const double facing = facing_area();
   double sum_cos = 0.0, sum_cos2 = 0.0;
   for (int it = 0; it < shaft.around; ++it) {
     const double c = std::max(0.0, -std::sin(shaft.angle(it)));  // cos of the angle from below
@@ -196,6 +212,43 @@ P, 1, TOOL, 1, 0.3, 100.0
   EXPECT_LT(worst_w, 1e-3);
   EXPECT_LT(worst_n, 1e-3);
   EXPECT_LT(worst_t, 1e-3);
+}
+
+// Metafor's matrix segments: the bearing as arcs (*CONTACT_TOOL dx, dy, dz, span). The lower
+// half, from -x through -y, carries what the whole cylinder does (the upper half opens as the
+// shaft goes down): the same nodes at the same depths, to round-off. The arc from -x to just
+// past -y (93.75 degrees: its end half-way between two nodes; a node on an end is on it or not
+// by round-off) carries the nodes at 180 to 270 degrees and pushes the shaft up and to the right: F
+// = -sum k delta cos(theta) A (cos a, sin a) over those nodes (a their angle, theta the angle from
+// the bottom), held to 1e-3 as above. Frictionless: while the shaft goes down its nodes slide along
+// the bearing, and friction would add its share.
+TEST(StaticTool, ArcsOfABearingCarryTheirShareOfTheShaft) {
+  const auto lowered = [](const std::string& bearing) {
+    const Model m = read_deck_string(shaft_in_bearing(bearing, "", 0.0), "arc_tool.k");
+    StaticSolver solver(m);
+    Vec3 force;
+    solver.run([&](const StaticIncrement& inc) {
+      if (inc.step == 0 && inc.step_end) force = solver.contacts()[0].total_force();
+    });
+    return force;
+  };
+  const Vec3 whole = lowered("0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 10.0");
+  const Vec3 half = lowered("0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 10.0, , -1.0, 0.0, 0.0, 180.0");
+  const Vec3 quarter = lowered("0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 10.0, , -1.0, 0.0, 0.0, 93.75");
+  std::cout << "whole " << whole.x << " " << whole.y << ", half " << half.x << " " << half.y
+            << ", quarter " << quarter.x << " " << quarter.y << " N\n";
+  EXPECT_NEAR(half.y, whole.y, 1e-10 * whole.y);  // round-off of the two solves
+  EXPECT_NEAR(half.x, whole.x, 1e-10 * whole.y);
+  Vec3 expected;
+  for (int it = 0; it < kShaft.around; ++it) {
+    const double a = kShaft.angle(it);
+    if (a < verification::kRingPi - 1e-12 || a > 1.5 * verification::kRingPi + 1e-12) continue;
+    const double c = std::max(0.0, -std::sin(a));
+    expected =
+        expected - Vec3{std::cos(a), std::sin(a), 0.0} * (kPenalty * kDelta * c * facing_area());
+  }
+  EXPECT_NEAR(quarter.x, expected.x, 1e-3 * std::abs(expected.x));
+  EXPECT_NEAR(quarter.y, expected.y, 1e-3 * std::abs(expected.y));
 }
 
 }  // namespace

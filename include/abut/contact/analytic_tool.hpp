@@ -29,6 +29,12 @@ struct AnalyticTool {
   // Cylinder: it spans [0, length] along the axis from `point`; beyond, nothing touches it (its
   // ends are open, without caps). Infinite: the whole axis.
   double length = std::numeric_limits<double>::infinity();
+  // Ends across the extrusion (Metafor's matrix segments: a line between two points, an arc
+  // between two angles). Plane: it spans [0, span] along `start` (a unit direction in the plane)
+  // from `point`; cylinder: the angles [0, span] (radians, right-handed about the axis) from the
+  // unit radial direction `start`. Beyond, nothing touches it (open ends). Infinite: no ends.
+  Vec3 start;
+  double span = std::numeric_limits<double>::infinity();
 };
 
 // Where the tool is: its rigid displacement from its definition, and its velocity (translation
