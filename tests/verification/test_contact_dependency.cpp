@@ -206,6 +206,59 @@ TEST(ContactDependency, StuckBlockHoldsSidewaysLoadOnGapDependentTangentialPenal
   EXPECT_NEAR(u, expected, 0.01 * expected);
 }
 
+// TRESCA's shear yield stress in time (K, TIME; Metafor's TRESCA_K, which seed 002 gives no
+// dependency, abut allows TIME): the block dragged at 0.1 m/s slides at the Tresca limit m k f(t) A
+// whatever its pressure (Metafor's TrescaContactMaterial), m = 1, k = 1000 Pa (10 N on 0.01 m^2,
+// two thirds of the weight), f from 1 at 0.02 s to 0.5 at 0.1 s: the friction force follows
+// m k f(t) A at every cycle once the block slides, as the Coulomb case above.
+TEST(ContactDependency, DraggedBlockSlidesAtATimeDependentTrescaLimit) {
+  const double m = 1.0, k = 1000.0, t0 = 0.02, t1 = 0.1, f1 = 0.5, end = 0.1;
+  const std::string laws = "*CONTACT_FRICTION\n1, TRESCA, 1.0, 1.0\n" + num(k) + "\n" +
+                           ramp_curve(5, t0, t1, f1) + "*CONTACT_DEPENDENCY\n1\nK, TIME, 5\n";
+  const std::string drag = "V, X, 3\n*CURVE\n3\n" + constant(0.1) + "\n";
+  const Model model =
+      read_deck_string(deck(end, constant(0.0), constant(-kG), drag, laws), "drag_tresca_k.k");
+  Simulation sim(model);
+  double worst = 0.0;
+  int samples = 0;
+  verification::run_to(sim, end, [&](const Simulation& s) {
+    const ContactStats& c = s.contact_reports()[0].stats;
+    const double expected = m * k * ramp(s.time(), t0, t1, f1) * kArea;
+    if (s.time() > 0.01 && c.normal_force > 0.0) {
+      worst = std::max(worst, std::abs(c.tangential_force - expected) / expected);
+      ++samples;
+    }
+  });
+  std::cout << "drag, Tresca k(t): largest |F_t - m k f(t) A| / (m k f(t) A) = " << worst
+            << " over " << samples << " cycles\n";
+  EXPECT_GT(samples, 100);
+  EXPECT_LT(worst, 1e-6);
+}
+
+// The tangential penalty in time (PEN_T, TIME; Metafor's PEN_TANGENT with TM): STICK with
+// pen_t = 1e9 Pa/m doubled by f(t) (a smooth step from 1 at 5 ms to 2 at 15 ms, before any
+// sideways load), then the sideways gravity g_x = 2 m/s^2 applied from 0.02 to 0.04 s stretches
+// the springs, k_t = 2 pen_t A in all, by u = M g_x / (2 pen_t A) (a linear spring under a static
+// load), held to 1% as the gap-dependent case above.
+TEST(ContactDependency, StuckBlockHoldsSidewaysLoadOnTimeDependentTangentialPenalty) {
+  const double pen_t = 1e9, gx = 2.0, end = 0.1;
+  const std::string laws = "*CONTACT_FRICTION\n1, STICK, , , " + num(pen_t) + "\n" +
+                           smooth_curve(5, 0.005, 0.015, 2.0) +
+                           "*CONTACT_DEPENDENCY\n1\nPEN_T, TIME, 5\n";
+  const std::string tilt = "0.0, 0.0\n0.02, 0.0\n0.04, " + num(gx) + "\n1.0, " + num(gx);
+  const Model model = read_deck_string(deck(end, tilt, constant(-kG), "", laws), "stick_tm.k");
+  Simulation sim(model);
+  double x_ref = 0.0;
+  verification::run_to(sim, end, [&](const Simulation& s) {
+    if (s.time() <= 0.02) x_ref = s.part_states()[0].centre_of_mass.x;
+  });
+  const double u = sim.part_states()[0].centre_of_mass.x - x_ref;
+  const double expected = kMass * gx / (2.0 * pen_t * kArea);
+  std::cout << "stuck block, k_t(t): stretch " << u << " m, M g_x / (2 pen_t A) = " << expected
+            << ", relative error " << (u - expected) / expected << "\n";
+  EXPECT_NEAR(u, expected, 0.01 * expected);
+}
+
 // A dependency with nothing to act on is an error at its row, not ignored.
 TEST(ContactDependency, DependencyWithoutItsParameterIsALocatedError) {
   const auto read = [](const std::string& laws) {
