@@ -1,6 +1,7 @@
 // *CONTACT_FRICTION laws that depend on the contact pressure p and the sliding speed V (Radioss
-// /INTER/TYPE25 Ifric = 2 Darmstad and Ifric = 3 Renard), and the friction filter (Ifiltr), at
-// prescribed sliding: the formulas of seed 004 (comments 7 and 8), as decoded in
+// /INTER/TYPE25 Ifric = 1 generalised viscous, Ifric = 2 Darmstad and Ifric = 3 Renard), and the
+// friction filter (Ifiltr), at prescribed sliding: the formulas of seed 004 (comments 7 and 8), as
+// decoded in
 // ../shared/seeds/README.md, written out here (not taken from the library).
 //
 // Model: a rigid steel block 0.1 x 0.1 x 0.02 m (2 x 2 x 1 elements, M = 1.56 kg, A = 0.01 m^2)
@@ -176,6 +177,31 @@ TEST(FrictionDarmstad, MeasuredCoefficientFollowsTheLawAtPrescribedSpeeds) {
     EXPECT_NEAR(normal, kMass * kG, 1e-4 * kMass * kG) << "V = " << v;
   }
   std::cout << "Darmstad: " << cycles << " cycles, " << seconds_since(start) << " s\n";
+}
+
+// Generalised viscous law (Ifric = 1): mu = Fric + C1 p + C2 V + C3 p V + C4 p^2 + C5 V^2; each
+// term a sizeable share of mu at p = 1530 Pa and the speeds below.
+constexpr double kViscousFric = 0.1, kV[5] = {5.0e-5, 0.1, 2.0e-5, 2.0e-8, 0.05};
+double viscous_mu(double p, double v) {
+  return kViscousFric + kV[0] * p + kV[1] * v + kV[2] * p * v + kV[3] * p * p + kV[4] * v * v;
+}
+
+TEST(FrictionViscous, MeasuredCoefficientFollowsTheLawAtPrescribedSpeeds) {
+  const auto start = std::chrono::steady_clock::now();
+  std::string friction = "1, VISCOUS, " + num(kViscousFric) + "\n";
+  for (int i = 0; i < 5; ++i) friction += (i ? ", " : "") + num(kV[i]);
+  const double p = kMass * kG / kArea;
+  std::int64_t cycles = 0;
+  for (const double v : {0.1, 0.5, 1.5}) {
+    double normal = 0.0;
+    const double mu = dragged_mu(v, friction, cycles, normal), expected = viscous_mu(p, v);
+    std::cout << "viscous: p = " << p << " Pa, V = " << v << " m/s: F_t / F_n = " << mu
+              << ", mu(p, V) = " << expected << ", error " << 100.0 * (mu - expected) / expected
+              << "%\n";
+    EXPECT_NEAR(mu, expected, 0.01 * expected) << "V = " << v;
+    EXPECT_NEAR(normal, kMass * kG, 1e-4 * kMass * kG) << "V = " << v;
+  }
+  std::cout << "viscous: " << cycles << " cycles, " << seconds_since(start) << " s\n";
 }
 
 // The filter's step response: Coulomb mu = 0.3 at V = 0.5 m/s. `check(n, t, f)` gets the
