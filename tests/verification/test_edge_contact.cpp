@@ -8,6 +8,8 @@
 // pass-through velocity (unchanged to round-off).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -102,6 +104,91 @@ TEST(EdgeContact, DampedEdgeSpringsKeepTheEnergyBooks) {
   EXPECT_LT(parts[0].velocity.z, 5.0);
   EXPECT_NEAR(parts[0].mass * parts[0].velocity.z + parts[1].mass * parts[1].velocity.z, 0.0, 1e-9);
   EXPECT_LT(worst, 1e-2);
+}
+
+// Solid edges (Iedge 11, 13, 22 and Edge_angle): the same crossing with two rigid bars of square
+// section standing on an edge, a diamond: the lower bar along x with its ridge on top at z = 0,
+// the upper bar along y with its ridge below at z = 2 mm, each 50 mm long, the diamond's
+// half-diagonal 5 mm, one hexahedron each (equal masses), approaching at 2 x 5 m/s. Their faces'
+// points lie beyond the other bar (the 2 x 2 Gauss points at 14 mm from the crossing, the bars 5
+// mm wide there), so only the ridges meet: a 90-degree solid edge each. Without edge contact, or
+// with SHARP and an edge_angle below 90 degrees (the ridge is then not sharp), they pass through
+// with their velocities; with SHARP (edge_angle 135, the default), SHARP_ALL_SHELLS or ALL the
+// ridges collide and the bars bounce: undamped, equal masses, the velocities reverse (1%, as the
+// plates above) and the momentum stays zero to round-off. The energy balance is printed, not held:
+// the ridges' impact gains 1.2% (the bars part at 5.03 m/s; 1.4% and 1.0% with the penalty / 10
+// and / 100), where the shell plates' capsules above gain 0.07%: an open finding of edge springs
+// of radius 0.
+std::string crossing_bars(const std::string& edge_line) {
+  constexpr double s = 0.005, half = 0.025, gap = 0.002;
+  // A hexahedron from a base diamond at one end and the extrusion to the other, the base ordered
+  // so that its normal points along the extrusion (positive volume).
+  std::string nodes, hexes;
+  int id = 0;
+  const auto bar = [&](int element, int part, const std::array<Vec3, 4>& base, const Vec3& along) {
+    std::array<Vec3, 4> b = base;
+    if (dot(cross(b[1] - b[0], b[3] - b[0]), along) < 0.0) std::swap(b[1], b[3]);
+    std::string row = std::to_string(element) + ", " + std::to_string(part);
+    for (const Vec3& shift : {Vec3{}, along})
+      for (const Vec3& c : b) {
+        const Vec3 x = c + shift;
+        nodes += std::to_string(++id) + ", " + std::to_string(x.x) + ", " + std::to_string(x.y) +
+                 ", " + std::to_string(x.z) + "\n";
+        row += ", " + std::to_string(id);
+      }
+    hexes += row + "\n";
+  };
+  bar(1, 1, {Vec3{-half, 0.0, 0.0}, {-half, s, -s}, {-half, 0.0, -2 * s}, {-half, -s, -s}},
+      {2 * half, 0.0, 0.0});
+  bar(2, 2,
+      {Vec3{0.0, -half, gap}, {s, -half, gap + s}, {0.0, -half, gap + 2 * s}, {-s, -half, gap + s}},
+      {0.0, 2 * half, 0.0});
+  return "*UNIT_SYSTEM\nSI\n*TIME\n0.004\n*NODE\n" + nodes + "*ELEMENT_SOLID\n" + hexes +
+         R"(*MAT_RIGID
+1, 7800.0
+*PART
+"lower bar"
+1, 1
+"upper bar"
+2, 1
+*INITIAL_VELOCITY
+P, 1, 0.0, 0.0, 5.0
+*INITIAL_VELOCITY
+P, 2, 0.0, 0.0, -5.0
+*CONTACT
+1
+P, 1, P, 2, 0.0, 1.0e11
+0, 0.0
+*CONTACT_EDGE
+1, )" + edge_line +
+         "\n*END\n";
+}
+
+TEST(EdgeContact, CrossingSolidRidgesBounceWhenTheirEdgesAreSelected) {
+  struct Cell {
+    const char* edges;
+    bool bounce;
+  };
+  for (const Cell& cell : {Cell{"NONE", false}, Cell{"SHARP", true}, Cell{"SHARP, 60", false},
+                           Cell{"SHARP_ALL_SHELLS", true}, Cell{"ALL", true}}) {
+    const Model model = read_deck_string(crossing_bars(cell.edges), "crossing_bars.k");
+    Simulation sim(model);
+    double worst = 0.0;
+    verification::run_to(sim, model.time.end_time, [&](const Simulation& s) {
+      worst = std::max(worst, std::abs(s.energy_balance_error()));
+    });
+    const auto parts = sim.part_states();
+    const double lower = parts[0].velocity.z, upper = parts[1].velocity.z;
+    std::cout << "bars, iedge " << cell.edges << ": lower " << lower << " m/s, upper " << upper
+              << " m/s, worst energy balance " << worst << "\n";
+    const double sign = cell.bounce ? -1.0 : 1.0;
+    EXPECT_NEAR(lower, sign * 5.0, cell.bounce ? 0.05 : 1e-9) << cell.edges;
+    EXPECT_NEAR(upper, -sign * 5.0, cell.bounce ? 0.05 : 1e-9) << cell.edges;
+    EXPECT_NEAR(parts[0].mass * lower + parts[1].mass * upper, 0.0, 1e-9) << cell.edges;
+    if (!cell.bounce) {
+      EXPECT_LT(worst, 1e-9) << cell.edges;  // nothing touches
+    }
+  }
 }
 
 }  // namespace
