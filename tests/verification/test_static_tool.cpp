@@ -2,6 +2,7 @@
 // in implicit use): node to surface against a plane and a cylinder that move.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -249,6 +250,24 @@ TEST(StaticTool, ArcsOfABearingCarryTheirShareOfTheShaft) {
   }
   EXPECT_NEAR(quarter.x, expected.x, 1e-3 * std::abs(expected.x));
   EXPECT_NEAR(quarter.y, expected.y, 1e-3 * std::abs(expected.y));
+}
+
+// A tool is met by nodes: smoothing, which is for surface-to-surface contact, is refused at its
+// line rather than ignored.
+TEST(StaticTool, SmoothingIsRefusedWithATool) {
+  std::string deck = shaft_in_bearing("0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 10.0", "");
+  const std::size_t at = deck.find("*STATIC\n\"lower\"");
+  deck.insert(at, "*CONTACT_SMOOTHING\n1, BOTH\n");
+  const auto line = static_cast<std::size_t>(std::count(deck.begin(), deck.begin() + at, '\n')) + 2;
+  const Model m = read_deck_string(deck, "bearing_tool.k");
+  try {
+    StaticSolver solver(m);
+    solver.run();
+    ADD_FAILURE() << "a tool contact took smoothing";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, line) << e.what();
+    EXPECT_NE(std::string(e.what()).find("surface-to-surface"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

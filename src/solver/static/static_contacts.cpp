@@ -249,10 +249,11 @@ StaticContacts make_static_contacts(const Model& model, const RemovedNodes& tied
     const bool tool = spec.surface2.type == EntityType::Tool;
     Side one = side_of(model, spec.surface1), two = tool ? Side{} : side_of(model, spec.surface2);
     if (spec.smoothing) {
-      if (spec.discretisation == Discretisation::NodeToSurface || !one.nodes.empty())
+      if (spec.discretisation == Discretisation::NodeToSurface || !one.nodes.empty() || tool)
         throw InputError(spec.smoothing->where,
                          "smoothing is for surface-to-surface contact (OptiStruct SMOOTH, seed "
-                         "003): the points of node-to-surface contact are the nodes themselves");
+                         "003): the points of node-to-surface contact (and of a tool's) are the "
+                         "nodes themselves");
       one.smooth = spec.smoothing->surface1;
       two.smooth = spec.smoothing->surface2;
     }
