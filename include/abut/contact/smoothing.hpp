@@ -7,21 +7,26 @@
 // normal vectors", Computer Aided Geometric Design 22 (2005) 327-347). Each edge a-b becomes the
 // quadratic curve
 //   x(t) = x_a (1 - t) + x_b t - c t (1 - t),   t in [0, 1],
-// whose tangents x'(0) = d - c and x'(1) = d + c (d = x_b - x_a) are normal to the nodal normals
-// n_a and n_b: n_a . c = n_a . d and n_b . c = -n_b . d, with c = alpha n_a + beta n_b (Nagata's
-// curvature coefficient, the least-norm solution):
-//   alpha = (n_a.d + g n_b.d) / (1 - g^2),  beta = -(n_b.d + g n_a.d) / (1 - g^2),  g = n_a . n_b,
-// and, where the normals are parallel to within 1e-6 (the two equations then nearly coincide),
-// c = ((n_a - n_b) . d / 2) (n_a + n_b) / |n_a + n_b|. The nodal normal is the area-weighted mean
-// of the facets' normals around the node, at the current coordinates. The edge's mid-point is
+// whose tangents x'(0) = d - c and x'(1) = d + c (d = x_b - x_a) are normal to the normals at its
+// ends: n . c = n . d for a normal n at a, n . c = -n . d at b. With one normal at each end, c is
+// Nagata's curvature coefficient, the least-norm solution, alpha n_a + beta n_b with
+//   alpha = (n_a.d + g n_b.d) / (1 - g^2),  beta = -(n_b.d + g n_a.d) / (1 - g^2),  g = n_a . n_b.
+// abut solves the least-norm least-squares problem of all the edge's conditions (its normal
+// equations with a Tikhonov term of 1e-8 of their trace, refined twice): the same c there, and
+// where the two normals are nearly parallel (the equations then nearly coincide) the weak
+// direction fades instead of dividing round-off by 1 - g^2. A node's normal is the area-weighted
+// mean of the facets' normals around it, at the current coordinates. The edge's mid-point is
 // (x_a + x_b) / 2 - c / 4, so a triangle's patch is the quadratic triangle on its corners and its
 // edges' mid-points (Nagata's triangular patch is quadratic), and a quadrilateral's the 8-node
 // serendipity patch on them (Nagata's quadrilateral patch has the same eight terms).
 //
-// Where the facets around a node fold by more than the crease angle (one facet's normal more than
-// half of it from the node's), the node is a corner of the smooth surface and its edges stay
-// straight (c = 0), as does an edge whose two nodal normals differ by more than the angle: a
-// smoothed box keeps its edges.
+// Creases: an edge whose facets fold by more than the crease angle splits the facets around each
+// of its nodes into sectors, each with its own normal (its facets' mean). An edge inside a sector
+// takes the sector's normals at its ends; a crease edge takes the normals of both its sides at
+// each end (four conditions), so its curve is tangent to both sides: a box's edges stay straight,
+// a cylinder's rim keeps its arc, and the flat end beside it stays flat. Where the smooth surface
+// ends (a free border, a crease), a node's normal comes from its side's facets alone, one facet at
+// a corner: the facet next to it is then no better than its chord.
 //
 // The patches enter the contact as curved faces do (dependent_nodes.hpp, facet_parent.hpp): each
 // facet becomes n x n facets whose corners lie on its patch, and each of them knows its patch (the
