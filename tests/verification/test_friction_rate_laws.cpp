@@ -161,22 +161,30 @@ double darmstad_mu(double p, double v) {
          kD[4] * std::exp(kD[5] * v);
 }
 
-TEST(FrictionDarmstad, MeasuredCoefficientFollowsTheLawAtPrescribedSpeeds) {
+// The dragged block's F_t / F_n at 0.1, 0.5 and 1.5 m/s on the law `friction` (the
+// *CONTACT_FRICTION lines) against mu(p, V) of its formula `mu_of`, to 1%, and its normal force
+// M g to 1e-4.
+template <class Mu>
+void expect_law_at_speeds(const std::string& name, const std::string& friction, Mu mu_of) {
   const auto start = std::chrono::steady_clock::now();
-  std::string friction = "1, DARMSTAD, " + num(kFric) + "\n";
-  for (int i = 0; i < 6; ++i) friction += (i ? ", " : "") + num(kD[i]);
   const double p = kMass * kG / kArea;
   std::int64_t cycles = 0;
   for (const double v : {0.1, 0.5, 1.5}) {
     double normal = 0.0;
-    const double mu = dragged_mu(v, friction, cycles, normal), expected = darmstad_mu(p, v);
-    std::cout << "Darmstad: p = " << p << " Pa (measured F_n / A = " << normal / kArea
+    const double mu = dragged_mu(v, friction, cycles, normal), expected = mu_of(p, v);
+    std::cout << name << ": p = " << p << " Pa (measured F_n / A = " << normal / kArea
               << " Pa), V = " << v << " m/s: F_t / F_n = " << mu << ", mu(p, V) = " << expected
               << ", error " << 100.0 * (mu - expected) / expected << "%\n";
-    EXPECT_NEAR(mu, expected, 0.01 * expected) << "V = " << v;
-    EXPECT_NEAR(normal, kMass * kG, 1e-4 * kMass * kG) << "V = " << v;
+    EXPECT_NEAR(mu, expected, 0.01 * expected) << name << ", V = " << v;
+    EXPECT_NEAR(normal, kMass * kG, 1e-4 * kMass * kG) << name << ", V = " << v;
   }
-  std::cout << "Darmstad: " << cycles << " cycles, " << seconds_since(start) << " s\n";
+  std::cout << name << ": " << cycles << " cycles, " << seconds_since(start) << " s\n";
+}
+
+TEST(FrictionDarmstad, MeasuredCoefficientFollowsTheLawAtPrescribedSpeeds) {
+  std::string friction = "1, DARMSTAD, " + num(kFric) + "\n";
+  for (int i = 0; i < 6; ++i) friction += (i ? ", " : "") + num(kD[i]);
+  expect_law_at_speeds("Darmstad", friction, darmstad_mu);
 }
 
 // Generalised viscous law (Ifric = 1): mu = Fric + C1 p + C2 V + C3 p V + C4 p^2 + C5 V^2; each
@@ -187,21 +195,9 @@ double viscous_mu(double p, double v) {
 }
 
 TEST(FrictionViscous, MeasuredCoefficientFollowsTheLawAtPrescribedSpeeds) {
-  const auto start = std::chrono::steady_clock::now();
   std::string friction = "1, VISCOUS, " + num(kViscousFric) + "\n";
   for (int i = 0; i < 5; ++i) friction += (i ? ", " : "") + num(kV[i]);
-  const double p = kMass * kG / kArea;
-  std::int64_t cycles = 0;
-  for (const double v : {0.1, 0.5, 1.5}) {
-    double normal = 0.0;
-    const double mu = dragged_mu(v, friction, cycles, normal), expected = viscous_mu(p, v);
-    std::cout << "viscous: p = " << p << " Pa, V = " << v << " m/s: F_t / F_n = " << mu
-              << ", mu(p, V) = " << expected << ", error " << 100.0 * (mu - expected) / expected
-              << "%\n";
-    EXPECT_NEAR(mu, expected, 0.01 * expected) << "V = " << v;
-    EXPECT_NEAR(normal, kMass * kG, 1e-4 * kMass * kG) << "V = " << v;
-  }
-  std::cout << "viscous: " << cycles << " cycles, " << seconds_since(start) << " s\n";
+  expect_law_at_speeds("viscous", friction, viscous_mu);
 }
 
 // The filter's step response: Coulomb mu = 0.3 at V = 0.5 m/s. `check(n, t, f)` gets the
