@@ -7,6 +7,7 @@
 #include <sstream>
 #include <utility>
 
+#include "abut/contact/static_contact.hpp"
 #include "abut/mesh/mesh.hpp"
 
 namespace abut::verification {
@@ -59,6 +60,15 @@ inline DriveReaction drive_reaction(const Nodes& x, std::span<const double> u,
     r.torque += (x.x[i] + u[3 * i]) * f[3 * i + 1] - (x.y[i] + u[3 * i + 1]) * f[3 * i];
   }
   return r;
+}
+
+// The normal force of the static contact passes: p A summed over their points (a symmetric
+// contact's two passes each halve their areas).
+inline double normal_force(std::span<const StaticContact> passes) {
+  double n = 0.0;
+  for (const StaticContact& c : passes)
+    for (const StaticContactPoint& p : c.points()) n += p.pressure * p.area;
+  return n;
 }
 
 }  // namespace abut::verification

@@ -120,9 +120,7 @@ History turn(const std::string& deck) {
     const verification::DriveReaction drive =
         verification::drive_reaction(m.mesh.nodes, solver.displacement(), solver.reaction(), 6.5);
     const double w = drive.vertical, torque = drive.torque;
-    double normal = 0.0;
-    for (const StaticContact& c : solver.contacts())
-      for (const StaticContactPoint& p : c.points()) normal += p.pressure * p.area;
+    const double normal = verification::normal_force(solver.contacts());
     h.worst_w = std::max(h.worst_w, std::abs(std::abs(w) - w_ref) / w_ref);
     h.worst_n = std::max(h.worst_n, std::abs(normal - n_ref) / n_ref);
     h.worst_t = std::max(h.worst_t, std::abs(std::abs(torque) - t_ref) / t_ref);

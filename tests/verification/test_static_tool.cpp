@@ -198,8 +198,7 @@ TEST(StaticTool, ASpinningBearingTurnsAHeldShaftWithTheFrictionOfItsCircle) {
     const verification::DriveReaction drive =
         verification::drive_reaction(m.mesh.nodes, solver.displacement(), solver.reaction(), 6.5);
     const double w = drive.vertical, torque = drive.torque;
-    double normal = 0.0;
-    for (const StaticContactPoint& p : solver.contacts()[0].points()) normal += p.pressure * p.area;
+    const double normal = verification::normal_force(solver.contacts());
     std::cout << "t = " << inc.total_time << ": W " << w << " N, N " << normal << " N, T " << torque
               << " N mm\n";
     worst_w = std::max(worst_w, std::abs(std::abs(w) - w_ref) / w_ref);
