@@ -4,7 +4,7 @@
 #include <array>
 #include <limits>
 
-#include "abut/contact/interface.hpp"
+#include "interface_impl.hpp"
 
 namespace abut {
 
@@ -14,8 +14,8 @@ namespace abut {
 // take it as a partner (judge_facet): the point in front of it, within the pair's detection depth,
 // and not within Igap 2's initial distance. In self contact a shell's other side lies in the
 // cell's plane, facing it, a pair's gap deep; it is no cover.
-CellOverlap ContactInterface::cover(const Pass& pass, std::size_t p, const PointFrame& f,
-                                    const Partner& h, const ContactInput& in) const {
+CellOverlap InterfaceImpl::cover(const Pass& pass, std::size_t p, const PointFrame& f,
+                                 const Partner& h, const ContactInput& in) const {
   const Side& own = sides_[pass.own];
   const Side& target = sides_[pass.target];
   const auto first = pass.candidates.offsets[p], last = pass.candidates.offsets[p + 1];
@@ -44,7 +44,7 @@ CellOverlap ContactInterface::cover(const Pass& pass, std::size_t p, const Point
                     candidates, cover_facets(target, in));
 }
 
-CoverFacets ContactInterface::cover_facets(const Side& target, const ContactInput& in) {
+CoverFacets InterfaceImpl::cover_facets(const Side& target, const ContactInput& in) {
   return {target.surface.facets, target.active, {}, in.x, in.y, in.z, {}};  // shells too (cover)
 }
 
@@ -52,9 +52,8 @@ CoverFacets ContactInterface::cover_facets(const Side& target, const ContactInpu
 // normal n; a shell facet's share g_t = g - g_s lies along the facet's normal m, which is
 // g_t / (m . n) along n: over a facet tilted against the cell its contact surface rises further.
 // (A solid's share is its padding, GapSettings::padding, taken along n.)
-double ContactInterface::cell_gap(const Side& own, std::size_t p, const Side& target,
-                                  const Partner& h, const CellOverlap& o,
-                                  const ContactInput& in) const {
+double InterfaceImpl::cell_gap(const Side& own, std::size_t p, const Side& target, const Partner& h,
+                               const CellOverlap& o, const ContactInput& in) const {
   const CoverFacets other = cover_facets(target, in);
   const double mean = cell_mean_gap(own.surface.facets[own.point_facet[p]], o, other);
   const double g_t = std::max(h.pair_gap - own.point_gap[p], 0.0);
@@ -81,8 +80,8 @@ double ContactInterface::cell_gap(const Side& own, std::size_t p, const Side& ta
 // contact surface rounds its inner edges, a pair's gap off the facets (narrow_phase.hpp), which
 // the cover's flat overlaps do not see: a crushed tube's folds, covered, lost 5% of the energy
 // balance and let the walls pass 0.33 mm into each other (22% of the wall).
-bool ContactInterface::meet_by_cell(const Pass& pass, std::size_t p, const PointFrame& f,
-                                    const ContactInput& in, Partner& h, CellOverlap& o) const {
+bool InterfaceImpl::meet_by_cell(const Pass& pass, std::size_t p, const PointFrame& f,
+                                 const ContactInput& in, Partner& h, CellOverlap& o) const {
   const Side& own = sides_[pass.own];
   const Side& target = sides_[pass.target];
   o = CellOverlap{};
@@ -119,8 +118,8 @@ bool ContactInterface::meet_by_cell(const Pass& pass, std::size_t p, const Point
 
 // The nearest broad-phase candidate of point p that faces it within alpha_edge and that `rules`
 // accept (S2S cells: border_rules; N2S nodes: partner_rules).
-Partner ContactInterface::nearest_facing(const Pass& pass, std::size_t p, const PointFrame& f,
-                                         const ContactInput& in, PartnerRules rules) const {
+Partner InterfaceImpl::nearest_facing(const Pass& pass, std::size_t p, const PointFrame& f,
+                                      const ContactInput& in, PartnerRules rules) const {
   const Side& target = sides_[pass.target];
   const TargetFacets facets = target_facets(target, target.depth, in, bands_current_);
   rules.facing = sharp_cos_;
@@ -129,7 +128,7 @@ Partner ContactInterface::nearest_facing(const Pass& pass, std::size_t p, const 
                       f.normal, rules);
 }
 
-PartnerRules ContactInterface::border_rules(const Side& own, std::size_t p) const {
+PartnerRules InterfaceImpl::border_rules(const Side& own, std::size_t p) const {
   PartnerRules rules = partner_rules(own, p);
   if (own.point_node[p] < 0 && !own.point_reach.empty())
     rules.edge_tolerance = std::max(rules.edge_tolerance, own.point_reach[p]);
@@ -145,8 +144,8 @@ PartnerRules ContactInterface::border_rules(const Side& own, std::size_t p) cons
 // means something where the node's facets all face h within alpha_edge and h is a solid's face:
 // elsewhere (a node on an edge or in a corner, against a shell, or a coarse side pressing a fine
 // one) the node keeps its whole area, as before.
-double ContactInterface::node_cover(const Pass& pass, std::size_t p, const Partner& h,
-                                    const ContactInput& in) const {
+double InterfaceImpl::node_cover(const Pass& pass, std::size_t p, const Partner& h,
+                                 const ContactInput& in) const {
   const Side& own = sides_[pass.own];
   const Side& target = sides_[pass.target];
   if (h.facet < 0 || target.surface.twin[h.facet] >= 0) return 1.0;
@@ -202,9 +201,9 @@ double ContactInterface::node_cover(const Pass& pass, std::size_t p, const Partn
 // block rang and walked off a slope it should have held. The nearest facet facing the node
 // within alpha_edge, when the narrow phase accepts one and part of the node's area lies over it,
 // presses instead; a node truly beside a wall (none of its area over a facing facet) keeps it.
-Partner ContactInterface::facing_node_partner(const Pass& pass, std::size_t p, const PointFrame& f,
-                                              const ContactInput& in, const Partner& h,
-                                              std::optional<double>& cover) const {
+Partner InterfaceImpl::facing_node_partner(const Pass& pass, std::size_t p, const PointFrame& f,
+                                           const ContactInput& in, const Partner& h,
+                                           std::optional<double>& cover) const {
   if (h.facet < 0 || f.free || f.two_sided || settings_.sense == ContactSense::Negative) return h;
   if (-dot(f.normal, h.normal) >= sharp_cos_) return h;
   const Side& own = sides_[pass.own];

@@ -5,13 +5,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "abut/contact/interface.hpp"
 #include "abut/contact/quad.hpp"
+#include "interface_impl.hpp"
 
 namespace abut {
 
-void ContactInterface::press_corner_walls(Pass& pass, std::size_t p, const PointFrame& f,
-                                          const Partner& h, const ContactInput& in) {
+void InterfaceImpl::press_corner_walls(Pass& pass, std::size_t p, const PointFrame& f,
+                                       const Partner& h, const ContactInput& in) {
   const ContactSettings& s = settings_;
   // The ordinary contact of pushing springs; a free node (no normal, no vector area) and a point
   // with an initial offset (measured against its partner alone) keep their partner only.
@@ -58,7 +58,7 @@ void ContactInterface::press_corner_walls(Pass& pass, std::size_t p, const Point
   }
 }
 
-double ContactInterface::scatter_corner(const Pass& pass, std::size_t p, ContactForces& out) {
+double InterfaceImpl::scatter_corner(const Pass& pass, std::size_t p, ContactForces& out) {
   const Side& own = sides_[pass.own];
   const Side& target = sides_[pass.target];
   const std::int32_t node = own.point_node[p];

@@ -13,8 +13,8 @@
 #include <utility>
 
 #include "abut/contact/integration.hpp"
-#include "abut/contact/interface.hpp"
 #include "abut/contact/quad.hpp"
+#include "interface_impl.hpp"
 
 namespace abut {
 namespace {
@@ -23,7 +23,7 @@ enum class Take { Borders, SharpSolidAndBorders, AllSolidAndBorders, AllSolidAnd
 
 }  // namespace
 
-void ContactInterface::build_edges(const ContactInput& in) {
+void InterfaceImpl::build_edges(const ContactInput& in) {
   const EdgeSelection selection = settings_.edges.selection;
   if (selection == EdgeSelection::None) return;
   auto collect = [&](const Side& side, Take take) {

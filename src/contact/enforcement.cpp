@@ -5,13 +5,13 @@
 #include <cmath>
 #include <limits>
 
-#include "abut/contact/interface.hpp"
 #include "abut/contact/laws/stick_slip.hpp"
 #include "abut/contact/quad.hpp"
+#include "interface_impl.hpp"
 
 namespace abut {
-Vec3 ContactInterface::velocity_at(const std::array<std::int32_t, 4>& nodes,
-                                   const std::array<double, 4>& shape, const ContactInput& in) {
+Vec3 InterfaceImpl::velocity_at(const std::array<std::int32_t, 4>& nodes,
+                                const std::array<double, 4>& shape, const ContactInput& in) {
   Vec3 v;
   if (in.vx.empty()) return v;  // at construction
   for (int a = 0; a < 4; ++a)
@@ -22,8 +22,8 @@ Vec3 ContactInterface::velocity_at(const std::array<std::int32_t, 4>& nodes,
 // The point's share of each node's mass: m_i * N_i * (its area / the node's area), so that the
 // shares of all points add up to the nodal masses; on the other side a point may cover more than
 // a node's area: never more than the node.
-double ContactInterface::mass_share(const Side& side, const std::array<std::int32_t, 4>& nodes,
-                                    const std::array<double, 4>& shape, double area) const {
+double InterfaceImpl::mass_share(const Side& side, const std::array<std::int32_t, 4>& nodes,
+                                 const std::array<double, 4>& shape, double area) const {
   double m = 0.0;
   for (int a = 0; a < 4; ++a)
     if (side.node_area[nodes[a]] > 0.0)
@@ -31,12 +31,12 @@ double ContactInterface::mass_share(const Side& side, const std::array<std::int3
   return m;
 }
 
-double ContactInterface::reduced_mass(double m1, double m2) {
+double InterfaceImpl::reduced_mass(double m1, double m2) {
   return m1 + m2 > 0.0 ? m1 * m2 / (m1 + m2) : 0.0;
 }
 
-ContactInterface::PointFrame ContactInterface::frame(const Side& side, std::size_t p,
-                                                     const ContactInput& in) const {
+InterfaceImpl::PointFrame InterfaceImpl::frame(const Side& side, std::size_t p,
+                                               const ContactInput& in) const {
   PointFrame r;
   const std::int32_t node = side.point_node[p];
   r.nodes = side.point_nodes(p);
@@ -80,8 +80,8 @@ ContactInterface::PointFrame ContactInterface::frame(const Side& side, std::size
   return r;
 }
 
-TargetFacets ContactInterface::target_facets(const Side& target, std::span<const double> depth,
-                                             const ContactInput& in, bool banded) const {
+TargetFacets InterfaceImpl::target_facets(const Side& target, std::span<const double> depth,
+                                          const ContactInput& in, bool banded) const {
   return {target.surface.facets,
           target.sharp,
           target.active,
@@ -97,7 +97,7 @@ TargetFacets ContactInterface::target_facets(const Side& target, std::span<const
           target.max_facet_gap};
 }
 
-PartnerRules ContactInterface::partner_rules(const Side& own, std::size_t p) const {
+PartnerRules InterfaceImpl::partner_rules(const Side& own, std::size_t p) const {
   PartnerRules rules;
   rules.depth_above = settings_.adhesion ? settings_.adhesion->zone() : 0.0;
   rules.point_gap = own.point_gap[p];
@@ -124,8 +124,8 @@ PartnerRules ContactInterface::partner_rules(const Side& own, std::size_t p) con
   return rules;
 }
 
-Partner ContactInterface::partner_of(const Pass& pass, std::size_t p, const PointFrame& f,
-                                     const ContactInput& in, std::int32_t previous) const {
+Partner InterfaceImpl::partner_of(const Pass& pass, std::size_t p, const PointFrame& f,
+                                  const ContactInput& in, std::int32_t previous) const {
   const Side& own = sides_[pass.own];
   const Side& target = sides_[pass.target];
   // The regular search: within the facets' own detection depth, among the candidates, whose boxes
@@ -158,8 +158,8 @@ Partner ContactInterface::partner_of(const Pass& pass, std::size_t p, const Poin
   return find_partner(around, {near.data(), count}, f.nodes, f.x, f.normal, rules, hint);
 }
 
-double ContactInterface::spring(const Side& own, std::size_t p, double area, const Side& target,
-                                std::int32_t f) const {
+double InterfaceImpl::spring(const Side& own, std::size_t p, double area, const Side& target,
+                             std::int32_t f) const {
   const std::size_t np = part_ids_.size();
   const std::size_t a = static_cast<std::size_t>(own.point_part[p]);
   double scale = 0.0;
@@ -177,13 +177,13 @@ double ContactInterface::spring(const Side& own, std::size_t p, double area, con
   return combined_stiffness(settings_.stiffness, km, own.point_ks[p]) * own.point_share[p] * scale;
 }
 
-bool ContactInterface::quiet(const Pass& pass, std::size_t p) const {
+bool InterfaceImpl::quiet(const Pass& pass, std::size_t p) const {
   return pass.candidates.offsets[p] == pass.candidates.offsets[p + 1] && !pass.hit[p] &&
          pass.state[p] != kTied && !pass.remembers(p) && pass.released[p] == 0.0 &&
          (pass.heat_facet.empty() || pass.heat_facet[p] < 0);
 }
 
-void ContactInterface::evaluate_point(Pass& pass, std::size_t p, const ContactInput& in) {
+void InterfaceImpl::evaluate_point(Pass& pass, std::size_t p, const ContactInput& in) {
   const std::int32_t last_partner = pass.hit[p] ? pass.hit_facet[p] : -1;
   pass.hit[p] = 0;
   pass.kink[p] = 0.0;

@@ -5,11 +5,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "abut/contact/interface.hpp"
+#include "interface_impl.hpp"
 
 namespace abut {
 
-void ContactInterface::erode(std::span<const std::uint8_t> eroded) {
+void InterfaceImpl::erode(std::span<const std::uint8_t> eroded) {
   const ErosionSettings& e = settings_.erosion;
   auto is_eroded = [&eroded](std::int32_t element) {
     return element >= 0 && static_cast<std::size_t>(element) < eroded.size() && eroded[element];

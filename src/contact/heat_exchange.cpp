@@ -13,13 +13,13 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "abut/contact/interface.hpp"
 #include "abut/contact/quad.hpp"
+#include "interface_impl.hpp"
 
 namespace abut {
 
-void ContactInterface::record_conductance(Pass& pass, std::size_t p, std::int32_t facet, double xi,
-                                          double eta, double pressure, double gap, double area) {
+void InterfaceImpl::record_conductance(Pass& pass, std::size_t p, std::int32_t facet, double xi,
+                                       double eta, double pressure, double gap, double area) {
   if (!settings_.thermal.conductance) return;
   const double h = conductance(*settings_.thermal.conductance, pressure, gap);
   // A negative or undefined conductance (a user function) conducts nothing: it would let heat
@@ -32,7 +32,7 @@ void ContactInterface::record_conductance(Pass& pass, std::size_t p, std::int32_
 }
 
 template <class Link>
-void ContactInterface::for_each_heat_link(const Link& link) const {
+void InterfaceImpl::for_each_heat_link(const Link& link) const {
   for (const Pass& pass : passes_) {
     const Side& own = sides_[pass.own];
     const Side& target = sides_[pass.target];
@@ -46,8 +46,8 @@ void ContactInterface::for_each_heat_link(const Link& link) const {
   }
 }
 
-double ContactInterface::conduct_heat(std::span<const double> temperature, double duration,
-                                      std::span<double> heat) {
+double InterfaceImpl::conduct_heat(std::span<const double> temperature, double duration,
+                                   std::span<double> heat) {
   const std::size_t node_count = mass_.size();
   if (heat.size() < node_count || temperature.size() < node_count)
     throw std::invalid_argument(
@@ -75,7 +75,7 @@ double ContactInterface::conduct_heat(std::span<const double> temperature, doubl
   return flow;
 }
 
-void ContactInterface::scatter_heat(const ContactInput& in, ContactForces& out) {
+void InterfaceImpl::scatter_heat(const ContactInput& in, ContactForces& out) {
   const std::size_t node_count = mass_.size();
   const bool conduction = settings_.thermal.conductance.has_value();
   const bool friction = settings_.thermal.friction_heat && in.dt > 0.0;

@@ -8,8 +8,8 @@
 #include <map>
 #include <utility>
 
-#include "abut/contact/interface.hpp"
 #include "abut/contact/quad.hpp"
+#include "interface_impl.hpp"
 
 namespace abut {
 namespace {
@@ -20,7 +20,7 @@ constexpr double kLayerShare = 0.9;
 
 }  // namespace
 
-std::vector<DeepStart> ContactInterface::deep_initial_points(const ContactInput& in) const {
+std::vector<DeepStart> InterfaceImpl::deep_initial_points(const ContactInput& in) const {
   // Self contact faces its own body's far side within the layer; ties, clearance and the other
   // senses have no penetration to miss.
   if (self_contact() || settings_.freeze || settings_.clearance ||

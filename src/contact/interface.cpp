@@ -1,8 +1,6 @@
 // ContactInterface: the step driver and the broad phase; reports. Set-up is in
 // interface_setup.cpp, enforcement in enforcement.cpp, the scatter of forces and statistics in
 // scatter.cpp.
-#include "abut/contact/interface.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -11,6 +9,7 @@
 
 #include "abut/contact/quad.hpp"
 #include "abut/core/parallel.hpp"
+#include "interface_impl.hpp"
 
 namespace abut {
 namespace {
@@ -21,27 +20,27 @@ bool is_radioss_rule(StiffnessRule r) { return r != StiffnessRule::FacetPenalty;
 
 }  // namespace
 
-std::size_t ContactInterface::point_count() const {
+std::size_t InterfaceImpl::point_count() const {
   std::size_t n = 0;
   for (const Pass& pass : passes_) n += pass.state.size();
   return n;
 }
 
-std::size_t ContactInterface::released_points() const {
+std::size_t InterfaceImpl::released_points() const {
   std::size_t n = 0;
   for (const Pass& pass : passes_)
     n += static_cast<std::size_t>(std::count(pass.state.begin(), pass.state.end(), kReleased));
   return n;
 }
 
-std::size_t ContactInterface::tied_points() const {
+std::size_t InterfaceImpl::tied_points() const {
   std::size_t n = 0;
   for (const Pass& pass : passes_)
     n += static_cast<std::size_t>(std::count(pass.state.begin(), pass.state.end(), kTied));
   return n;
 }
 
-std::vector<ContactInterface::NodeTie> ContactInterface::node_ties() const {
+std::vector<ContactInterface::NodeTie> InterfaceImpl::node_ties() const {
   std::vector<NodeTie> out;
   for (const Pass& pass : passes_) {
     const Side& own = sides_[pass.own];
@@ -55,7 +54,7 @@ std::vector<ContactInterface::NodeTie> ContactInterface::node_ties() const {
   return out;
 }
 
-bool ContactInterface::needs_rebuild(const ContactInput& in) const {
+bool InterfaceImpl::needs_rebuild(const ContactInput& in) const {
   if (builds_ == 0) return true;
   // Verlet-list rule: boxes were inflated by the margin m; while no node has moved more than
   // m/2 since the build, a point and a facet cannot have approached each other by more than m.
@@ -72,7 +71,7 @@ bool ContactInterface::needs_rebuild(const ContactInput& in) const {
   return moved2 > 0.25 * margin_ * margin_;
 }
 
-Vec3 ContactInterface::point_at(const Side& own, std::size_t p, const ContactInput& in) const {
+Vec3 InterfaceImpl::point_at(const Side& own, std::size_t p, const ContactInput& in) const {
   const std::int32_t node = own.point_node[p];
   return node >= 0
              ? Vec3{in.x[node], in.y[node], in.z[node]}
@@ -80,8 +79,8 @@ Vec3 ContactInterface::point_at(const Side& own, std::size_t p, const ContactInp
                           own.point_xi[p], own.point_eta[p]);
 }
 
-ContactInterface::PointPositions ContactInterface::point_positions(const Side& own,
-                                                                   const ContactInput& in) const {
+InterfaceImpl::PointPositions InterfaceImpl::point_positions(const Side& own,
+                                                             const ContactInput& in) const {
   const std::size_t n = own.point_facet.size();
   PointPositions q{std::vector<double>(n), std::vector<double>(n), std::vector<double>(n)};
 #pragma omp parallel for schedule(static) if (n >= static_cast <std::size_t>(kParallelMinimum))
@@ -94,7 +93,7 @@ ContactInterface::PointPositions ContactInterface::point_positions(const Side& o
   return q;
 }
 
-std::vector<Box> ContactInterface::cell_regions(const Side& own, const ContactInput& in) const {
+std::vector<Box> InterfaceImpl::cell_regions(const Side& own, const ContactInput& in) const {
   const std::size_t n = own.point_facet.size();
   std::vector<Box> regions(n);
 #pragma omp parallel for schedule(static) if (n >= static_cast <std::size_t>(kParallelMinimum))
@@ -122,7 +121,7 @@ std::vector<Box> ContactInterface::cell_regions(const Side& own, const ContactIn
   return regions;
 }
 
-void ContactInterface::rebuild_broad_phase(const ContactInput& in) {
+void InterfaceImpl::rebuild_broad_phase(const ContactInput& in) {
   const double above =
       std::max(settings_.adhesion ? settings_.adhesion->zone() : 0.0, settings_.edge_tolerance);
   for (Pass& pass : passes_) {
@@ -224,7 +223,7 @@ void ContactInterface::rebuild_broad_phase(const ContactInput& in) {
   ++builds_;
 }
 
-void ContactInterface::update_moving_region(const ContactInput& in) {
+void InterfaceImpl::update_moving_region(const ContactInput& in) {
   if (!settings_.moving_region) return;
   for (Side& side : sides_)
     for (std::size_t f = 0; f < side.surface.size(); ++f) {
@@ -242,7 +241,7 @@ void ContactInterface::update_moving_region(const ContactInput& in) {
 // evolves (erosion adds points and switches facets off; the region switches facets off).
 // The points with a candidate facet change only at a broad-phase build: their bound before
 // touching is gathered then, not at every step (scatter adds the points that touch).
-void ContactInterface::update_near_bound() {
+void InterfaceImpl::update_near_bound() {
   near_omega2_ = 0.0;
   for (const Pass& pass : passes_)
     for (std::size_t p = 0; p + 1 < pass.candidates.offsets.size(); ++p)
@@ -250,7 +249,7 @@ void ContactInterface::update_near_bound() {
         near_omega2_ = std::max(near_omega2_, pass.approach_omega2[p]);
 }
 
-void ContactInterface::archive(StateArchive& a) {
+void InterfaceImpl::archive(StateArchive& a) {
   a.mark("contact interface");
   a.expect(static_cast<std::uint64_t>(sides_.size()), "the side count of a contact");
   a.expect(static_cast<std::uint64_t>(passes_.size()), "the passes of a contact (one way or both)");
@@ -269,24 +268,24 @@ void ContactInterface::archive(StateArchive& a) {
   }
 }
 
-double ContactInterface::spring_step(double omega2) const {
+double InterfaceImpl::spring_step(double omega2) const {
   if (!(omega2 > 0.0)) return kInfinity;
   const double xi = settings_.damping;
   return 2.0 / std::sqrt(omega2) * (std::sqrt(1.0 + xi * xi) - xi);
 }
 
-double ContactInterface::approach_spring_step(double omega2) const {
+double InterfaceImpl::approach_spring_step(double omega2) const {
   return spring_step(spring_factor_ * omega2);
 }
 
-void ContactInterface::book_damping(const ContactInput& in) {
+void InterfaceImpl::book_damping(const ContactInput& in) {
   if (in.vx.empty()) return;
   double power = 0.0;  // of the damping forces on the nodes (< 0: they dissipate)
   for (const auto i : surface_nodes_) power += damping_power(i, in);
   stats_.damping_energy -= 0.5 * power * in.dt;
 }
 
-std::vector<PairStiffness> ContactInterface::pair_stiffness() const {
+std::vector<PairStiffness> InterfaceImpl::pair_stiffness() const {
   // Every rule is increasing in both sides' values, so the range over a part pair follows from
   // the ranges of the point values (own side) and the facet values (target side) of each part.
   const std::size_t np = part_ids_.size();
@@ -331,7 +330,7 @@ std::vector<PairStiffness> ContactInterface::pair_stiffness() const {
   return out;
 }
 
-void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
+void InterfaceImpl::apply(const ContactInput& in, ContactForces& out) {
   const std::size_t node_count = mass_.size();
   for (std::size_t size : {in.x.size(), in.y.size(), in.z.size(), in.vx.size(), in.vy.size(),
                            in.vz.size(), out.fx.size(), out.fy.size(), out.fz.size()})
@@ -441,7 +440,7 @@ void ContactInterface::apply(const ContactInput& in, ContactForces& out) {
   book_damping(in);  // this step's damping forces (points and edges), the first half of their work
 }
 
-void ContactInterface::mark_secondary_nodes_in_contact(std::span<std::uint8_t> touched) const {
+void InterfaceImpl::mark_secondary_nodes_in_contact(std::span<std::uint8_t> touched) const {
   for (const Pass& pass : passes_) {
     if (pass.own != 0) continue;  // surface 2's points (symmetric contact) are main nodes
     const Side& side = sides_[0];

@@ -7,10 +7,10 @@
 #include <string>
 
 #include "abut/contact/integration.hpp"
-#include "abut/contact/interface.hpp"
 #include "abut/contact/quad.hpp"
 #include "abut/core/memory.hpp"
 #include "abut/core/parallel.hpp"
+#include "interface_impl.hpp"
 
 namespace abut {
 namespace {
@@ -54,10 +54,10 @@ void complete(ContactSurface& s) {
 
 }  // namespace
 
-ContactInterface::ContactInterface(ContactSettings settings, ContactSurface surface1,
-                                   ContactSurface surface2, std::span<const double> node_mass,
-                                   const ContactInput& initial,
-                                   std::span<const std::int32_t> secondary_nodes)
+InterfaceImpl::InterfaceImpl(ContactSettings settings, ContactSurface surface1,
+                             ContactSurface surface2, std::span<const double> node_mass,
+                             const ContactInput& initial,
+                             std::span<const std::int32_t> secondary_nodes)
     : settings_(std::move(settings)), mass_(node_mass.begin(), node_mass.end()) {
   complete(surface1);
   complete(surface2);
@@ -102,7 +102,7 @@ ContactInterface::ContactInterface(ContactSettings settings, ContactSurface surf
   spring_factor_ = std::max(settings_.normal_in_time.at(initial.time), 1.0);
 }
 
-void ContactInterface::build_parts() {
+void InterfaceImpl::build_parts() {
   for (const Side& side : sides_)
     part_ids_.insert(part_ids_.end(), side.surface.part.begin(), side.surface.part.end());
   std::sort(part_ids_.begin(), part_ids_.end());
@@ -133,8 +133,8 @@ void ContactInterface::build_parts() {
   }
 }
 
-void ContactInterface::build_sides(const ContactInput& in,
-                                   std::span<const std::int32_t> secondary_nodes) {
+void InterfaceImpl::build_sides(const ContactInput& in,
+                                std::span<const std::int32_t> secondary_nodes) {
   const ContactSettings& s = settings_;
   margin_ = kInfinity;
   smooth_reach_ = smooth_edge_reach(s.edge_angle);
@@ -224,7 +224,7 @@ void ContactInterface::build_sides(const ContactInput& in,
 // its cell, mortar.hpp) and its candidates.
 constexpr double kBytesPerPoint = 1000.0;
 
-void ContactInterface::require_point_memory(std::size_t planned) const {
+void InterfaceImpl::require_point_memory(std::size_t planned) const {
   std::size_t made = 0;
   for (const Side& side : sides_) made += side.point_facet.size();
   const double points = static_cast<double>(made + planned);
@@ -237,9 +237,9 @@ void ContactInterface::require_point_memory(std::size_t planned) const {
                     " are available: coarsen the surfaces, lower the accuracy level or use N2S");
 }
 
-void ContactInterface::build_points(Side& side, const ContactInput& in, double other_size,
-                                    std::span<const std::int32_t> secondary_nodes,
-                                    const std::vector<std::uint8_t>& free_edges) {
+void InterfaceImpl::build_points(Side& side, const ContactInput& in, double other_size,
+                                 std::span<const std::int32_t> secondary_nodes,
+                                 const std::vector<std::uint8_t>& free_edges) {
   const ContactSettings& s = settings_;
   const ContactSurface& surface = side.surface;
   std::vector<double> facet_area(surface.size(), 0.0);
@@ -368,8 +368,8 @@ void ContactInterface::build_points(Side& side, const ContactInput& in, double o
   }
 }
 
-void ContactInterface::init_point(Side& side, std::size_t p,
-                                  const std::vector<std::uint8_t>& on_free_edge, double share) {
+void InterfaceImpl::init_point(Side& side, std::size_t p,
+                               const std::vector<std::uint8_t>& on_free_edge, double share) {
   const ContactSettings& s = settings_;
   const ContactSurface& surface = side.surface;
   const std::size_t n = side.point_facet.size();
@@ -413,7 +413,7 @@ void ContactInterface::init_point(Side& side, std::size_t p,
   side.max_point_depth = std::max(side.max_point_depth, side.point_depth[p]);
 }
 
-void ContactInterface::build_passes() {
+void InterfaceImpl::build_passes() {
   if (sides_.size() == 1) {
     passes_.resize(1);
     passes_[0].weight = 0.5;  // both sides of a self-contact pair are in the one pass
@@ -434,7 +434,7 @@ void ContactInterface::build_passes() {
 }
 
 // Per-point history and result slots for n points; points added later (free nodes) start empty.
-void ContactInterface::size_pass(Pass& pass, std::size_t n) const {
+void InterfaceImpl::size_pass(Pass& pass, std::size_t n) const {
   for (auto* v : {&pass.state, &pass.adhered, &pass.hit}) v->resize(n, 0);
   pass.hit_facet.resize(n, -1);
   const bool ties = settings_.freeze || settings_.stick_stress.has_value();
@@ -471,7 +471,7 @@ void ContactInterface::size_pass(Pass& pass, std::size_t n) const {
 // Initial penetrations (seed 000 delta0_offset / delta0_max, Radioss Inacti), clearance
 // (OptiStruct CLEARANCE: the gap found at t = 0 is replaced by the clearance) and FREEZE ties,
 // from each point's partner in the initial configuration.
-void ContactInterface::initial_state(const ContactInput& in) {
+void InterfaceImpl::initial_state(const ContactInput& in) {
   rebuild_broad_phase(in);
   const ContactSettings& s = settings_;
   initial_stable_step_ = kInfinity;

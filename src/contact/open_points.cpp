@@ -4,22 +4,22 @@
 #include <limits>
 #include <optional>
 
-#include "abut/contact/interface.hpp"
 #include "abut/contact/penetration_zone.hpp"
 #include "abut/core/parallel.hpp"
+#include "interface_impl.hpp"
 
 namespace abut {
 
 // Contacts where an open point still acts or changes state: heat across the gap, adhesion,
 // bilateral and reversed contact, sticking contact (a tie forms at a touching distance) and
 // clearance (a shifted gap).
-bool ContactInterface::skips_open_points() const {
+bool InterfaceImpl::skips_open_points() const {
   const ContactSettings& s = settings_;
   return s.skip_open_points && !s.thermal.any() && !s.adhesion &&
          s.sense == ContactSense::Positive && !s.stick_stress && !s.clearance;
 }
 
-void ContactInterface::update_near_facets() {
+void InterfaceImpl::update_near_facets() {
   for (Side& side : sides_) {
     std::vector<std::uint8_t> near(side.surface.size(), 0);
     for (const Pass& pass : passes_)
@@ -32,7 +32,7 @@ void ContactInterface::update_near_facets() {
   }
 }
 
-void ContactInterface::update_bands(const ContactInput& in) {
+void InterfaceImpl::update_bands(const ContactInput& in) {
   for (Side& side : sides_) {
     const auto n = static_cast<std::int64_t>(side.near_facets.size());
 #pragma omp parallel for schedule(static) if (n >= kParallelMinimum / 4)
@@ -48,7 +48,7 @@ void ContactInterface::update_bands(const ContactInput& in) {
 // candidate facets all leave it outside their penetration zone (penetration_zone.hpp), ends the
 // full evaluation with no partner that pushes and nothing to reset: the full path would record
 // nothing and leave its history as it is.
-bool ContactInterface::surely_open(const Pass& pass, std::size_t p, const ContactInput& in) const {
+bool InterfaceImpl::surely_open(const Pass& pass, std::size_t p, const ContactInput& in) const {
   if (!skips_open_points()) return false;
   if (pass.remembers(p) || pass.shift_at(p) != 0.0) return false;
   const Side& own = sides_[pass.own];
@@ -79,8 +79,8 @@ bool ContactInterface::surely_open(const Pass& pass, std::size_t p, const Contac
 // last step); the broad phase's margin covers the facets that are not candidates. The step allowed
 // is the larger of that and the spring's bound. A point whose spring's bound is at least `least`
 // cannot lower the least step: it is not looked at (the least step is the same either way).
-double ContactInterface::approach_limit(const Pass& pass, std::size_t p, const ContactInput& in,
-                                        double speed, double least) const {
+double InterfaceImpl::approach_limit(const Pass& pass, std::size_t p, const ContactInput& in,
+                                     double speed, double least) const {
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   constexpr double kSqrt3 = 1.7320508075688772;
   if (pass.hit[p] || pass.state[p] == kReleased) return kInfinity;  // scatter takes a hit's bound
@@ -106,7 +106,7 @@ double ContactInterface::approach_limit(const Pass& pass, std::size_t p, const C
   return std::max(spring, clearance / (2.0 * (1.0 + kSqrt3) * speed));
 }
 
-bool ContactInterface::bounds_kinks() const {
+bool InterfaceImpl::bounds_kinks() const {
   return settings_.sense != ContactSense::Bilateral && !settings_.adhesion;
 }
 
@@ -116,8 +116,8 @@ bool ContactInterface::bounds_kinks() const {
 // speed w towards the facet (the facet moving with its corners' mean velocity). The step is at
 // most the point's spring bound: approach_limit (or, at rest and with edges, the bound for every
 // near point) holds a longer one off before the point may touch.
-double ContactInterface::onset_kink(const Pass& pass, std::size_t p, const ContactInput& in,
-                                    double speed) const {
+double InterfaceImpl::onset_kink(const Pass& pass, std::size_t p, const ContactInput& in,
+                                 double speed) const {
   constexpr double kSqrt3 = 1.7320508075688772;
   if (pass.state[p] == kReleased || pass.state[p] == kTied || in.vx.empty()) return 0.0;
   const auto first = pass.candidates.offsets[p], last = pass.candidates.offsets[p + 1];

@@ -5,15 +5,15 @@
 #include <cmath>
 #include <limits>
 
-#include "abut/contact/interface.hpp"
 #include "abut/contact/quad.hpp"
+#include "interface_impl.hpp"
 
 namespace abut {
 namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 }  // namespace
 
-void ContactInterface::scatter(const ContactInput& in, ContactForces& out, bool near_bound) {
+void InterfaceImpl::scatter(const ContactInput& in, ContactForces& out, bool near_bound) {
   const WearRateFunction* wear_rate[2] = {&settings_.wear_rate1, &settings_.wear_rate2};
   if (self_contact() && !settings_.wear_rate1) wear_rate[0] = &settings_.wear_rate2;
   // ContactStats::approach_step: the points that touch, and those near a facet (update_near_bound)

@@ -177,7 +177,7 @@ StaticContact::StaticContact(StaticContactSettings settings, ContactSurface seco
 }
 
 // The initial treatment of the settings, from each point's partner in the reference
-// configuration (as ContactInterface::initial_state does for the explicit solver).
+// configuration (as InterfaceImpl::initial_state does for explicit steps).
 void StaticContact::initial_gaps(const ContactInput& initial) {
   if (!settings_.small_sliding) evaluate(initial);  // small sliding: evaluated just above
   const std::size_t np = points_.size();

@@ -2,7 +2,7 @@
 #include <cmath>
 #include <string>
 
-#include "abut/contact/interface.hpp"
+#include "interface_impl.hpp"
 
 namespace abut {
 
@@ -37,8 +37,8 @@ void check_friction(const TangentialLaw& law, const FrictionFilter& filter, cons
 
 }  // namespace
 
-void ContactInterface::validate(const ContactSurface& s1, const ContactSurface& s2,
-                                std::size_t coordinates) const {
+void InterfaceImpl::validate(const ContactSurface& s1, const ContactSurface& s2,
+                             std::size_t coordinates) const {
   const ContactSettings& s = settings_;
   auto fail = [](const char* setting, const std::string& message) {
     throw ContactSetupError(setting, message);
