@@ -13,11 +13,14 @@
 namespace abut_cli {
 
 std::string command_error(int argc, char** argv) {
-  if (argc < 2) return "a command is required; use run, check or info (abut --help)";
+  constexpr std::string_view commands =
+      "use run, check or info on a deck, or plot on an output directory";
+  if (argc < 2) return fmt::format("a command is required; {} (abut --help)", commands);
   const std::string_view command = argv[1];
-  if (command.starts_with('-') || command == "run" || command == "check" || command == "info")
+  if (command.starts_with('-') || command == "run" || command == "check" || command == "info" ||
+      command == "plot")
     return {};
-  return fmt::format("unknown command '{}'; use run, check or info", command);
+  return fmt::format("unknown command '{}'; {}", command, commands);
 }
 
 std::string deck_error(const std::string& deck) {

@@ -9,7 +9,7 @@ namespace abut_cli {
 // The largest --threads accepted; more is a typing error, not a machine.
 constexpr int kMaxThreads = 1024;
 
-// The command word: run, check or info (options such as --help are left to CLI11).
+// The command word: run, check, info or plot (options such as --help are left to CLI11).
 std::string command_error(int argc, char** argv);
 
 // The deck exists, is a file and can be read.

@@ -1,7 +1,9 @@
-// abut: the command-line program. Thin: reads the deck, runs or describes the model.
+// abut: the command-line program. Thin: reads the deck, runs or describes the model; plots a
+// run's output directory with the Python package (abut plot, abut run --plot).
 // Exit codes (README, "Using it"):
 //   0        success
-//   1        output or system error (writing the results failed, disk full, out of memory)
+//   1        output or system error (writing the results failed, disk full, out of memory;
+//            plotting without Python, numpy or matplotlib)
 //   2        user error: command line, deck missing or unreadable, an error in the deck (file and
 //            line named), an output directory that cannot be written or is in use
 //   3        the run went unstable (explicit) or a step did not converge (static)
@@ -21,6 +23,7 @@
 #include "abut/solver/simulation.hpp"
 #include "abut/solver/static_solver.hpp"
 #include "command_line.hpp"
+#include "plot_command.hpp"
 #include "wait_policy.hpp"
 
 namespace {
@@ -137,12 +140,21 @@ int main(int argc, char** argv) {
       "--restart-interval", restart_interval_text,
       "Also write restart.abr every this much model time and at the end (it is always "
       "written when the run is interrupted)");
+  bool plot_after_run = false;
+  run->add_flag("--plot", plot_after_run,
+                "After a successful run, write the figures of its output directory (abut plot)");
   CLI::App* check =
       app.add_subcommand("check", "Parse and validate a deck; every error with file:line");
   check->add_option("deck", deck, "Input deck")->required();
   CLI::App* info =
       app.add_subcommand("info", "Model summary: parts, masses, contacts, stable time step");
   info->add_option("deck", deck, "Input deck")->required();
+  std::string plot_dir, plot_to;
+  CLI::App* plot = app.add_subcommand(
+      "plot",
+      "PNG figures of a run's energies, contact forces and velocities (Python, matplotlib)");
+  plot->add_option("output_dir", plot_dir, "Output directory of a run")->required();
+  plot->add_option("--to", plot_to, "Directory for the figures (default: <output dir>/plots)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -151,6 +163,7 @@ int main(int argc, char** argv) {
     std::cerr << "error: " << e.what() << " (abut --help for the usage)\n";
     return 2;
   }
+  if (*plot) return abut_cli::plot_output(plot_dir, plot_to);
   int threads = 0;
   std::string error = abut_cli::deck_error(deck);
   // Given but empty (--threads '') is a mistake too, not the default.
@@ -213,7 +226,8 @@ int main(int argc, char** argv) {
                 << (model.static_steps.empty() ? " and restart.abr are" : " are") << " written\n";
       return 128 + signal;
     }
-    return report.stable ? 0 : 3;
+    if (!report.stable) return 3;
+    return plot_after_run ? abut_cli::plot_output(options.output_dir.string(), "") : 0;
   } catch (const abut::InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;

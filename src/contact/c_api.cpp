@@ -6,13 +6,13 @@
 #include <exception>
 #include <functional>
 #include <limits>
-#include <map>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "abut/abut_contact.h"
 #include "abut/contact/interface.hpp"
+#include "abut/contact/settings_by_name.hpp"
 
 struct abut_contact_settings {
   abut::ContactSettings settings;
@@ -50,52 +50,6 @@ int guarded(const std::function<void()>& call) {
   }
 }
 
-bool flag(double value) { return value != 0.0; }
-
-abut::Coulomb& coulomb(abut::ContactSettings& s) {
-  if (!std::holds_alternative<abut::Coulomb>(s.tangential_law)) s.tangential_law = abut::Coulomb{};
-  return std::get<abut::Coulomb>(s.tangential_law);
-}
-
-// The settings abut_contact_settings_set knows, each applying a value (checked by the
-// interface's own validation when it is made).
-using Setter = std::function<void(abut::ContactSettings&, double)>;
-const std::map<std::string, Setter>& setters() {
-  using abut::ContactSettings;
-  static const std::map<std::string, Setter> table = {
-      {"node_to_surface",
-       [](ContactSettings& s, double v) {
-         s.discretisation =
-             flag(v) ? abut::Discretisation::NodeToSurface : abut::Discretisation::SurfaceToSurface;
-       }},
-      {"one_way", [](ContactSettings& s, double v) { s.one_way = flag(v); }},
-      {"accuracy_level",
-       [](ContactSettings& s, double v) { s.accuracy_level = static_cast<int>(v); }},
-      {"friction",
-       [](ContactSettings& s, double v) {
-         if (v == 0.0) {
-           s.tangential_law = abut::Frictionless{};
-           return;
-         }
-         coulomb(s).mu_static = v;
-         coulomb(s).mu_dynamic = v;
-       }},
-      {"friction_static", [](ContactSettings& s, double v) { coulomb(s).mu_static = v; }},
-      {"friction_sliding", [](ContactSettings& s, double v) { coulomb(s).mu_dynamic = v; }},
-      {"damping", [](ContactSettings& s, double v) { s.damping = v; }},
-      {"detection_depth", [](ContactSettings& s, double v) { s.detection_depth = v; }},
-      {"search_margin", [](ContactSettings& s, double v) { s.search_margin = v; }},
-      {"begin_time", [](ContactSettings& s, double v) { s.begin_time = v; }},
-      {"end_time", [](ContactSettings& s, double v) { s.end_time = v; }},
-      {"initial_offset", [](ContactSettings& s, double v) { s.initial_offset = v; }},
-      {"initial_max", [](ContactSettings& s, double v) { s.initial_max = v; }},
-      {"edge_angle", [](ContactSettings& s, double v) { s.edge_angle = v; }},
-      {"tangential_penalty", [](ContactSettings& s, double v) { s.tangential_penalty = v; }},
-      {"stick_stress", [](ContactSettings& s, double v) { s.stick_stress = v; }},
-  };
-  return table;
-}
-
 // Facets of `count` x 4 node indices, checked as they arrive (the interface checks them against
 // the node count).
 int add_facets(abut_surface* surface, std::size_t count, const std::int32_t* nodes,
@@ -128,17 +82,7 @@ abut_contact_settings* abut_contact_settings_create(void) { return new abut_cont
 
 int abut_contact_settings_set(abut_contact_settings* settings, const char* name, double value) {
   if (!settings || !name) return fail("", "abut_contact_settings_set: no settings or name (NULL)");
-  const auto it = setters().find(name);
-  if (it == setters().end()) {
-    std::string known;
-    for (const auto& [key, setter] : setters()) known += (known.empty() ? "" : ", ") + key;
-    return fail(name, std::string("abut_contact_settings_set: unknown setting '") + name +
-                          "' (known: " + known + ")");
-  }
-  if (!std::isfinite(value))
-    return fail(name, std::string("abut_contact_settings_set: ") + name + " is not finite");
-  it->second(settings->settings, value);
-  return ABUT_OK;
+  return guarded([&] { abut::set_by_name(settings->settings, name, value); });
 }
 
 void abut_contact_settings_destroy(abut_contact_settings* settings) { delete settings; }

@@ -54,6 +54,11 @@ void remove_previous_run(const fs::path& dir) {
     fs::remove(dir / name, ignored);
     fs::remove(dir / (std::string(name) + ".tmp"), ignored);
   }
+  // The figures of `abut plot` (python/abut/plot.py writes these three) are of the previous run.
+  const fs::path plots = dir / "plots";
+  for (const char* figure : {"energy.png", "contact.png", "velocities.png"})
+    fs::remove(plots / figure, ignored);
+  fs::remove(plots, ignored);  // only if now empty
   const fs::path states = dir / "states";
   if (!fs::is_directory(states, ignored)) return;
   for (const fs::directory_entry& entry : fs::directory_iterator(states, ignored))

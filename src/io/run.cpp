@@ -220,6 +220,13 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
     restart_time = sim.time();
   };
   ProgressReporter progress = ProgressReporter::to_stderr(model.time.start_time, t_end);
+  // RunOptions::on_progress at every hundredth of the run.
+  double next_report = sim.time();
+  const auto report_progress = [&](bool last) {
+    if (!options.on_progress || (!last && sim.time() < next_report)) return;
+    options.on_progress(sim.time(), t_end, sim.cycle());
+    next_report = sim.time() + 0.01 * (t_end - model.time.start_time);
+  };
 
   RunReport report;
   const auto wall_start = std::chrono::steady_clock::now();
@@ -245,6 +252,7 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
       if (restart_interval > 0.0 && restart_schedule.due(sim.time())) save_restart();
       sim.advance();
       if (options.progress) progress.update(sim.time(), sim.cycle());
+      report_progress(false);
     }
     log_messages();
     histories.write(sim);  // the final time, unless it was just written
@@ -255,6 +263,7 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
     states.write(sim, true);
   }
   if (options.progress) progress.finish(sim.time(), sim.cycle());
+  report_progress(true);
   report.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   report.end_time = sim.time();

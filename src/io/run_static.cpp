@@ -191,6 +191,9 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
   RunReport report;
   const auto start = std::chrono::steady_clock::now();
   double last_time = 0.0;
+  double end_time = 0.0;  // the steps' periods follow one another
+  for (const StaticStep& step : model.static_steps) end_time += step.period;
+  std::size_t increments_done = 0;
   try {
     solver.run([&](const StaticIncrement& inc) {
       increments.write_row(
@@ -210,6 +213,8 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
             "abut: step {} increment {} (t = {:.6g}): {} iterations{}\n", inc.step + 1,
             inc.increment, inc.total_time, inc.iterations,
             inc.attempts > 1 ? fmt::format(", {} cut-backs", inc.attempts - 1) : std::string());
+      if (options.on_progress)
+        options.on_progress(inc.total_time, end_time, static_cast<long long>(++increments_done));
       if (options.stop_requested && options.stop_requested()) throw StopRequested{};
     });
   } catch (const StopRequested&) {

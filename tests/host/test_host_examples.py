@@ -7,7 +7,8 @@ run. References chosen before the runs (statics and the examples' own model, box
 - the energy balance (host springs, motion, damping work, the contacts' stored and lost energy
   against the work of gravity) holds to 1% of the work of gravity at every output;
 - the C and the C++ program (one through abut_contact.h, one through interface.hpp) print the
-  same numbers: the C interface adds nothing to the library's arithmetic."""
+  same numbers: the C interface adds nothing to the library's arithmetic;
+- the Fortran program (through iso_c_binding) rests its plate on the contact with its weight."""
 import os
 import re
 import subprocess
@@ -59,6 +60,9 @@ with tempfile.TemporaryDirectory() as tmp:
     run(configure)
     run(["cmake", "--build", host])
     outputs = {name: run([host / name]) for name in ("falling_boxes_c", "falling_boxes_cpp")}
+    # Fortran through iso_c_binding (gfortran is in deps/debian-packages.txt): a plate of 4 m
+    # comes to rest on a fixed square, carrying 4 m g (statics, to 1e-6 as above).
+    fortran = run([host / "falling_plate_f90"])
 
 for name, text in outputs.items():
     rows = [line.split() for line in text.splitlines() if re.match(r"\s*\d+\.\d+\s", line)]
@@ -72,6 +76,9 @@ for name, text in outputs.items():
         ab, ground = float(rest.group(1)), float(rest.group(2))
         check(abs(ab - 1) < 1e-6, f"{name}: box A's contact carries its weight ({ab:.9f})")
         check(abs(ground - 1) < 1e-6, f"{name}: the plane carries both boxes ({ground:.9f})")
+rest = re.search(r"N / \(4 m g\) = +([\d.]+)", fortran)
+check(rest is not None and abs(float(rest.group(1)) - 1) < 1e-6,
+      f"falling_plate_f90: the plate's contact carries its weight ({fortran.strip()})")
 check(outputs["falling_boxes_c"] == outputs["falling_boxes_cpp"],
       "the C and the C++ host print the same numbers")
 

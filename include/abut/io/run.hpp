@@ -20,6 +20,11 @@ struct RunOptions {
   // Polled after every cycle (explicit) or increment (static): true stops the run there, with
   // a final state and summary.json written (RunReport::interrupted). Empty: never.
   std::function<bool()> stop_requested = {};
+  // Called as the run advances, for a host that shows progress its own way (Python's abut.run),
+  // whether or not `progress` is on: explicit runs after each cycle that completes another
+  // hundredth of the run and once at its end, static runs after each converged increment; with
+  // the model time, the end time and the cycles (increments) so far. Empty: never.
+  std::function<void(double time, double end_time, long long cycles)> on_progress = {};
   // Restart files (issue 13; explicit runs): a run writes `restart.abr` in its output directory
   // when it is interrupted, and with restart_interval > 0 also every restart_interval of model
   // time and at its end. A run given restart_from continues from that file, bitwise identically,
@@ -29,9 +34,9 @@ struct RunOptions {
 };
 
 struct RunReport {
-  bool stable = true;         // false: the run went unstable and stopped early
-  bool interrupted = false;   // stopped by RunOptions::stop_requested before its end
-  std::string message;        // the instability message when !stable
+  bool stable = true;        // false: the run went unstable and stopped early
+  bool interrupted = false;  // stopped by RunOptions::stop_requested before its end
+  std::string message;       // the instability message when !stable
   double end_time = 0.0;
   long long cycles = 0;
   double wall_seconds = 0.0;
@@ -49,8 +54,8 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
 
 // The static steps of a model (src/io/run_static.cpp): a ParaView state per converged increment,
 // increments.csv, energy.csv, contact.csv, results.dat (the *NODE/*EL/*CONTACT PRINT requests in
-// CalculiX's .dat layout) and summary.json. report.cycles counts the increments; a step that does not converge is
-// reported (stable = false) after the last converged state was written.
+// CalculiX's .dat layout) and summary.json. report.cycles counts the increments; a step that does
+// not converge is reported (stable = false) after the last converged state was written.
 RunReport run_static_analysis(const Model& model, const RunOptions& options, std::ostream& log);
 
 }  // namespace abut
