@@ -135,35 +135,30 @@ def _energy_figure(new_figure, energy, labels):
     return figure
 
 
-def _contact_figure(new_figure, contact, labels):
-    figure = new_figure(figsize=(9, 7))
-    axes = figure.subplots(2, 1, sharex=True)
-    for number, rows in contact.by("contact").items():
-        for ax, column in zip(axes, ("normal_force", "tangential_force")):
-            ax.plot(rows.time, rows[column], label=labels.entity("contact", number))
-    for ax, column in zip(axes, ("normal_force", "tangential_force")):
+def _per_entity_figure(new_figure, history, kind, columns, title, labels, height):
+    """One panel per column, one line per entity (contact or part) of a long-format history."""
+    figure = new_figure(figsize=(9, height))
+    axes = figure.subplots(len(columns), 1, sharex=True)
+    for number, rows in history.by(kind).items():
+        for ax, column in zip(axes, columns):
+            ax.plot(rows.time, rows[column], label=labels.entity(kind, number))
+    for ax, column in zip(axes, columns):
         ax.set_ylabel(labels.axis(column))
         ax.grid(True, alpha=0.3)
         _legend(ax)
     axes[-1].set_xlabel(labels.axis("time"))
-    axes[0].set_title(labels.title("contact forces (contact.csv)"))
+    axes[0].set_title(labels.title(title))
     return figure
+
+
+def _contact_figure(new_figure, contact, labels):
+    return _per_entity_figure(new_figure, contact, "contact", ("normal_force", "tangential_force"),
+                              "contact forces (contact.csv)", labels, 7)
 
 
 def _velocity_figure(new_figure, parts, labels):
-    components = ("vx", "vy", "vz")
-    figure = new_figure(figsize=(9, 8))
-    axes = figure.subplots(len(components), 1, sharex=True)
-    for number, rows in parts.by("part").items():
-        for ax, column in zip(axes, components):
-            ax.plot(rows.time, rows[column], label=labels.entity("part", number))
-    for ax, column in zip(axes, components):
-        ax.set_ylabel(labels.axis(column))
-        ax.grid(True, alpha=0.3)
-        _legend(ax)
-    axes[-1].set_xlabel(labels.axis("time"))
-    axes[0].set_title(labels.title("velocity of each part's centre of mass (parts.csv)"))
-    return figure
+    return _per_entity_figure(new_figure, parts, "part", ("vx", "vy", "vz"),
+                              "velocity of each part's centre of mass (parts.csv)", labels, 8)
 
 
 # (figure, the history it draws, how), in the order plot() writes them.

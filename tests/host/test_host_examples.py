@@ -63,6 +63,18 @@ with tempfile.TemporaryDirectory() as tmp:
     # Fortran through iso_c_binding (gfortran is in deps/debian-packages.txt): a plate of 4 m
     # comes to rest on a fixed square, carrying 4 m g (statics, to 1e-6 as above).
     fortran = run([host / "falling_plate_f90"])
+    # The installed program and Python package (not in the sanitizer build, which has no Python
+    # package): a run plotted by bin/abut, and the package imported from the prefix alone.
+    package = prefix / "lib/python3/dist-packages"
+    if (package / "abut/__init__.py").exists():
+        deck = SOURCE / "examples/tutorials/t1_bars_collide.k"
+        out = Path(tmp) / "t1_out"
+        run([prefix / "bin/abut", "run", deck, "-o", out, "-q", "--plot"])
+        check((out / "plots/energy.png").exists(), "the installed abut plots with the installed package")
+        imported = run(["/usr/bin/python3", "-c", "import abut; print(abut.__file__)"],
+                       env={**os.environ, "PYTHONPATH": str(package)}, cwd=tmp)
+        check(imported.strip() == str(package / "abut/__init__.py"),
+              f"the installed Python package imports from the prefix ({imported.strip()})")
 
 for name, text in outputs.items():
     rows = [line.split() for line in text.splitlines() if re.match(r"\s*\d+\.\d+\s", line)]
