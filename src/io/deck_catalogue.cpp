@@ -47,6 +47,7 @@ const std::map<std::string, KeywordReader, std::less<>>& supported() {
       {"*PART_SOLID", read_part_solid},
       {"*SET_NODE", read_set_node},
       {"*SET_PART", read_set_part},
+      {"*SET_FACE", read_set_face},
       {"*STATIC", read_static},
       {"*INITIAL_VELOCITY", read_initial_velocity},
       {"*BC_MOTION", read_bc_motion},

@@ -299,6 +299,9 @@ DeckResult DeckReader::finish() {
   for (std::string& note : change_to_tetrahedra(mesh, tetrahedra_changes, fits))
     notes.push_back(std::move(note));
 
+  // *SET_FACE rows become element faces of the final mesh.
+  resolve_face_sets();
+
   // OptiStruct ADJUST: secondary nodes onto the main surface, before anything uses the geometry.
   for (std::string& note : adjust_contact_nodes(model)) notes.push_back(std::move(note));
 
@@ -339,12 +342,12 @@ DeckResult DeckReader::finish() {
           const std::string source =
               fcn[uk].valid() ? "function " + std::to_string(*v.velocity[uk].function_id)
               : norm(v.angular_velocity) == 0.0 ? std::string("the value")
-                                             : std::string("the value plus omega x (x - x0)");
+                                                : std::string("the value plus omega x (x - x0)");
           throw InputError(v.velocity_where[uk],
                            source + " gives an initial velocity of " + format_number(velocity[k]) +
                                " at node " +
-                               std::to_string(mesh.nodes.id[static_cast<std::size_t>(i)]) +
-                               " (" + format_number(p.x) + ", " + format_number(p.y) + ", " +
+                               std::to_string(mesh.nodes.id[static_cast<std::size_t>(i)]) + " (" +
+                               format_number(p.x) + ", " + format_number(p.y) + ", " +
                                format_number(p.z) + "): expected a finite speed up to 1e100");
         }
       }

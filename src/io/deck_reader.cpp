@@ -50,8 +50,8 @@ std::string entity_word(EntityType t) {
       return "ALL";
     case EntityType::GeometryRegion:
       return "G";
-    case EntityType::FaceSet:  // element faces of an .inp *SURFACE: no word in the deck
-      return "SURFACE";
+    case EntityType::FaceSet:  // *SET_FACE (an .inp *SURFACE, TYPE=ELEMENT too)
+      return "FS";
     case EntityType::Tool:
       return "TOOL";
   }
@@ -104,8 +104,8 @@ void DeckReader::read_lines(const std::vector<std::string>& lines, const std::st
     if (lines[i].size() > kMaxLineLength)
       throw InputError(SourceLocation{name, number, "", ""},
                        "line of " + std::to_string(lines[i].size()) +
-                           " characters; deck lines are at most " +
-                           std::to_string(kMaxLineLength) + " characters long");
+                           " characters; deck lines are at most " + std::to_string(kMaxLineLength) +
+                           " characters long");
     const std::string text = trim(lines[i]);
     if (text.empty() || text.front() == '#' || text.front() == '$') continue;
     if (depth == 0) end_line = number;
@@ -299,9 +299,8 @@ void DeckReader::require_unrotated(const SourceLocation& where, const std::strin
 void DeckReader::generate(const std::function<void()>& generator, const SourceLocation& where,
                           const MeshSize& size) {
   Mesh& mesh = model.mesh;
-  const MeshSize total{
-      static_cast<double>(mesh.hex_count() + mesh.shell_count()) + size.elements,
-      static_cast<double>(mesh.nodes.size()) + size.nodes};
+  const MeshSize total{static_cast<double>(mesh.hex_count() + mesh.shell_count()) + size.elements,
+                       static_cast<double>(mesh.nodes.size()) + size.nodes};
   require_memory(total, available_memory(), where);
   const std::size_t first_node = mesh.nodes.size();
   const std::size_t first_hex = mesh.hex_count();

@@ -126,6 +126,16 @@ struct PendingNodeSet {
   std::vector<IdReference> nodes;
 };
 
+// *SET_FACE: rows of corner-node ids, matched to element faces once the mesh is final.
+struct PendingFaceSet {
+  std::size_t index = 0;  // into model.face_sets
+  struct Face {
+    std::array<std::int64_t, 4> nodes{};  // a triangle: the fourth repeats the third
+    SourceLocation where;                 // the row
+  };
+  std::vector<Face> faces;
+};
+
 struct PendingOrder {
   EntityRef entity;
   int order = 1;
@@ -252,6 +262,9 @@ class DeckReader {
   // deck_finalize_merge.cpp: *MERGE_DUPLICATED_NODES, once element nodes, node sets and shell
   // nodes are resolved and before anything else stores node indices; remaps the node sets.
   void merge_duplicated_nodes();
+  // deck_finalize_faces.cpp: the faces of every *SET_FACE, matched by their corner nodes to the
+  // solid faces and shells of the final mesh (after merging, refinement and tetrahedra).
+  void resolve_face_sets();
   // deck_finalize_elements.cpp: every hex has a positive initial volume, else an InputError at
   // its *ELEMENT_SOLID row or generator keyword naming the element and node ids. After the merge
   // (which may flatten a hex) and before refinement (which needs sound hexes).
@@ -289,6 +302,7 @@ class DeckReader {
   std::set<std::int64_t> parts_with_thickness;  // *PART rows that give h
   std::vector<MeshSource> mesh_sources;
   std::vector<PendingNodeSet> node_sets;
+  std::vector<PendingFaceSet> face_sets;
   std::vector<std::pair<std::int64_t, SourceLocation>> part_set_members;  // (part id, where)
   std::vector<std::pair<std::int64_t, SourceLocation>> geometry_parts;    // *GEOMETRY_PART pids
   std::vector<PendingOrder> orders;
@@ -364,6 +378,7 @@ void read_part_solid(DeckReader&, Block&);  // keyword_static.cpp
 void read_static(DeckReader&, Block&);      // keyword_static.cpp
 void read_set_node(DeckReader&, Block&);
 void read_set_part(DeckReader&, Block&);
+void read_set_face(DeckReader&, Block&);
 void read_initial_velocity(DeckReader&, Block&);
 void read_bc_motion(DeckReader&, Block&);
 void read_load_gravity(DeckReader&, Block&);
@@ -394,7 +409,7 @@ void read_contact_scale_penalty(DeckReader&, Block&);
 void read_contact_initial(DeckReader&, Block&);
 void read_contact_stabilization(DeckReader&, Block&);  // keyword_contact_stabilization.cpp
 void read_contact_smoothing(DeckReader&, Block&);      // keyword_contact_smoothing.cpp
-void read_sensor(DeckReader&, Block&);  // keyword_sensor.cpp
+void read_sensor(DeckReader&, Block&);                 // keyword_sensor.cpp
 void read_contact_sensor(DeckReader&, Block&);
 void read_contact_release_bc(DeckReader&, Block&);
 // keyword_sensor.cpp: the contacts and sensors that *SENSOR and *CONTACT_SENSOR name exist.

@@ -30,11 +30,13 @@ void read_contact(DeckReader& d, Block& b) {
     r2.fail(0,
             "an analytic tool (TOOL) is a surface 2 only: give the body as surface 1 and the "
             "tool as entype_2, enid_2");
-  c.surface1 = d.entity(
-      r2, 0, 1, {EntityType::NodeSet, EntityType::Part, EntityType::PartSet, EntityType::All});
+  c.surface1 = d.entity(r2, 0, 1,
+                        {EntityType::NodeSet, EntityType::Part, EntityType::PartSet,
+                         EntityType::All, EntityType::FaceSet});
   // An analytic rigid tool (*CONTACT_TOOL, entype TOOL) is a surface 2 only.
   c.surface2 = d.entity(r2, 2, 3,
-                        {EntityType::Part, EntityType::PartSet, EntityType::All, EntityType::Tool});
+                        {EntityType::Part, EntityType::PartSet, EntityType::All,
+                         EntityType::FaceSet, EntityType::Tool});
   const auto mu = r2.number_or_function(4, 0.0);
   if (mu.function_id) {
     bind(*d.function_id(r2, 4, mu), r2.where(4), &ContactSpec::friction_function);

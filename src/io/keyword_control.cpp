@@ -93,6 +93,7 @@ void read_time(DeckReader& d, Block& b) {
       r.fail(i, "a time-step limit given by fcn is not supported yet by abut");
   }
   t.min_step = r.number_or(2, t.min_step);
+  t.min_step_where = r.where(2);
   r.require(t.min_step >= 0.0, 2, "expected a minimum time step >= 0");
   t.max_step = r.number_or(3, t.max_step);
   r.require(t.max_step > 0.0, 3, "expected a maximum time step > 0");

@@ -157,9 +157,9 @@ void read_load_pressure(DeckReader& d, Block& b) {
   while (!b.done()) {
     const Row r = b.row({"entype", "enid", "cid", "sf"});
     PressureLoad p;
-    p.entity = d.entity(
-        r, 0, 1,
-        {EntityType::Part, EntityType::PartSet, EntityType::All, EntityType::GeometryRegion});
+    p.entity = d.entity(r, 0, 1,
+                        {EntityType::Part, EntityType::PartSet, EntityType::All,
+                         EntityType::GeometryRegion, EntityType::FaceSet});
     p.scale = r.number_or(3, 1.0);
     p.where = r.where();
     const std::size_t i = d.model.pressures.size();

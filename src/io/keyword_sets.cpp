@@ -1,4 +1,5 @@
-// *SET_NODE, *SET_PART: a set id, then lines of member ids.
+// *SET_NODE, *SET_PART: a set id, then lines of member ids. *SET_FACE: a set id, then one line
+// of corner-node ids per face.
 #include "deck_reader.hpp"
 
 namespace abut::deck {
@@ -48,6 +49,34 @@ void read_set_part(DeckReader& d, Block& b) {
     d.part_set_members.emplace_back(set.parts.back(), r.where(k));
   });
   d.model.part_sets.push_back(set);
+}
+
+// *SET_FACE: one face per row, its 3 or 4 corner nodes (IMPETUS: 4 node ids per face; a
+// triangle repeats its third or leaves the fourth empty). Matched to element faces in
+// deck_finalize_faces.cpp.
+void read_set_face(DeckReader& d, Block& b) {
+  b.title();
+  const Row head = b.row({"setid"});
+  FaceSet set;
+  set.id = d.other_id(head, 0);
+  set.where = head.where(0);
+  d.claim_id("face set", set.id, head.where(0));
+  PendingFaceSet pending;
+  pending.index = d.model.face_sets.size();
+  if (b.done())
+    throw InputError(b.where(),
+                     "missing data line: expected the corner node ids of a face "
+                     "(n1, n2, n3, n4)");
+  while (!b.done()) {
+    const Row r = b.row({"n1", "n2", "n3", "n4"});
+    PendingFaceSet::Face face;
+    for (std::size_t k = 0; k < 3; ++k) face.nodes[k] = d.node_id(r, k);
+    face.nodes[3] = r.given(3) ? d.node_id(r, 3) : face.nodes[2];
+    face.where = r.where();
+    pending.faces.push_back(face);
+  }
+  d.model.face_sets.push_back(set);
+  d.face_sets.push_back(std::move(pending));
 }
 
 }  // namespace abut::deck

@@ -17,9 +17,11 @@ namespace {
 constexpr std::initializer_list<EntityType> kNodeEntities = {
     EntityType::Node,    EntityType::NodeSet, EntityType::Part,
     EntityType::PartSet, EntityType::All,     EntityType::GeometryRegion};
-// Face loads act on exterior faces: of parts, of everything, of a region (as *LOAD_PRESSURE).
+// Face loads act on exterior faces: of parts, of everything, of a region, of a face set (as
+// *LOAD_PRESSURE).
 constexpr std::initializer_list<EntityType> kFaceEntities = {
-    EntityType::Part, EntityType::PartSet, EntityType::All, EntityType::GeometryRegion};
+    EntityType::Part, EntityType::PartSet, EntityType::All, EntityType::GeometryRegion,
+    EntityType::FaceSet};
 
 void start(DeckReader& d, Block& b, const std::string& expected) {
   if (b.done()) throw InputError(b.where(), "missing data line: expected " + expected);

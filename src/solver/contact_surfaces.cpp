@@ -91,6 +91,7 @@ std::vector<SkinFace> contact_faces(const Model& model, const EntityRef& entity,
                                     bool exposed_faces) {
   std::vector<SkinFace> faces;
   std::vector<std::int64_t> parts;
+  std::vector<std::int32_t> shells;  // of a face set, sorted
   // Interior faces next to solids that can erode, when erosion may expose them.
   std::vector<std::uint8_t> erodible(model.mesh.solid_count(), 0);
   if (exposed_faces)
@@ -116,18 +117,22 @@ std::vector<SkinFace> contact_faces(const Model& model, const EntityRef& entity,
     parts = model.parts_of(entity);
     faces = located([&] { return exterior_faces(model.mesh, parts, merge, exposable); });
   } else if (entity.type == EntityType::FaceSet) {
+    const FaceSet& set = model.face_set(entity);
     located([&] {
-      for (const SolidFace& sf : model.face_set(entity).faces)
+      for (const SolidFace& sf : set.faces)
         append_facets(model.mesh, sf.solid, sf.face, 0.0, faces);
       return 0;
     });
+    for (const std::int32_t s : set.shells) shells.push_back(s);
   } else {
     throw InputError(entity.where,
                      "a contact surface is a part (P), a part set (PS), ALL or element faces");
   }
   const Mesh& mesh = model.mesh;
   for (std::size_t s = 0; s < mesh.shell_count(); ++s) {
-    if (std::find(parts.begin(), parts.end(), mesh.shell_part[s]) == parts.end()) continue;
+    if (std::find(parts.begin(), parts.end(), mesh.shell_part[s]) == parts.end() &&
+        !std::binary_search(shells.begin(), shells.end(), static_cast<std::int32_t>(s)))
+      continue;
     SkinFace f;
     f.nodes = mesh.shells[s];
     f.part = mesh.shell_part[s];

@@ -16,7 +16,7 @@ std::string entity_name(const EntityRef& e) {
     case EntityType::GeometryRegion:
       return "the region of geometry " + id;
     case EntityType::FaceSet:
-      return "surface " + id;
+      return "face set " + id;
     case EntityType::Tool:
       return "tool " + id;
     case EntityType::All:

@@ -155,6 +155,9 @@ std::vector<std::int32_t> Model::nodes_of(const EntityRef& entity) const {
         for (int a = 0; a < face.size(); ++a)
           nodes.push_back(cell.nodes[static_cast<std::size_t>(face.nodes[a])]);
       }
+      for (const std::int32_t s : set.shells)
+        nodes.insert(nodes.end(), mesh.shells[static_cast<std::size_t>(s)].begin(),
+                     mesh.shells[static_cast<std::size_t>(s)].end());
       break;
     }
   }
@@ -175,9 +178,10 @@ const RigidTool& Model::tool(const EntityRef& entity) const {
 const FaceSet& Model::face_set(const EntityRef& entity) const {
   const FaceSet* set = find_by_id(face_sets, entity.id);
   if (!set) {
-    throw InputError(entity.where,
-                     "surface " + std::to_string(entity.id) + " does not exist (defined: " +
-                         id_list(face_sets, [](const FaceSet& s) { return s.id; }) + ")");
+    throw InputError(entity.where, "face set " + std::to_string(entity.id) +
+                                       " does not exist (defined face sets: " +
+                                       id_list(face_sets, [](const FaceSet& s) { return s.id; }) +
+                                       ")");
   }
   return *set;
 }

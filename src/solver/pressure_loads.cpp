@@ -57,6 +57,14 @@ void select_faces(const Model& model, const PressureLoad& load, std::vector<Skin
       if (in_region(f.nodes)) skin.push_back(f);
     for (std::size_t s = 0; s < mesh.shell_count(); ++s)
       shell_selected[s] = in_region(mesh.shells[s]) ? 1 : 0;
+  } else if (load.entity.type == EntityType::FaceSet) {
+    const FaceSet& set = model.face_set(load.entity);
+    skin = located_skin(load, [&] {
+      std::vector<SkinFace> faces;
+      for (const SolidFace& f : set.faces) append_facets(mesh, f.solid, f.face, 0.0, faces);
+      return faces;
+    });
+    for (const std::int32_t s : set.shells) shell_selected[static_cast<std::size_t>(s)] = 1;
   } else {
     std::vector<std::int64_t> parts = model.parts_of(load.entity);  // sorted for P, PS, ALL
     std::sort(parts.begin(), parts.end());

@@ -183,6 +183,12 @@ void Simulation::Impl::kick() {
     throw InstabilityError(fmt::format("the stable time step became {:.4g} (limited by {})", scaled,
                                        limit_description()));
   dt_next = std::min({scaled, model.time.max_step, model.time.end_time - t});
+  // At the start it is the deck's dt_min that cannot be: no step of the run would be allowed.
+  if (n == 0 && scaled < model.time.min_step)
+    throw InputError(model.time.min_step_where,
+                     fmt::format("dt_min = {:.4g} is above the initial stable time step {:.4g} "
+                                 "(limited by {}): the run could not take its first step",
+                                 model.time.min_step, scaled, limit_description()));
   if (scaled < model.time.min_step)
     throw InstabilityError(fmt::format(
         "the stable time step {:.4g} fell below dt_min = {:.4g} of *TIME (limited by {})", scaled,

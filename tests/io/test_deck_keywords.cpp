@@ -61,6 +61,22 @@ TEST(DeckControl, RangesAndUnsupportedOptions) {
               HasSubstr("state-file output"));
 }
 
+// A dt_min above the model's first stable step is the deck's error (the run could not take a
+// step), at the dt_min field, not an instability of the run (found by deck_fuzz).
+TEST(DeckControl, DtMinAboveTheFirstStableStepIsAnInputError) {
+  std::string deck = kBoxModel;
+  deck.replace(deck.find("1.0e-3\n"), 7, "1.0e-3, 1.0, 1.0e-2\n");
+  const Model m = model_of(deck);
+  try {
+    Simulation sim(m);
+    ADD_FAILURE() << "a run started with dt_min 1e-2 s on a steel box of 1 m elements";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, 4u) << e.what();
+    EXPECT_EQ(e.where().field, "dt_min") << e.what();
+    EXPECT_THAT(e.message(), HasSubstr("above the initial stable time step"));
+  }
+}
+
 TEST(DeckMesh, NodesWithConstraintsAndSolidElements) {
   const Model m = read(R"(*TIME
 1

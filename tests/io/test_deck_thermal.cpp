@@ -268,9 +268,9 @@ TEST(DeckThermal, LoadThermalSurfaceErrors) {
   EXPECT_EQ(e.where().field, "t_end");
   e = error_of(with("*LOAD_THERMAL_SURFACE\n1, P, 1, , 1.0, , , 1\n"));
   EXPECT_EQ(e.where().field, "erode");
-  e = error_of(with("*LOAD_THERMAL_SURFACE\n1, FS, 1, , 1.0\n"));
-  EXPECT_EQ(e.where().field, "entype");
-  EXPECT_THAT(e.message(), HasSubstr("not supported yet"));
+  e = error_of(with("*LOAD_THERMAL_SURFACE\n1, FS, 1, , 1.0\n"));  // a face set (*SET_FACE)
+  EXPECT_EQ(e.where().field, "enid");
+  EXPECT_THAT(e.message(), HasSubstr("face set 1 does not exist"));
   e = error_of(with("*LOAD_THERMAL_SURFACE\n1, P, 1\n"));
   EXPECT_EQ(e.where().field, "sf");
   e = error_of(with("*LOAD_THERMAL_SURFACE\n1, P, 1, , 1.0\n1, P, 1, , 2.0\n"));

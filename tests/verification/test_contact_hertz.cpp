@@ -46,6 +46,7 @@
 #include "abut/contact/penalty.hpp"
 #include "abut/mesh/generators.hpp"
 #include "abut/mesh/refine.hpp"
+#include "abut/mesh/skin.hpp"
 #include "abut/solver/contact_surfaces.hpp"
 #include "cell_deck.hpp"
 #include "run_to.hpp"
@@ -328,6 +329,43 @@ TEST(ContactHertz, SoftAutomaticPenaltyKeepsTheEnergyBalanceThroughoutTheContact
   EXPECT_LT(worst, 0.01);
   EXPECT_GT(rebound, 0.95 * kV);
   EXPECT_LT(rebound, 1.001 * kV);
+}
+
+}  // namespace
+}  // namespace abut
+
+namespace abut {
+namespace {
+
+// The sphere's contact surface given as a face set (*SET_FACE, entity FS; issue 33): its exterior
+// faces listed by their corner nodes give the same impact as the whole part, to round-off (the
+// same facets in the same order: the run is the same).
+TEST(ContactHertz, AFaceSetOfTheSphereIsTheWholePart) {
+  double pfac = 0.0;
+  const std::string deck = hertz_deck(pfac);
+  const Model whole = read_deck_string(deck, "hertz.k");
+  const std::vector<std::int64_t> sphere{1};
+  std::string rows = "*SET_FACE\n\"sphere's skin\"\n21\n";
+  for (const SkinFace& f : exterior_faces(whole.mesh, sphere, false)) {
+    const auto id = [&](int a) {
+      return whole.mesh.nodes.id[static_cast<std::size_t>(f.nodes[a])];
+    };
+    rows += std::to_string(id(0)) + ", " + std::to_string(id(1)) + ", " + std::to_string(id(2)) +
+            ", " + std::to_string(id(3)) + "\n";
+  }
+  std::string faces = deck;
+  const std::string by_part = "P, 1, P, 2, 0.0,";
+  ASSERT_NE(faces.find(by_part), std::string::npos);
+  faces.replace(faces.find(by_part), by_part.size(), "FS, 21, P, 2, 0.0,");
+  faces.replace(faces.find("*END"), 4, rows + "*END");
+  const Model by_faces = read_deck_string(faces, "hertz_faces.k");
+  ASSERT_EQ(by_faces.face_sets.at(0).faces.size(),
+            exterior_faces(whole.mesh, sphere, false).size());
+  const Impact a = run_impact(whole), b = run_impact(by_faces);
+  EXPECT_EQ(a.cycles, b.cycles);
+  EXPECT_NEAR(b.contact_time, a.contact_time, 1e-12 * a.contact_time);
+  EXPECT_NEAR(b.force_span, a.force_span, 1e-12 * a.force_span);
+  EXPECT_NEAR(b.rebound, a.rebound, 1e-12 * kV);
 }
 
 }  // namespace

@@ -27,6 +27,7 @@ struct TimeControl {
   double end_time = 0.0;    // t_term
   double step_scale = 0.9;  // sf_dt
   double min_step = 0.0;    // dt_min: the run stops if the stable step falls below it
+  SourceLocation min_step_where;  // the dt_min field (a dt_min above the first step is its error)
   double max_step = 1e10;   // dt_max
   double start_time = 0.0;  // t_start
 };

@@ -21,12 +21,15 @@ struct SolidFace {
   std::int8_t face = 0;
 };
 
-// A set of solid faces (Abaqus *SURFACE, TYPE=ELEMENT): a contact surface or a pressure load.
-// Contacts refer to it with EntityType::FaceSet and its id.
+// A set of element faces: a contact surface (either side, S2S or N2S), a pressure or a thermal
+// load. Solid faces (Abaqus *SURFACE, TYPE=ELEMENT; IMPETUS *SET_FACE rows on solids), each once,
+// outward as the element's face is, and whole shells (*SET_FACE rows on shells). Entities refer
+// to it with EntityType::FaceSet and its id.
 struct FaceSet {
   std::int64_t id = 0;
   std::string name;
   std::vector<SolidFace> faces;
+  std::vector<std::int32_t> shells;  // shell indices (Mesh::shells), sorted
   SourceLocation where;
 };
 
