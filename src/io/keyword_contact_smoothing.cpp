@@ -17,10 +17,12 @@ void read_contact_smoothing(DeckReader& d, Block& b) {
                                 "MAIN (OptiStruct MASTER: surface 2), SECONDARY (SLAVE: surface 1) "
                                 "or BOTH");
   if (!r.given(1)) r.fail(1, "expected the side to smooth: MAIN, SECONDARY or BOTH (SMSIDE)");
-  if (r.given(2) && r.word(2) != "ALL")
-    r.fail(2,
-           "only ALL (the whole side) is supported: a region of a side is a face set, which the "
-           ".k dialect does not have yet (issue 33)");
+  // SMREG: ALL, or the setid of a *SET_FACE (OptiStruct's SURF id).
+  std::optional<EntityRef> region;
+  if (r.given(2) && r.word(2) != "ALL") {
+    region = EntityRef{EntityType::FaceSet, d.other_id(r, 2), r.where(2)};
+    d.entity_references.push_back(*region);
+  }
   std::optional<double> crease;
   if (r.given(3)) {
     crease = r.number(3);
@@ -28,9 +30,9 @@ void read_contact_smoothing(DeckReader& d, Block& b) {
   }
   const SourceLocation where = r.where();
   // OptiStruct's repeated SMOOTH lines name a side (and a region) each: here BOTH.
-  refine_contact(d, r, [side, crease, where](ContactSpec& c) {
+  refine_contact(d, r, [side, crease, region, where](ContactSpec& c) {
     c.smoothing =
-        ContactSpec::Smoothing{side != Side::Main, side != Side::Secondary, crease, where};
+        ContactSpec::Smoothing{side != Side::Main, side != Side::Secondary, crease, region, where};
   });
 }
 

@@ -35,6 +35,7 @@
 #include <string>
 
 #include "abut/io/deck.hpp"
+#include "abut/mesh/skin.hpp"
 #include "abut/solver/static_solver.hpp"
 #include "ring_mesh.hpp"
 
@@ -170,6 +171,57 @@ TEST(StaticSmoothing, NodeToSurfaceRefusesIt) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.where().file, "bearing.k");
     EXPECT_NE(std::string(e.what()).find("surface-to-surface"), std::string::npos) << e.what();
+  }
+}
+
+// A *SET_FACE of the exterior faces of `parts` of the model of `deck`, as setid 7.
+std::string skin_face_set(const std::string& deck, const std::vector<std::int64_t>& parts) {
+  const Model m = read_deck_string(deck, "bearing.k");
+  std::ostringstream rows;
+  rows << "*SET_FACE\n7\n";
+  for (const SkinFace& f : exterior_faces(m.mesh, parts, false)) {
+    for (int a = 0; a < 4; ++a)
+      rows << (a ? ", " : "") << m.mesh.nodes.id[static_cast<std::size_t>(f.nodes[a])];
+    rows << "\n";
+  }
+  return rows.str();
+}
+
+// The vertical drive reaction after the first increment (the run stops there).
+double first_reaction(const std::string& deck) {
+  const Model m = read_deck_string(deck, "bearing.k");
+  StaticSolver solver(m);
+  struct Stop {};
+  double w = 0.0;
+  try {
+    solver.run([&](const StaticIncrement&) {
+      w = verification::drive_reaction(m.mesh.nodes, solver.displacement(), solver.reaction(), 6.5)
+              .vertical;
+      throw Stop{};
+    });
+  } catch (const Stop&) {
+  }
+  return w;
+}
+
+// SMREG (OptiStruct SMREG = SURF id): a region naming every face of both sides is the whole
+// sides (SMREG ALL), to round-off; a region with no face of a side it smooths is an error there.
+TEST(StaticSmoothing, ARegionOfEveryFaceIsTheWholeSide) {
+  const std::string all = bearing_deck(34, "*CONTACT_SMOOTHING\n1, BOTH\n");
+  const std::string region =
+      bearing_deck(34, skin_face_set(all, {1, 2}) + "*CONTACT_SMOOTHING\n1, BOTH, 7\n");
+  const double w_all = first_reaction(all), w_region = first_reaction(region);
+  EXPECT_NE(w_all, 0.0);
+  EXPECT_NEAR(w_region, w_all, 1e-12 * std::abs(w_all));
+  const Model bearing_only = read_deck_string(
+      bearing_deck(34, skin_face_set(all, {1}) + "*CONTACT_SMOOTHING\n1, BOTH, 7\n"), "b.k");
+  try {
+    StaticSolver solver(bearing_only);
+    ADD_FAILURE() << "a region without a face of the shaft smoothed the shaft";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("has no face of surface 1"), std::string::npos)
+        << e.what();
+    EXPECT_EQ(e.where().field, "region") << e.what();
   }
 }
 

@@ -24,12 +24,12 @@ namespace abut {
 
 // *TIME
 struct TimeControl {
-  double end_time = 0.0;    // t_term
-  double step_scale = 0.9;  // sf_dt
-  double min_step = 0.0;    // dt_min: the run stops if the stable step falls below it
+  double end_time = 0.0;          // t_term
+  double step_scale = 0.9;        // sf_dt
+  double min_step = 0.0;          // dt_min: the run stops if the stable step falls below it
   SourceLocation min_step_where;  // the dt_min field (a dt_min above the first step is its error)
-  double max_step = 1e10;   // dt_max
-  double start_time = 0.0;  // t_start
+  double max_step = 1e10;         // dt_max
+  double start_time = 0.0;        // t_start
 };
 
 // *OUTPUT (0 = the reference default: t_term/100 for states, t_term/1000 for histories)
@@ -272,7 +272,7 @@ struct ContactSpec {
   std::optional<EntityRef> adjust_nodes;
   // Where each contact keyword was given (for errors), empty when absent.
   SourceLocation normal_where, friction_where, stiffness_where, initial_where, discretisation_where;
-  GapSettings gaps;         // *CONTACT_GAP
+  GapSettings gaps;  // *CONTACT_GAP
   // *CONTACT_GAP shell_side (OptiStruct MORIENT, seed 003): which sides of surface 2's shells act.
   // Both: two-sided shells (OPENGAP); Normal / Reverse: one side on the mid-surface (NORM,
   // REVNORM; ContactSurface::add_shell_side); Overlap: one side per facet, facing away from the
@@ -304,6 +304,9 @@ struct ContactSpec {
   struct Smoothing {
     bool surface1 = false, surface2 = false;
     std::optional<double> crease;
+    // OptiStruct SMREG = SURF id: only the facets of these faces (a FaceSet) are smoothed, their
+    // nodal normals from them alone; empty: every facet of the side (SMREG ALL).
+    std::optional<EntityRef> region;
     SourceLocation where;
   };
   std::optional<Smoothing> smoothing;
@@ -380,8 +383,8 @@ struct Model {
   std::vector<PressureLoad> pressures;
   std::vector<ContactSpec> contacts;
   std::vector<RigidTool> tools;  // *CONTACT_TOOL
-  std::vector<TieSpec> ties;    // exact ties (not in `contacts`: they have no penalty springs)
-  std::vector<Sensor> sensors;  // *SENSOR, in deck order
+  std::vector<TieSpec> ties;     // exact ties (not in `contacts`: they have no penalty springs)
+  std::vector<Sensor> sensors;   // *SENSOR, in deck order
   // The static procedure (model_static.hpp): empty for an explicit run.
   std::vector<StaticStep> static_steps;
   std::vector<FaceSet> face_sets;

@@ -87,22 +87,35 @@ struct Side {
   std::vector<SkinFace> faces;
   std::vector<std::int32_t> nodes;  // node set only
   bool smooth = false;              // *CONTACT_SMOOTHING of this side
+  // Its region (SMREG): the solid faces, sorted; empty: every facet.
+  std::vector<std::pair<std::int32_t, std::int8_t>> region;
 };
 
-// Replaces each plain facet of `facets` (one without a curved face) by the facets of its smooth
-// patch (smoothing.hpp), which join `dependents`.
+// Whether `region` (empty: everything) holds the solid face of facet f.
+bool in_region(const std::vector<std::pair<std::int32_t, std::int8_t>>& region, const SkinFace& f) {
+  return region.empty() ||
+         std::binary_search(region.begin(), region.end(), std::pair{f.solid, f.face});
+}
+
+// Replaces each plain facet of `facets` (one without a curved face) in `region` by the facets of
+// its smooth patch (smoothing.hpp), which join `dependents`.
 void smooth_plain_facets(std::vector<SkinFace>& facets, std::vector<FacetParent>& parents,
+                         const std::vector<std::pair<std::int32_t, std::int8_t>>& region,
                          NagataSmoothing& smoothing, DependentNodes& dependents) {
   std::vector<std::array<std::int32_t, 4>> plain;
+  std::vector<std::uint8_t> smoothed_here(facets.size(), 0);
   for (std::size_t i = 0; i < facets.size(); ++i)
-    if (!parents[i].curved()) plain.push_back(facets[i].nodes);
+    if (!parents[i].curved() && in_region(region, facets[i])) {
+      plain.push_back(facets[i].nodes);
+      smoothed_here[i] = 1;
+    }
   const NagataSmoothing::Facets smoothed =
       smoothing.smooth(plain, dependents, kCurvedFaceDivisions);
   std::vector<SkinFace> out_facets;
   std::vector<FacetParent> out_parents;
   std::size_t k = 0, next = 0;  // the plain facet, and its first smoothed facet
   for (std::size_t i = 0; i < facets.size(); ++i) {
-    if (parents[i].curved()) {
+    if (!smoothed_here[i]) {
       out_facets.push_back(facets[i]);
       out_parents.push_back(parents[i]);
       continue;
@@ -224,8 +237,9 @@ StaticContact make_pass(const Model& model, const ContactSpec& spec, const Side&
   DependentNodes dependents = curved.dependents();
   NagataSmoothing smoothing(spec.smoothing ? spec.smoothing->crease.value_or(kSmoothingCrease)
                                            : kSmoothingCrease);
-  if (own.smooth) smooth_plain_facets(own_facets, own_parents, smoothing, dependents);
-  if (target.smooth) smooth_plain_facets(target_facets, target_parents, smoothing, dependents);
+  if (own.smooth) smooth_plain_facets(own_facets, own_parents, own.region, smoothing, dependents);
+  if (target.smooth)
+    smooth_plain_facets(target_facets, target_parents, target.region, smoothing, dependents);
   ContactSurface secondary =
       contact_surface(mesh, own_facets, no_penalty, {}, ContactSpec::ShellSides::Both, own_parents);
   ContactSurface main = contact_surface(mesh, target_facets, no_penalty, {},
@@ -256,6 +270,23 @@ StaticContacts make_static_contacts(const Model& model, const RemovedNodes& tied
                          "nodes themselves");
       one.smooth = spec.smoothing->surface1;
       two.smooth = spec.smoothing->surface2;
+      if (const std::optional<EntityRef>& region = spec.smoothing->region) {
+        const FaceSet& set = model.face_set(*region);
+        std::vector<std::pair<std::int32_t, std::int8_t>> faces;
+        for (const SolidFace& f : set.faces) faces.emplace_back(f.solid, f.face);
+        std::sort(faces.begin(), faces.end());
+        for (Side* side : {&one, &two}) {
+          if (!side->smooth) continue;
+          side->region = faces;
+          if (std::none_of(side->faces.begin(), side->faces.end(),
+                           [&](const SkinFace& f) { return in_region(faces, f); }))
+            throw InputError(region->where,
+                             "the smoothing region, face set " + std::to_string(set.id) +
+                                 ", has no face of surface " + (side == &one ? "1" : "2") +
+                                 " of contact " + std::to_string(spec.id) +
+                                 ": it must name faces of the side it smooths");
+        }
+      }
     }
     // Symmetric unless one-way (the explicit interface's rule, each way with weight 1/2): node
     // sets act one way.
