@@ -85,6 +85,24 @@ TEST(DeckFaceSets, FaceSetsCarryContactsAndPressures) {
   EXPECT_DOUBLE_EQ(area.x, 0.0);
 }
 
+// Heat loads on a face set act on its faces only (the solid's top and the shell here).
+TEST(DeckFaceSets, HeatLoadsActOnTheFaceSet) {
+  std::string deck = kStack;
+  deck.replace(deck.find("1, 7800.0, 210.0e9, 0.3\n"), 24,
+               "1, 7800.0, 210.0e9, 0.3, 0, 7\n*PROP_THERMAL\n7, 460.0, 45.0\n");
+  const Model m = model_of(deck + "*SET_FACE\n11\n9, 10, 11, 12\n13, 14, 15, 16\n" +
+                           "*LOAD_THERMAL_SURFACE\n1, FS, 11, , 1.0e4\n" +
+                           "*LOAD_THERMAL_CONVECTION\n2, FS, 11, 25.0, 20.0\n");
+  for (const auto* faces : {&m.thermal.fluxes.at(0).faces, &m.thermal.convection.at(0).faces}) {
+    ASSERT_EQ(faces->size(), 2u);
+    std::vector<std::int64_t> ids;
+    for (const auto& q : *faces)
+      for (const std::int32_t n : q) ids.push_back(m.mesh.nodes.id[static_cast<std::size_t>(n)]);
+    std::sort(ids.begin(), ids.end());
+    EXPECT_EQ(ids, (std::vector<std::int64_t>{9, 10, 11, 12, 13, 14, 15, 16}));
+  }
+}
+
 TEST(DeckFaceSets, ErrorsSayWhyAtTheRow) {
   const auto row_error = [](const std::string& row) {
     const InputError e = error_of(kStack + "*SET_FACE\n11\n" + row + "\n");
