@@ -12,53 +12,17 @@
 #include "abut/contact/integration.hpp"
 #include "abut/contact/narrow_phase.hpp"
 #include "abut/contact/quad.hpp"
+#include "facet_weights.hpp"
 
 namespace abut {
+
+using namespace facet_weights;
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
 Vec3 tangential(const Vec3& v, const Vec3& n) { return v - n * dot(v, n); }
-
-// Adds sign N_a at the facet's reference point r to w: the facet's bilinear shape functions on
-// its corners, or, for a facet of a curved face, the face's own on the face's nodes.
-void add_shape(ContactWeights& w, const std::array<std::int32_t, 4>& facet,
-               const FacetParent* parent, const std::array<double, 2>& r, double sign) {
-  if (parent && parent->curved()) {
-    double n[FacetParent::kMaxNodes];
-    parent->at(r[0], r[1], n);
-    for (int a = 0; a < parent->count; ++a) w.add(parent->nodes[a], sign * n[a]);
-    return;
-  }
-  const auto n = quad_shape(r[0], r[1]);
-  for (int a = 0; a < 4; ++a) w.add(facet[a], sign * n[a]);
-}
-
-// The point sum_a w_a x_a - origin of weights over the nodes of `in`.
-Vec3 weighted_point(const ContactWeights& w, const ContactInput& in, const Vec3& origin) {
-  Vec3 x;
-  for (int k = 0; k < w.count; ++k) {
-    const auto i = static_cast<std::size_t>(w.nodes[k]);
-    x += (Vec3{in.x[i], in.y[i], in.z[i]} - origin) * w.weights[k];
-  }
-  return x;
-}
-
-// The point of a facet at its reference point r, on its curved face when it has one.
-Vec3 surface_point(const std::array<std::int32_t, 4>& facet, const FacetParent* parent,
-                   const std::array<double, 2>& r, const ContactInput& in) {
-  ContactWeights w;
-  add_shape(w, facet, parent, r, 1.0);
-  return weighted_point(w, in, Vec3{});
-}
-
-// The curved face of a surface's facet, or null.
-const FacetParent* parent_of(const ContactSurface& s, std::int32_t facet) {
-  return s.parent.empty() || !s.parent[static_cast<std::size_t>(facet)].curved()
-             ? nullptr
-             : &s.parent[static_cast<std::size_t>(facet)];
-}
 
 // The settings a tool takes (the delegating constructor's check, before anything is made).
 StaticContactSettings checked_for_tool(StaticContactSettings s) {
@@ -229,92 +193,13 @@ void StaticContact::evaluate(const ContactInput& host) {
   // pairs, which keep the point's partner and place on it.
   const bool by_cells = !settings_.node_to_surface && !settings_.tied && !settings_.small_sliding;
   const double facing_cos = std::cos(settings_.edge_angle * kPi / 180.0);
-  // Positions, areas and normals of the points, and the boxes of their cells (S2S).
-  std::vector<double> qx(np), qy(np), qz(np);
-  std::vector<Vec3> own_normal(np);
-  // A node's vector area, int N_a n dA over its facets: it bears with the part that faces its
-  // partner (on a block's edge the side faces' share does not).
-  std::vector<Vec3> node_area(np);
-  std::vector<Box> regions(by_cells ? np : 0);
-  std::vector<double> cell_reach(by_cells ? np : 0);
-  for (std::size_t p = 0; p < np; ++p) {
-    StaticContactPoint& out = points_[p];
-    out = StaticContactPoint{};
-    if (point_node_[p] >= 0) {
-      const std::int32_t n = point_node_[p];
-      out.node = n;
-      out.position = {in.x[n], in.y[n], in.z[n]};
-      for (std::int32_t k = node_facet_start_[n]; k < node_facet_start_[n + 1]; ++k) {
-        // int N_a dA over each facet around the node, 2 x 2 Gauss points.
-        const auto& f = secondary_.facets[node_facets_[k]];
-        const QuadCorners c = quad_corners(f, in.x, in.y, in.z);
-        const double g = 1.0 / std::sqrt(3.0);
-        for (const double xi : {-g, g})
-          for (const double eta : {-g, g}) {
-            double jacobian = 0.0;
-            const Vec3 n_here = quad_normal(c, xi, eta, jacobian);
-            const Vec3 dA = n_here * jacobian;
-            const auto shape = quad_shape(xi, eta);
-            double share = 0.0;
-            for (int a = 0; a < 4; ++a)
-              if (f[a] == n && (a < 3 || f[3] != f[2])) share += shape[a];
-            if (f[3] == f[2] && f[2] == n) share += shape[3];
-            out.area += share * jacobian;
-            node_area[p] += dA * share;
-          }
-      }
-    } else {
-      out.facet = point_facet_[p];
-      const QuadCorners c = quad_corners(secondary_.facets[out.facet], in.x, in.y, in.z);
-      double jacobian = 0.0;
-      own_normal[p] = quad_normal(c, point_xi_[p], point_eta_[p], jacobian);
-      out.position = quad_point(c, point_xi_[p], point_eta_[p]);
-      // A point of a curved face that acts alone lies on the face itself.
-      if (const FacetParent* face = parent_of(secondary_, out.facet); face && !by_cells)
-        out.position =
-            surface_point(secondary_.facets[out.facet], face, {point_xi_[p], point_eta_[p]}, in);
-      out.area = point_weight_[p] * jacobian;
-      if (by_cells) {  // the cell's box, and the distance to its farthest corner
-        const CellBounds& b = point_cell_[p];
-        Box& r = regions[p];
-        r.lo = r.hi = {out.position.x, out.position.y, out.position.z};
-        for (const double cxi : {b.xi0, b.xi1})
-          for (const double ceta : {b.eta0, b.eta1}) {
-            const Vec3 corner = quad_point(c, cxi, ceta);
-            cell_reach[p] = std::max(cell_reach[p], norm(corner - out.position));
-            for (int k = 0; k < 3; ++k) {
-              r.lo[k] = std::min(r.lo[k], corner[k]);
-              r.hi[k] = std::max(r.hi[k], corner[k]);
-            }
-          }
-      }
-    }
-    out.area *= settings_.weight;
-    qx[p] = out.position.x, qy[p] = out.position.y, qz[p] = out.position.z;
-  }
-  // Candidate facets.
-  std::vector<Box> boxes(main_.size());
-  for (std::size_t f = 0; f < main_.size(); ++f) {
-    Box& b = boxes[f];
-    b.lo = {1e300, 1e300, 1e300};
-    b.hi = {-1e300, -1e300, -1e300};
-    for (const std::int32_t n : main_.facets[f]) {
-      const double c[3] = {in.x[n], in.y[n], in.z[n]};
-      for (int k = 0; k < 3; ++k) {
-        b.lo[k] = std::min(b.lo[k], c[k] - reach - edge_tolerance);
-        b.hi[k] = std::max(b.hi[k], c[k] + reach + edge_tolerance);
-      }
-    }
-  }
-  BucketGrid grid;
-  CandidateList candidates;
-  if (!boxes.empty()) {
-    grid.build(boxes);
-    if (by_cells)
-      grid.query(regions, candidates);
-    else
-      grid.query(qx, qy, qz, candidates);
-  }
+  // Positions, areas and normals of the points, the boxes of their cells (S2S), and the facets
+  // near each (static_contact_points.cpp).
+  const PointGeometry geometry = locate_points(in, by_cells);
+  const std::vector<Vec3>& own_normal = geometry.own_normal;
+  const std::vector<Vec3>& node_area = geometry.node_area;
+  const std::vector<double>& cell_reach = geometry.cell_reach;
+  const CandidateList candidates = candidate_facets(in, geometry, by_cells, reach, edge_tolerance);
   const CoverFacets cover{main_.facets, main_active_, main_twin_, in.x, in.y, in.z, main_.parent};
   const TargetFacets target{main_.facets, main_sharp_, main_active_, main_depth_,
                             main_twin_,   main_free_,  main_gap_,    main_min_edge_,

@@ -69,7 +69,7 @@ struct StaticContactSettings {
   enum class NodeArea { Facing, EveryFace } node_area = NodeArea::Facing;
   int accuracy_level = 2;  // Gauss points per direction of a secondary facet: 1, 2 or 3 levels
   NormalLaw normal = LinearPenalty{};
-  double penalty = 0.0;        // pfac [stress / length], passed to the normal law
+  double penalty = 0.0;  // pfac [stress / length], passed to the normal law
   // Its limits per unit area (normal force p, area 1), at the sliding speed |slip| / dt over the
   // increment (ContactInput::dt).
   TangentialLaw tangential_law = Frictionless{};
@@ -78,7 +78,7 @@ struct StaticContactSettings {
   std::vector<PairFriction> pair_frictions;
   // Nodes that are no secondary point (Radioss Irem_i2 = 1; removed_nodes.hpp).
   RemovedNodes removed_nodes;
-  double stick_slope = 0.0;    // k_t [stress / length]; 0: the normal penalty
+  double stick_slope = 0.0;  // k_t [stress / length]; 0: the normal penalty
   // Metafor dependencies (laws/dependency.hpp), at the time of the evaluation (ContactInput::time,
   // constant within an increment): the normal law's pressure times f(t) (PEN_NORMALE TM), and
   // k_t times g(d) f(t) (PEN_TANGENT GD, TM). Ties keep the constant penalties.
@@ -136,7 +136,7 @@ struct StaticContactElement {
   int count = 0;
   double area = 0.0;
   Vec3 traction;
-  std::array<double, 9> tangent{};  // row-major
+  std::array<double, 9> tangent{};       // row-major
   std::vector<double> spring_force;      // F_a, count entries; empty: no separate spring
   std::vector<double> spring_stiffness;  // S_ab, count x count, row-major
   Vec3 push;
@@ -157,16 +157,16 @@ struct StaticContactPoint {
   bool active = false;        // closed: carries a spring
   bool slipping = false;
   double area = 0.0;
-  Vec3 normal;            // the normal along which the gap is measured (the point's partner's;
-                          // a cell's own, from the other surface)
-  Vec3 push;              // direction of the normal traction: n, or a cell's push (mortar.hpp)
-  double gap = 0.0;       // negative = penetration (after the initial shifts, see settings)
+  Vec3 normal;             // the normal along which the gap is measured (the point's partner's;
+                           // a cell's own, from the other surface)
+  Vec3 push;               // direction of the normal traction: n, or a cell's push (mortar.hpp)
+  double gap = 0.0;        // negative = penetration (after the initial shifts, see settings)
   double least_gap = 0.0;  // the smallest over a cell's samples (mortar.hpp); else the gap
-  double pressure = 0.0;  // normal traction, positive in compression
-  Vec3 traction;          // tangential traction on the point
-  Vec3 slip;              // tangential relative motion since the last converged state
-  Vec3 total_slip;        // tangential relative motion accumulated while in contact
-  double energy = 0.0;    // elastic energy of its springs (normal and stick) [energy]
+  double pressure = 0.0;   // normal traction, positive in compression
+  Vec3 traction;           // tangential traction on the point
+  Vec3 slip;               // tangential relative motion since the last converged state
+  Vec3 total_slip;         // tangential relative motion accumulated while in contact
+  double energy = 0.0;     // elastic energy of its springs (normal and stick) [energy]
 };
 
 class StaticContact {
@@ -235,17 +235,31 @@ class StaticContact {
     bool in_contact = false;
     std::int32_t facet = -1;  // partner facet (tied and small sliding: fixed)
     double xi = 0.0, eta = 0.0;
-    Vec3 traction;  // committed tangential traction
+    Vec3 traction;         // committed tangential traction
     bool sliding = false;  // beyond the static limit: held only up to the sliding one
     bool adhered = false;  // touched, and not yet opened beyond the adhesive zone
-    Vec3 offset;    // tied: relative position x_point - x_partner when the pair formed
+    Vec3 offset;           // tied: relative position x_point - x_partner when the pair formed
     Vec3 total_slip;
     double slip_work = 0.0;
     double stabilization_work = 0.0;
     double initial_offset = 0.0;  // subtracted from the penetration until the point separates
   };
   void initial_gaps(const ContactInput& initial);
-  void find_partners(const ContactInput& in);
+
+  // Where the points are at an evaluation (static_contact_points.cpp): their positions and areas
+  // into points_, and for the search their positions, own normals (S2S), nodes' vector areas
+  // (int N_a n dA over their facets, N2S) and, meeting by cells, the cells' boxes and reach.
+  struct PointGeometry {
+    std::vector<double> qx, qy, qz;
+    std::vector<Vec3> own_normal, node_area;
+    std::vector<Box> regions;
+    std::vector<double> cell_reach;
+  };
+  PointGeometry locate_points(const ContactInput& in, bool by_cells);
+  // The main facets whose boxes, grown by reach + edge_tolerance, hold each point (by_cells:
+  // meet its cell's box).
+  CandidateList candidate_facets(const ContactInput& in, const PointGeometry& g, bool by_cells,
+                                 double reach, double edge_tolerance) const;
 
   // The host's coordinates extended by those of the dependent nodes (evaluate's input).
   ContactInput extended(const ContactInput& host);
