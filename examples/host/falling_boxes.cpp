@@ -34,10 +34,6 @@ double held(const abut::ContactStats& s) {
   return s.elastic_energy + s.damping_energy + s.friction_energy + s.released_energy;
 }
 
-double step_bound(const abut::ContactStats& s) {
-  return std::min({s.stable_step, s.approach_step, s.kink_step});
-}
-
 int run() {
   static BoxModel m;
   box_model_init(&m);
@@ -86,7 +82,7 @@ int run() {
     box_model_step(&m, dt);
     t += dt;
     dt = std::min(box_model_stable_step(),
-                  0.9 * std::min(step_bound(ab.stats()), step_bound(ground.stats())));
+                  0.9 * std::min(ab.stats().step_bound(), ground.stats().step_bound()));
   }
   const double g = kGravity * kNodeMass * 8.0;
   std::printf(

@@ -148,10 +148,7 @@ class Interface {
     d["kink_step"] = s.kink_step;
     return d;
   }
-  double stable_step() const {
-    const ContactStats& s = interface_->stats();
-    return std::min({s.stable_step, s.approach_step, s.kink_step});
-  }
+  double stable_step() const { return interface_->stats().step_bound(); }
   py::bytes save_state() const {
     const std::vector<char> b = interface_->save_state();
     return {b.data(), b.size()};

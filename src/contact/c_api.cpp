@@ -162,8 +162,7 @@ int abut_contact_apply(abut_contact* contact, double time, double dt, const doub
 
 double abut_contact_stable_step(const abut_contact* contact) {
   if (!contact) return std::numeric_limits<double>::quiet_NaN();
-  const abut::ContactStats& s = contact->interface.stats();
-  return std::min({s.stable_step, s.approach_step, s.kink_step});
+  return contact->interface.stats().step_bound();
 }
 
 int abut_contact_get_stats(const abut_contact* contact, abut_contact_stats* stats) {

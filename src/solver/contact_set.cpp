@@ -369,7 +369,7 @@ double ContactSet::stable_step(std::int64_t* limiting_contact, double* springs) 
         slots_[c].tool ? tools_[slots_[c].index].stats() : interfaces_[slots_[c].index].stats();
     const double bound = std::min(stats.stable_step, stats.approach_step);
     if (springs) *springs = std::min(*springs, bound);
-    const double s = std::min(bound, stats.kink_step);
+    const double s = stats.step_bound();
     if (s < step) {
       step = s;
       if (limiting_contact) *limiting_contact = reports_[c].id;

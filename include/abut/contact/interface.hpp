@@ -13,6 +13,7 @@
 //
 // The interface's state lives behind this header (src/contact/interface_impl.hpp): a host sees
 // the settings, the surfaces, the nodal arrays in and out, and the results.
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -71,7 +72,7 @@ struct ContactStats {
   // the motion over the step is known). F_d^n . v^(n-1/2) dt alone overstates it by
   // F_d^n . a^n dt^2 / 2, about (omega dt)^2 / 8 of it for a ringing spring (1% at omega dt = 0.3).
   double damping_energy = 0.0;
-  double friction_energy = 0.0;   // energy dissipated by friction so far
+  double friction_energy = 0.0;  // energy dissipated by friction so far
   // Spring energy that vanished without doing work so far: adhesive bonds that broke, ties that
   // failed, the springs of points whose facet eroded or left or that lost their partner while
   // pressed, every spring when the time window closes. (A point that separates lets go of forces
@@ -106,6 +107,8 @@ struct ContactStats {
   // kKinkShare E (scatter.cpp; docs/contact.md). Scattered touches (folds of a crushed tube)
   // hardly lower it. A caller's step is min(stable_step, approach_step, kink_step).
   double kink_step = std::numeric_limits<double>::infinity();
+  // The largest step the contact allows next: min(stable_step, approach_step, kink_step).
+  double step_bound() const { return std::min({stable_step, approach_step, kink_step}); }
   // Work done on the nodes by a moving analytic tool so far (tool_contact.hpp): over each step,
   // the mean of its forces at the step's two ends times the tool's displacement at the nodes.
   // 0 for contacts between meshed surfaces (their motion's work is the solver's).
