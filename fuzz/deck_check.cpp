@@ -5,8 +5,7 @@
 
 #include "abut/core/error.hpp"
 #include "abut/io/deck.hpp"
-#include "abut/solver/simulation.hpp"
-#include "abut/solver/static_solver.hpp"
+#include "abut/io/run.hpp"
 
 namespace abut::fuzz {
 
@@ -17,12 +16,7 @@ Outcome check_deck(std::string_view text, DeckFormat format, Stage stage) {
                                   ? read_inp_string_with_notes(deck, "fuzz.inp")
                                   : read_deck_string_with_notes(deck, "fuzz.k");
     if (stage == Stage::read) return {};
-    if (!result.model.static_steps.empty()) {
-      const StaticSolver solver(result.model);
-    } else {
-      const Simulation simulation(result.model);
-      (void)simulation.initial_time_step();
-    }
+    check_model(result.model);
     return {};
   } catch (const InputError& e) {
     const Verdict v = e.where().line > 0 ? Verdict::rejected_located : Verdict::rejected_unlocated;

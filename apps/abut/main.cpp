@@ -181,23 +181,21 @@ int main(int argc, char** argv) {
     abut::DeckResult result = abut::read_deck_with_notes(deck);
     for (const std::string& note : result.notes) std::cerr << "note: " << note << "\n";
     const abut::Model& model = result.model;
-    if (*check && !model.static_steps.empty()) {
-      const abut::StaticSolver solver(model);  // validates what the static solver needs
-      std::cout << fmt::format(
-          "{}: OK ({} nodes, {}, {} parts, {} contacts, {} static "
-          "steps)\n",
-          deck, model.mesh.nodes.size(), solids_of(model.mesh), model.parts.size(),
-          model.contacts.size(), model.static_steps.size());
-      return 0;
-    }
     if (*check) {
-      const abut::Simulation sim(model);
-      for (const abut::ContactReport& c : sim.contact_reports())
-        for (const std::string& w : c.warnings) std::cerr << "warning: " << w << "\n";
-      std::cout << fmt::format(
-          "{}: OK ({} nodes, {}, {} shells, {} parts, initial stable step {:.4g})\n", deck,
-          model.mesh.nodes.size(), solids_of(model.mesh), model.mesh.shell_count(),
-          model.parts.size(), sim.initial_time_step());
+      const abut::ModelCheck checked = abut::check_model(model);
+      for (const std::string& w : checked.warnings) std::cerr << "warning: " << w << "\n";
+      if (!checked.initial_time_step) {  // static steps
+        std::cout << fmt::format(
+            "{}: OK ({} nodes, {}, {} parts, {} contacts, {} static "
+            "steps)\n",
+            deck, model.mesh.nodes.size(), solids_of(model.mesh), model.parts.size(),
+            model.contacts.size(), model.static_steps.size());
+      } else {
+        std::cout << fmt::format(
+            "{}: OK ({} nodes, {}, {} shells, {} parts, initial stable step {:.4g})\n", deck,
+            model.mesh.nodes.size(), solids_of(model.mesh), model.mesh.shell_count(),
+            model.parts.size(), *checked.initial_time_step);
+      }
       return 0;
     }
     if (*info) {

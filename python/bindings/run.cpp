@@ -12,9 +12,6 @@
 
 #include "abut/core/error.hpp"
 #include "abut/io/deck.hpp"
-#include "abut/solver/contact_report.hpp"
-#include "abut/solver/simulation.hpp"
-#include "abut/solver/static_solver.hpp"
 #include "bindings.hpp"
 
 namespace py = pybind11;
@@ -40,16 +37,9 @@ py::dict check(const std::string& deck) {
   out["parts"] = model.parts.size();
   out["contacts"] = model.contacts.size();
   out["static_steps"] = model.static_steps.size();
-  std::vector<std::string> warnings;
-  if (!model.static_steps.empty()) {
-    const StaticSolver solver(model);  // validates what the static solver needs
-  } else {
-    const Simulation sim(model);
-    for (const ContactReport& c : sim.contact_reports())
-      warnings.insert(warnings.end(), c.warnings.begin(), c.warnings.end());
-    out["initial_time_step"] = sim.initial_time_step();
-  }
-  out["warnings"] = warnings;
+  const ModelCheck checked = check_model(model);
+  if (checked.initial_time_step) out["initial_time_step"] = *checked.initial_time_step;
+  out["warnings"] = checked.warnings;
   return out;
 }
 

@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <functional>
 #include <iosfwd>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "abut/solver/model.hpp"
 
@@ -51,6 +53,16 @@ struct RunReport {
 // state has been written.
 // A model with static steps (Model::static_steps) runs run_static_analysis instead.
 RunReport run_simulation(const Model& model, const RunOptions& options, std::ostream& log);
+
+// What `abut check` finds without running (src/io/check_model.cpp): the solver the model needs is
+// set up (the static solver for static steps, else the explicit one), which raises the
+// InputErrors a run would; then the contacts' start-up warnings and, for an explicit run, its
+// first stable time step.
+struct ModelCheck {
+  std::vector<std::string> warnings;
+  std::optional<double> initial_time_step;  // explicit runs
+};
+ModelCheck check_model(const Model& model);
 
 // The static steps of a model (src/io/run_static.cpp): a ParaView state per converged increment,
 // increments.csv, energy.csv, contact.csv, results.dat (the *NODE/*EL/*CONTACT PRINT requests in
