@@ -46,10 +46,10 @@
 #include "abut/contact/penalty.hpp"
 #include "abut/mesh/generators.hpp"
 #include "abut/mesh/refine.hpp"
-#include "abut/mesh/skin.hpp"
 #include "abut/solver/contact_surfaces.hpp"
 #include "cell_deck.hpp"
 #include "run_to.hpp"
+#include "skin_face_set.hpp"
 
 namespace abut {
 namespace {
@@ -345,14 +345,7 @@ TEST(ContactHertz, AFaceSetOfTheSphereIsTheWholePart) {
   const std::string deck = hertz_deck(pfac);
   const Model whole = read_deck_string(deck, "hertz.k");
   const std::vector<std::int64_t> sphere{1};
-  std::string rows = "*SET_FACE\n\"sphere's skin\"\n21\n";
-  for (const SkinFace& f : exterior_faces(whole.mesh, sphere, false)) {
-    const auto id = [&](int a) {
-      return whole.mesh.nodes.id[static_cast<std::size_t>(f.nodes[a])];
-    };
-    rows += std::to_string(id(0)) + ", " + std::to_string(id(1)) + ", " + std::to_string(id(2)) +
-            ", " + std::to_string(id(3)) + "\n";
-  }
+  const std::string rows = verification::skin_face_set(whole.mesh, sphere, 21);
   std::string faces = deck;
   const std::string by_part = "P, 1, P, 2, 0.0,";
   ASSERT_NE(faces.find(by_part), std::string::npos);

@@ -35,9 +35,9 @@
 #include <string>
 
 #include "abut/io/deck.hpp"
-#include "abut/mesh/skin.hpp"
 #include "abut/solver/static_solver.hpp"
 #include "ring_mesh.hpp"
+#include "skin_face_set.hpp"
 
 namespace abut {
 namespace {
@@ -176,15 +176,7 @@ TEST(StaticSmoothing, NodeToSurfaceRefusesIt) {
 
 // A *SET_FACE of the exterior faces of `parts` of the model of `deck`, as setid 7.
 std::string skin_face_set(const std::string& deck, const std::vector<std::int64_t>& parts) {
-  const Model m = read_deck_string(deck, "bearing.k");
-  std::ostringstream rows;
-  rows << "*SET_FACE\n7\n";
-  for (const SkinFace& f : exterior_faces(m.mesh, parts, false)) {
-    for (int a = 0; a < 4; ++a)
-      rows << (a ? ", " : "") << m.mesh.nodes.id[static_cast<std::size_t>(f.nodes[a])];
-    rows << "\n";
-  }
-  return rows.str();
+  return verification::skin_face_set(read_deck_string(deck, "bearing.k").mesh, parts, 7);
 }
 
 // The vertical drive reaction after the first increment (the run stops there).
