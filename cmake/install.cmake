@@ -20,7 +20,7 @@ if(ABUT_BUILD_SOLVER)
     include/abut/element include/abut/solver include/abut/io
     DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/abut)
   install(EXPORT abutSolverTargets NAMESPACE abut:: DESTINATION ${abut_package_dir})
-  install(FILES cmake/abutSuiteSparse.cmake DESTINATION ${abut_package_dir})
+  install(FILES cmake/abutSuiteSparse.cmake cmake/abutGmsh.cmake DESTINATION ${abut_package_dir})
   install(TARGETS abut RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()
 

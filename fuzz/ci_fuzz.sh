@@ -13,7 +13,7 @@ seed=${3:-1}
 work=$build/fuzz-ci
 rm -rf "$work"
 mkdir -p "$work"
-formats="keyword inp"
+formats="keyword inp msh"
 for format in $formats; do
   python3 "$root/fuzz/make_corpus.py" "$format" "$work/seed-$format"
   sh "$root/fuzz/make_dict.sh" "$format" > "$work/$format.dict"

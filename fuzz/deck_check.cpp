@@ -5,12 +5,17 @@
 
 #include "abut/core/error.hpp"
 #include "abut/io/deck.hpp"
+#include "abut/io/gmsh_mesh.hpp"
 #include "abut/io/run.hpp"
 
 namespace abut::fuzz {
 
 Outcome check_deck(std::string_view text, DeckFormat format, Stage stage) {
   try {
+    if (format == DeckFormat::msh) {
+      gmsh::read_msh(text, "fuzz.msh");
+      return {};
+    }
     const std::string deck(text);
     const DeckResult result = format == DeckFormat::inp
                                   ? read_inp_string_with_notes(deck, "fuzz.inp")
@@ -19,7 +24,10 @@ Outcome check_deck(std::string_view text, DeckFormat format, Stage stage) {
     check_model(result.model);
     return {};
   } catch (const InputError& e) {
-    const Verdict v = e.where().line > 0 ? Verdict::rejected_located : Verdict::rejected_unlocated;
+    const bool located =
+        e.where().line > 0 || (format == DeckFormat::msh && !e.where().file.empty() &&
+                               e.message().rfind("at byte ", 0) == 0);
+    const Verdict v = located ? Verdict::rejected_located : Verdict::rejected_unlocated;
     return {v, e.what()};
   } catch (const std::bad_alloc& e) {
     return {Verdict::too_large, e.what()};

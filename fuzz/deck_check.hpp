@@ -6,7 +6,7 @@
 
 namespace abut::fuzz {
 
-enum class DeckFormat { keyword, inp };  // IMPETUS-style .k, Abaqus/CalculiX .inp
+enum class DeckFormat { keyword, inp, msh };  // IMPETUS-style .k, Abaqus/CalculiX .inp, Gmsh .msh
 
 enum class Verdict {
   accepted,            // read and set up
@@ -26,7 +26,9 @@ struct Outcome {
 // explicit or static solver the deck asks for).
 enum class Stage { read, set_up };
 
-// Never throws. Deck text is read as if it were the file "fuzz.k" (or "fuzz.inp").
+// Never throws. Deck text is read as if it were the file "fuzz.k" (or "fuzz.inp"). A .msh file
+// is read by the Gmsh reader alone (gmsh_mesh.hpp), whatever the stage: its rejections are
+// located by line (ASCII) or byte offset (binary).
 Outcome check_deck(std::string_view text, DeckFormat format, Stage stage = Stage::set_up);
 
 const char* verdict_name(Verdict v);

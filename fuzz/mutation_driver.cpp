@@ -7,7 +7,8 @@
 // erasures, dictionary words, cross-over), with deck lines and numbers as the units.
 //
 //   deck_fuzz [--seconds S] [--runs N] [--seed R] [--timeout T] [--memory-mb M] [--out DIR]
-//             CORPUS...      (files or folders; .inp files are read as Abaqus/CalculiX input)
+//             CORPUS...      (files or folders; .inp files are read as Abaqus/CalculiX input,
+//                             .msh files by the Gmsh mesh reader)
 //
 // Exit code 0 when every mutant was accepted, rejected with file:line, too large for the memory
 // limit or slower than the time limit; 1 on any other finding. A timeout is listed with its input
@@ -68,7 +69,7 @@ struct Options {
 
 bool is_deck(const fs::path& p) {
   const std::string e = p.extension().string();
-  return e == ".k" || e == ".key" || e == ".inp";
+  return e == ".k" || e == ".key" || e == ".inp" || e == ".msh";
 }
 
 std::vector<Seed> load_corpus(const std::vector<fs::path>& roots) {
@@ -87,7 +88,10 @@ std::vector<Seed> load_corpus(const std::vector<fs::path>& roots) {
     std::ifstream in(f, std::ios::binary);
     std::stringstream s;
     s << in.rdbuf();
-    seeds.push_back({s.str(), f.extension() == ".inp" ? DeckFormat::inp : DeckFormat::keyword});
+    const DeckFormat format = f.extension() == ".inp"   ? DeckFormat::inp
+                              : f.extension() == ".msh" ? DeckFormat::msh
+                                                        : DeckFormat::keyword;
+    seeds.push_back({s.str(), format});
   }
   return seeds;
 }
@@ -312,7 +316,7 @@ int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
   const std::vector<Seed> seeds = load_corpus(o.corpus);
   if (seeds.empty()) {
-    std::cerr << "deck_fuzz: no decks (.k, .key, .inp) in the corpus given\n";
+    std::cerr << "deck_fuzz: no decks (.k, .key, .inp, .msh) in the corpus given\n";
     return 2;
   }
   setenv("OMP_NUM_THREADS", "1", 1);
@@ -338,7 +342,9 @@ int main(int argc, char** argv) {
     auto& f = findings[kind];
     if (f.first++ == 0) {
       const fs::path file = o.out / ("finding-" + std::to_string(findings.size()) +
-                                     (s.format == DeckFormat::inp ? ".inp" : ".k"));
+                                     (s.format == DeckFormat::inp   ? ".inp"
+                                      : s.format == DeckFormat::msh ? ".msh"
+                                                                    : ".k"));
       std::ofstream(file, std::ios::binary) << text;
       f.second = file.string();
     }

@@ -25,6 +25,7 @@ const std::map<std::string, KeywordReader, std::less<>>& supported() {
       {"*ELEMENT_SOLID_TET10", read_element_solid_tet10},
       {"*ELEMENT_SOLID_H20", read_element_solid_h20},
       {"*ELEMENT_SHELL", read_element_shell},
+      {"*INCLUDE_GMSH", read_include_gmsh},  // abut's own
       {"*COMPONENT_BOX", read_component_box},
       {"*COMPONENT_SPHERE", read_component_sphere},
       {"*COMPONENT_CYLINDER", read_component_cylinder},

@@ -94,6 +94,7 @@ DeckResult DeckReader::finish() {
                      "*STATIC steps for a static analysis)");
   }
   model.functions.resolve();
+  finish_gmsh();
   Mesh& mesh = model.mesh;
 
   // Element nodes.

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "memory_budget.hpp"
 
@@ -14,6 +15,13 @@ namespace deck {
 namespace {
 
 constexpr int kMaxIncludeDepth = 32;
+
+// The keyword of an element's rows, kept as a literal: element records are many and small.
+const char* keyword_name(const std::string& keyword) {
+  for (const char* name : {"*ELEMENT_SOLID", "*ELEMENT_SHELL", "$Elements", "*INCLUDE_GMSH"})
+    if (keyword == name) return name;
+  throw std::logic_error("element rows of an unexpected keyword " + keyword);
+}
 
 // Lines end at LF, CRLF or a lone CR (classic Mac OS), so that no CR reaches a message. A UTF-8
 // byte-order mark that some Windows editors write at the start of a file is not part of the deck.
@@ -156,6 +164,30 @@ void DeckReader::read_include(Block& block, int depth) {
   const std::string file_name = unquote(name_line.text);
   if (file_name.empty()) throw InputError(block.where(name_line), "expected a file name");
 
+  IncludeFrame child = placement(block);
+
+  const fs::path path = frame().directory / fs::path(file_name);
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) {
+    throw InputError(block.where(name_line), "cannot open included file '" + path.string() + "'");
+  }
+  const std::string canonical = fs::weakly_canonical(path, ec).string();
+  for (const auto& open : include_stack_) {
+    if (open == canonical) {
+      throw InputError(block.where(name_line),
+                       "'" + path.string() + "' includes itself (include cycle)");
+    }
+  }
+  if (depth + 1 > kMaxIncludeDepth) {
+    throw InputError(block.where(name_line),
+                     "includes nested deeper than " + std::to_string(kMaxIncludeDepth) + " levels");
+  }
+  child.directory = path.parent_path();
+  block.finish();
+  read_file(path, child, depth + 1);
+}
+
+IncludeFrame DeckReader::placement(Block& block) const {
   Vec3 scale{1, 1, 1}, from, to, x_axis{1, 0, 0}, y_axis{0, 1, 0};
   bool mirror = false;
   IdOffsets offsets;
@@ -200,29 +232,11 @@ void DeckReader::read_include(Block& block, int depth) {
     mirror = r->flag(6);
   }
 
-  const fs::path path = frame().directory / fs::path(file_name);
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) {
-    throw InputError(block.where(name_line), "cannot open included file '" + path.string() + "'");
-  }
-  const std::string canonical = fs::weakly_canonical(path, ec).string();
-  for (const auto& open : include_stack_) {
-    if (open == canonical) {
-      throw InputError(block.where(name_line),
-                       "'" + path.string() + "' includes itself (include cycle)");
-    }
-  }
-  if (depth + 1 > kMaxIncludeDepth) {
-    throw InputError(block.where(name_line),
-                     "includes nested deeper than " + std::to_string(kMaxIncludeDepth) + " levels");
-  }
   IncludeFrame child;
   child.transform =
       frame().transform.after(include_transform(scale, from, to, x_axis, y_axis, mirror));
   child.offsets = frame().offsets + offsets;
-  child.directory = path.parent_path();
-  block.finish();
-  read_file(path, child, depth + 1);
+  return child;
 }
 
 std::int64_t DeckReader::offset_id(const Row& r, std::size_t i, std::int64_t id,
@@ -348,7 +362,8 @@ void DeckReader::add_element(std::int64_t id, std::int64_t part,
     throw InputError(where, "element " + std::to_string(id) + " is already defined");
   }
   Mesh& mesh = model.mesh;
-  element_nodes.push_back({mesh.hex_count(), node_ids, files.size() - 1, where.line});
+  element_nodes.push_back({mesh.hex_count(), node_ids, file_index(where.file), where.line,
+                           keyword_name(where.keyword)});
   Hex8 hex;
   hex.fill(-1);
   mesh.hexes.push_back(hex);
@@ -358,7 +373,7 @@ void DeckReader::add_element(std::int64_t id, std::int64_t part,
 }
 
 SourceLocation DeckReader::element_where(const ElementNodes& e, const std::string& field) const {
-  return {files[e.file], e.line, "*ELEMENT_SOLID", field};
+  return {files[e.file], e.line, e.keyword, field};
 }
 
 void DeckReader::add_cell(std::int64_t id, std::int64_t part, CellType type,
@@ -375,8 +390,8 @@ void DeckReader::add_cell(std::int64_t id, std::int64_t part, CellType type,
     if (b.type == type) cell = b.size();
   const std::vector<std::int32_t> unresolved(node_ids.size(), -1);
   mesh.add_cell(type, id, part, unresolved);
-  cell_nodes.push_back(
-      {type, cell, std::move(node_ids), keyword, std::move(fields), files.size() - 1, where.line});
+  cell_nodes.push_back({type, cell, std::move(node_ids), keyword, std::move(fields),
+                        file_index(where.file), where.line});
 }
 
 SourceLocation DeckReader::cell_where(const CellNodes& e, const std::string& field) const {
@@ -390,12 +405,13 @@ void DeckReader::add_shell(std::int64_t id, std::int64_t part,
     throw InputError(where, "shell " + std::to_string(id) + " is already defined");
   }
   Mesh& mesh = model.mesh;
-  shell_nodes.push_back({mesh.shell_count(), node_ids, files.size() - 1, where.line});
+  shell_nodes.push_back({mesh.shell_count(), node_ids, file_index(where.file), where.line,
+                         keyword_name(where.keyword)});
   mesh.add_shell(id, part, {-1, -1, -1, -1});
 }
 
 SourceLocation DeckReader::shell_where(const ShellNodes& e, const std::string& field) const {
-  return {files[e.file], e.line, "*ELEMENT_SHELL", field};
+  return {files[e.file], e.line, e.keyword, field};
 }
 
 void DeckReader::claim_id(const std::string& kind, std::int64_t id, const SourceLocation& where) {
@@ -404,6 +420,13 @@ void DeckReader::claim_id(const std::string& kind, std::int64_t id, const Source
     throw InputError(where, kind + " " + std::to_string(id) + " is already defined at " +
                                 it->second.file + ":" + std::to_string(it->second.line));
   }
+}
+
+std::size_t DeckReader::file_index(const std::string& name) {
+  for (std::size_t k = files.size(); k-- > 0;)
+    if (files[k] == name) return k;
+  files.push_back(name);
+  return files.size() - 1;
 }
 
 std::int32_t DeckReader::node_index(std::int64_t id) const {

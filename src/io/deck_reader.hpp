@@ -75,6 +75,7 @@ struct ElementNodes {
   std::array<std::int64_t, 8> node_ids{};
   std::size_t file = 0;  // index into DeckReader::files
   std::size_t line = 0;
+  const char* keyword = "*ELEMENT_SOLID";  // "$Elements" for a Gmsh mesh
 };
 
 // Solid cells other than hexahedra (*ELEMENT_SOLID in a degenerate form, *ELEMENT_SOLID_TET10,
@@ -95,6 +96,7 @@ struct ShellNodes {
   std::array<std::int64_t, 4> node_ids{};
   std::size_t file = 0;
   std::size_t line = 0;
+  const char* keyword = "*ELEMENT_SHELL";
 };
 
 // The command that created hexes [first, end) and shells [first_shell, end_shell), to name it
@@ -134,6 +136,23 @@ struct PendingFaceSet {
     SourceLocation where;                 // the row
   };
   std::vector<Face> faces;
+};
+
+// A physical group of an *INCLUDE_GMSH mesh that names a part: a physical volume (its solids),
+// or a physical surface whose triangles and quadrilaterals become shells when the deck gives the
+// part a thickness (else the surface is only a face set). Checked and completed in finish_gmsh.
+struct GmshPart {
+  std::int64_t part = 0;
+  int dim = 3;
+  std::string group;     // "physical volume 2 \"ball\" of ball.msh": how messages name it
+  SourceLocation where;  // the *INCLUDE_GMSH file name
+  struct Shell {
+    std::int64_t id = 0;
+    std::array<std::int64_t, 4> nodes{};  // a triangle repeats its third node
+    bool linear = true;                   // tri3 or quad4: the only shells abut has
+    SourceLocation where;                 // the element in the .msh file
+  };
+  std::vector<Shell> shells;
 };
 
 struct PendingOrder {
@@ -191,6 +210,9 @@ class DeckReader {
   DeckResult finish();
 
   const IncludeFrame& frame() const { return frames_.back(); }
+  // The optional rows of *INCLUDE after the file name (scale factors and id offsets, translation,
+  // rotation and mirror), as the frame of the included content; its directory is left empty.
+  IncludeFrame placement(Block& block) const;
 
   // Ids read from a row with the current include offsets applied; an id that the offset pushes
   // past the largest integer is an InputError at the field.
@@ -230,6 +252,7 @@ class DeckReader {
   // Adds one *NODE; duplicate ids are an error.
   void add_node(std::int64_t id, const Vec3& p, std::uint8_t fixed, const SourceLocation& where);
   // Adds one hex of *ELEMENT_SOLID (nodes resolved later).
+  // `where.keyword` names the rows in messages about the element.
   void add_element(std::int64_t id, std::int64_t part, const std::array<std::int64_t, 8>& node_ids,
                    const SourceLocation& where);
   SourceLocation element_where(const ElementNodes& e, const std::string& field) const;
@@ -269,8 +292,14 @@ class DeckReader {
   // its *ELEMENT_SOLID row or generator keyword naming the element and node ids. After the merge
   // (which may flatten a hex) and before refinement (which needs sound hexes).
   void check_element_volumes() const;
+  // keyword_gmsh.cpp: the parts of *INCLUDE_GMSH meshes exist (a located error naming the
+  // physical group otherwise), and their physical surfaces with a shell thickness become shells.
+  // First in finish(), before shells and parts are resolved.
+  void finish_gmsh();
   // Records an id of a kind (e.g. "component"); a second use is an error naming the first.
   void claim_id(const std::string& kind, std::int64_t id, const SourceLocation& where);
+  // The index of a file name in `files` (added when new).
+  std::size_t file_index(const std::string& name);
   // Index of a node id, or -1.
   std::int32_t node_index(std::int64_t id) const;
 
@@ -303,6 +332,7 @@ class DeckReader {
   std::vector<MeshSource> mesh_sources;
   std::vector<PendingNodeSet> node_sets;
   std::vector<PendingFaceSet> face_sets;
+  std::vector<GmshPart> gmsh_parts;
   std::vector<std::pair<std::int64_t, SourceLocation>> part_set_members;  // (part id, where)
   std::vector<std::pair<std::int64_t, SourceLocation>> geometry_parts;    // *GEOMETRY_PART pids
   std::vector<PendingOrder> orders;
@@ -379,6 +409,7 @@ void read_static(DeckReader&, Block&);      // keyword_static.cpp
 void read_set_node(DeckReader&, Block&);
 void read_set_part(DeckReader&, Block&);
 void read_set_face(DeckReader&, Block&);
+void read_include_gmsh(DeckReader&, Block&);
 void read_initial_velocity(DeckReader&, Block&);
 void read_bc_motion(DeckReader&, Block&);
 void read_load_gravity(DeckReader&, Block&);

@@ -186,5 +186,21 @@ TEST(DeckExamples, HotDiePress) {
   }
 }
 
+// examples/gmsh/can_drop.k: the can of can.geo, meshed by Gmsh at read time with 6 mm
+// tetrahedra, is part 1 over the generated plate (10 x 10 x 2 hexahedra).
+TEST(DeckExamples, GmshCanDrop) {
+  const DeckResult r = read_deck_with_notes(example("gmsh/can_drop.k"));
+  const Model& m = r.model;
+  ASSERT_EQ(m.mesh.cells.size(), 1u);
+  EXPECT_EQ(m.mesh.cells[0].type, CellType::tet4);
+  EXPECT_GT(m.mesh.cells[0].size(), 1000u);
+  EXPECT_EQ(std::count(m.mesh.hex_part.begin(), m.mesh.hex_part.end(), 2), 200);
+  // The lowest point of the can is 0.5 mm above the plate (can.geo).
+  double lowest = 1e9;
+  for (const std::int32_t n : m.nodes_of({EntityType::Part, 1, {}}))
+    lowest = std::min(lowest, m.mesh.nodes.z[static_cast<std::size_t>(n)]);
+  EXPECT_NEAR(lowest, 0.5, 1e-9);
+}
+
 }  // namespace
 }  // namespace abut
