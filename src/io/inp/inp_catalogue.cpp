@@ -16,6 +16,7 @@ const std::map<std::string, KeywordEntry>& supported() {
     const KeywordEntry entries[] = {
         {"*HEADING", read_heading, Scope::Model},
         {"*NODE", read_node, Scope::Model},
+        {"*INCLUDE", read_gmsh_include, Scope::Model},  // of a Gmsh mesh (inp_lines.cpp)
         {"*ELEMENT", read_element, Scope::Model},
         {"*NSET", read_nset, Scope::Model},
         {"*ELSET", read_elset, Scope::Model},

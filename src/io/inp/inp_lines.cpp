@@ -4,6 +4,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "abut/io/gmsh_mesh.hpp"
+
 namespace abut::inp {
 namespace fs = std::filesystem;
 
@@ -181,11 +183,31 @@ void InpLines::read_lines(const std::string& text, std::uint32_t file, const fs:
 void InpLines::include(const Card& card, const fs::path& directory, int depth) {
   const SourceLocation here{files_[card.file], card.line, "*INCLUDE", ""};
   std::string input;
+  for (const Parameter& p : card.parameters)
+    if (p.key == "INPUT") input = p.value;
+  // A Gmsh mesh, or a file Gmsh meshes: a card of its own for the reader (inp_gmsh.cpp), with
+  // the path resolved and the file listed for the locations of its nodes and elements.
+  if (!input.empty() && gmsh::gmsh_file_kind(input)) {
+    const fs::path path = directory / fs::path(input);
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec))
+      throw InputError(SourceLocation{files_[card.file], card.line, "*INCLUDE", "INPUT"},
+                       "cannot open the included file '" + path.string() +
+                           "' (paths are relative to the including file)");
+    flush();
+    Card gmsh_card = card;
+    for (Parameter& p : gmsh_card.parameters)
+      if (p.key == "INPUT") p.value = path.string();
+    files_.push_back(path.string());
+    current_ = std::move(gmsh_card);
+    has_current_ = true;
+    flush();
+    return;
+  }
   for (const Parameter& p : card.parameters) {
     if (p.key != "INPUT") {
       throw InputError(here, "unknown parameter " + p.name + " (*INCLUDE takes INPUT=file)");
     }
-    input = p.value;
   }
   if (input.empty()) {
     throw InputError(here, "INPUT=file is missing: give the file to include");

@@ -25,6 +25,12 @@ void Reader::note(const Card& c, const std::string& message) {
   notes.push_back(at(loc(c)) + ": " + message);
 }
 
+std::uint32_t Reader::file_index(const std::string& name) const {
+  for (std::size_t k = files_.size(); k-- > 0;)
+    if (files_[k] == name) return static_cast<std::uint32_t>(k);
+  return 0;
+}
+
 IdSet& Reader::node_set(const std::string& name, Loc at) {
   const auto [it, inserted] = node_set_names.emplace(upper_name(name), node_sets.size());
   if (inserted) node_sets.push_back({name, {}, {}, at, {}, 0});

@@ -198,6 +198,8 @@ class Reader {
   SourceLocation where(const Card& c, const std::string& field = "") const;
   SourceLocation where(Loc at, const std::string& keyword, const std::string& field = "") const;
   std::string at(Loc l) const;  // "file:line"
+  // The index of a file read (the last of that name).
+  std::uint32_t file_index(const std::string& name) const;
   void note(const Card& c, const std::string& message);
 
   Model model;
@@ -338,6 +340,8 @@ void read_node_print(Reader&, const Card&);
 void read_el_print(Reader&, const Card&);
 void read_contact_print(Reader&, const Card&);
 void read_controls(Reader&, const Card&);
+// inp_gmsh.cpp: *INCLUDE of a Gmsh mesh or of a file Gmsh meshes (InpLines hands it on).
+void read_gmsh_include(Reader&, const Card&);
 
 // inp_catalogue.cpp: what each keyword is.
 enum class Scope { Model, Step, Either };
