@@ -40,7 +40,8 @@ bench: build
 SANITIZE_DIR ?= build-sanitize
 LLVM_BIN ?= /usr/lib/llvm-14/bin
 SANITIZE_ENV := ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:external_symbolizer_path=$(LLVM_BIN)/llvm-symbolizer \
-  UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1:external_symbolizer_path=$(LLVM_BIN)/llvm-symbolizer
+  UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1:external_symbolizer_path=$(LLVM_BIN)/llvm-symbolizer \
+  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp
 # Left out of `make ci-sanitize` (`make sanitize` runs them): the verification runs that take more
 # than 3 s each under the sanitizers (80 of them: 13 of the suite's 15 minutes on one core, among
 # them TaylorBar, SeedRubberSphere, TubeCrush and the 48 cases of Matrix/StaticFriction; since

@@ -223,6 +223,22 @@ Physical Volume(1) = {out[1]};
   EXPECT_NEAR(volume, 1.0, 1e-12);  // half of 1 x 1, 2 tall
 }
 
+// h is the element size: a unit cube meshed at h has about 6 / h^3 tetrahedra (a cube of side h
+// cut into 6), whatever sizes Gmsh would take by itself (about a tenth of the cube). The estimate
+// counts the inside: it holds from 4 elements across (at 2 across, h = 0.5, the boundary's
+// triangles set the count: 101 for 48).
+TEST_F(DeckGmsh, TheMeshSizeIsTheElementSize) {
+  write("cube.geo", "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\n");
+  for (const double h : {0.25, 0.125}) {
+    const DeckResult r = read("*TIME\n1.0\n*INCLUDE_GMSH\ncube.geo\n" + std::to_string(h) + "\n" +
+                              kSteel + "*PART\n1, 1\n");
+    const double expected = 6.0 / (h * h * h);
+    const auto tets = static_cast<double>(r.model.mesh.solid_count());
+    EXPECT_GT(tets, 0.5 * expected) << h;
+    EXPECT_LT(tets, 2.0 * expected) << h;
+  }
+}
+
 TEST_F(DeckGmsh, ErrorsAreLocated) {
   // A physical volume without its *PART: at the *INCLUDE_GMSH line, naming the group.
   InputError e = error("*TIME\n1.0\n*INCLUDE_GMSH\ncube.msh\n" + kSteel + "*PART\n2, 1\n");

@@ -149,6 +149,9 @@ MshMesh mesh_cad(const std::filesystem::path& path, const CadMeshing& meshing) {
     if (!GmshSession::errors().empty()) throw std::runtime_error("");
     if (meshing.order > 0) ::gmsh::option::setNumber("Mesh.ElementOrder", meshing.order);
     if (meshing.size > 0.0) {
+      // h is the element size: Gmsh's sizes at the geometry's points (a .geo's lc, the
+      // defaults of OpenCASCADE shapes, about 1/10 of their extent) would otherwise win below it.
+      ::gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
       ::gmsh::option::setNumber("Mesh.MeshSizeMax", meshing.size);
       if (meshing.check_size) {
         // A tetrahedral mesh has about a fifth as many vertices as tetrahedra; order 2 adds
