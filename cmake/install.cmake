@@ -17,7 +17,7 @@ if(ABUT_BUILD_SOLVER)
   install(TARGETS ${solver_layers} EXPORT abutSolverTargets
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
   install(DIRECTORY include/abut/linalg include/abut/mesh include/abut/material
-    include/abut/element include/abut/solver include/abut/io
+    include/abut/element include/abut/model include/abut/solver include/abut/io
     DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/abut)
   install(EXPORT abutSolverTargets NAMESPACE abut:: DESTINATION ${abut_package_dir})
   install(FILES cmake/abutSuiteSparse.cmake cmake/abutGmsh.cmake DESTINATION ${abut_package_dir})

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "abut/solver/model.hpp"
+#include "abut/model/model.hpp"
 
 namespace abut {
 

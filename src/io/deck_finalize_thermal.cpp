@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "abut/solver/entity_name.hpp"
+#include "abut/model/entity_name.hpp"
 #include "abut/solver/heat.hpp"
 #include "abut/solver/pressure_loads.hpp"
 #include "deck_reader.hpp"

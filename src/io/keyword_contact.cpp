@@ -10,7 +10,7 @@ void read_contact(DeckReader& d, Block& b) {
   c.id = d.other_id(r1, 0);
   d.claim_id("contact", c.id, r1.where(0));
   c.where = r1.where();
-  const std::int64_t level = r1.integer_or(1, 2);
+  const std::int64_t level = r1.integer_or(1, c.accuracy_level);
   r1.require(level >= 1, 1, "expected an accuracy level >= 1 (1 low, 2 standard, > 2 high)");
   c.accuracy_level = static_cast<int>(level);
   c.accuracy_edge = r1.flag(2);

@@ -11,7 +11,7 @@
 #include <filesystem>
 
 #include "abut/core/state_archive.hpp"
-#include "abut/solver/model.hpp"
+#include "abut/model/model.hpp"
 
 namespace abut::restart_file {
 

@@ -4,7 +4,7 @@
 // row per node, element point or contact point), so that one script reads both codes' output.
 #include <ostream>
 
-#include "abut/solver/model.hpp"
+#include "abut/model/model.hpp"
 #include "abut/solver/static_solver.hpp"
 
 namespace abut {

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "abut/solver/model.hpp"
+#include "abut/model/model.hpp"
 
 namespace abut {
 

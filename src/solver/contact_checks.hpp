@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "abut/model/model.hpp"
 #include "abut/solver/contact_report.hpp"
-#include "abut/solver/model.hpp"
 
 namespace abut {
 

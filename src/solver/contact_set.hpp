@@ -10,8 +10,8 @@
 #include "abut/contact/removed_nodes.hpp"
 #include "abut/contact/tool_contact.hpp"
 #include "abut/mesh/skin.hpp"
+#include "abut/model/model.hpp"
 #include "abut/solver/contact_report.hpp"
-#include "abut/solver/model.hpp"
 #include "tool_motion.hpp"
 
 namespace abut {

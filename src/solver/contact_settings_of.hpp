@@ -4,8 +4,8 @@
 #include <vector>
 
 #include "abut/contact/settings.hpp"
+#include "abut/model/model.hpp"
 #include "abut/solver/contact_report.hpp"
-#include "abut/solver/model.hpp"
 
 namespace abut {
 

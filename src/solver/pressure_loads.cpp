@@ -5,7 +5,7 @@
 
 #include "abut/core/error.hpp"
 #include "abut/mesh/skin.hpp"
-#include "abut/solver/entity_name.hpp"
+#include "abut/model/entity_name.hpp"
 
 namespace abut {
 namespace {

@@ -13,7 +13,7 @@
 
 #include "abut/contact/removed_nodes.hpp"
 #include "abut/core/vec3.hpp"
-#include "abut/solver/model.hpp"
+#include "abut/model/model.hpp"
 
 namespace abut {
 

@@ -21,7 +21,7 @@
 #include <span>
 #include <vector>
 
-#include "abut/solver/model.hpp"
+#include "abut/model/model.hpp"
 #include "boundary_conditions.hpp"
 #include "tie_search.hpp"
 

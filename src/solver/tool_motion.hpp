@@ -3,7 +3,7 @@
 // contact library takes (analytic_tool.hpp).
 #include "abut/contact/analytic_tool.hpp"
 #include "abut/core/state_archive.hpp"
-#include "abut/solver/model.hpp"
+#include "abut/model/model.hpp"
 
 namespace abut {
 

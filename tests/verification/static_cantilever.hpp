@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "abut/solver/model.hpp"
+#include "abut/model/model.hpp"
 #include "abut/solver/static_solver.hpp"
 
 namespace abut::cantilever {

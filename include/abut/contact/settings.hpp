@@ -113,9 +113,22 @@ struct ThermalContactSettings {
   bool any() const { return conductance.has_value() || friction_heat.has_value(); }
 };
 
+// The defaults of a contact, each defined here once: the explicit settings below, the static
+// contact (static_contact.hpp) and the model's contacts (abut/model/model.hpp) take them from here.
+// Values: IMPETUS *CONTACT (seed 000): accuracy level 2, xi = 0.1, alpha_edge = 20 degrees, active
+// for all time.
+namespace contact_defaults {
+inline constexpr int kAccuracyLevel = 2;
+inline constexpr double kDamping = 0.1;     // fraction of critical damping
+inline constexpr double kEdgeAngle = 20.0;  // degrees
+inline constexpr double kBeginTime = 0.0;
+inline constexpr double kEndTime = 1e20;
+}  // namespace contact_defaults
+
 struct ContactSettings {
   Discretisation discretisation = Discretisation::SurfaceToSurface;
-  int accuracy_level = 2;      // S2S: 1 centre point, 2: 2x2 Gauss, >2: 3x3 Gauss per facet
+  int accuracy_level = contact_defaults::kAccuracyLevel;  // S2S: 1 centre point, 2: 2x2 Gauss, >2:
+                                                          // 3x3 Gauss per facet
   bool accuracy_edge = false;  // extra integration points in strips along sharp edges
   bool one_way = false;        // only surface 1's points act (else both sides, weight 1/2 each)
   // Nodes that are no secondary point on either side (Radioss Irem_i2 = 1; removed_nodes.hpp).
@@ -133,7 +146,8 @@ struct ContactSettings {
   EdgeSettings edges;               // edge-to-edge contact
   ErosionSettings erosion;
   std::optional<Adhesion> adhesion;  // Radioss IVIS2 = -1
-  double damping = 0.1;              // xi: fraction of critical damping of each contact spring
+  double damping =
+      contact_defaults::kDamping;  // xi: fraction of critical damping of each contact spring
 
   // Tangential direction.
   TangentialLaw tangential_law = Frictionless{};
@@ -151,15 +165,15 @@ struct ContactSettings {
   std::vector<PairScale> pair_scales;
 
   // Time window, regions, initial state, edges, wear.
-  double begin_time = 0.0;         // t_beg
-  double end_time = 1e20;          // t_end
+  double begin_time = contact_defaults::kBeginTime;  // t_beg
+  double end_time = contact_defaults::kEndTime;      // t_end
   RegionPredicate initial_region;  // gid_0: facets whose centroid is outside at t=0 never contact
   RegionPredicate moving_region;   // gid_1: facets whose centroid leaves it are deactivated
   InitialPenetration initial_penetration = InitialPenetration::Offset;
   double initial_offset = 0.0;        // delta0_offset
   std::optional<double> initial_max;  // delta0_max; default 4% of the point's element thickness
   double edge_tolerance = 0.0;        // delta_edge: accepted overshoot beyond sharp edges
-  double edge_angle = 20.0;           // alpha_edge [degrees]
+  double edge_angle = contact_defaults::kEdgeAngle;  // alpha_edge [degrees]
   WearRateFunction wear_rate1, wear_rate2;
   ThermalContactSettings thermal;
   // Bytes the contact points may take (their count is known before they are made); more is a

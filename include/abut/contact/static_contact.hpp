@@ -67,7 +67,8 @@ struct StaticContactSettings {
   // of the side face), or the sum of its shares of every face around it (EveryFace: CalculiX's
   // rule for a nodal slave surface, *SURFACE TYPE=NODE, whose faces are every face at a node).
   enum class NodeArea { Facing, EveryFace } node_area = NodeArea::Facing;
-  int accuracy_level = 2;  // Gauss points per direction of a secondary facet: 1, 2 or 3 levels
+  int accuracy_level = contact_defaults::kAccuracyLevel;  // Gauss points per direction of a
+                                                          // secondary facet: 1, 2 or 3 levels
   NormalLaw normal = LinearPenalty{};
   double penalty = 0.0;  // pfac [stress / length], passed to the normal law
   // Its limits per unit area (normal force p, area 1), at the sliding speed |slip| / dt over the
@@ -93,7 +94,8 @@ struct StaticContactSettings {
   // OptiStruct GPAD (seed 003): the surfaces touch at this distance [length] (a layer on the main
   // surface); the search reaches this much further out.
   double padding = 0.0;
-  double edge_angle = 20.0;  // degrees: edges sharper than this end the surface (narrow_phase.hpp)
+  double edge_angle = contact_defaults::kEdgeAngle;  // degrees: edges sharper than this end the
+                                                     // surface (narrow_phase.hpp)
   // Share of this pass in its contact: 1, or 1/2 for each of the two passes of a symmetric
   // contact (as the explicit interface weighs them); scales the points' areas.
   double weight = 1.0;

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "abut/solver/model.hpp"
+#include "abut/model/model.hpp"
 
 namespace abut {
 

@@ -13,7 +13,7 @@
 #include "abut/contact/surface.hpp"
 #include "abut/mesh/mesh.hpp"
 #include "abut/mesh/skin.hpp"
-#include "abut/solver/model.hpp"
+#include "abut/model/model.hpp"
 
 namespace abut {
 

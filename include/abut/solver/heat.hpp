@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "abut/contact/thermal_contact_element.hpp"
-#include "abut/solver/model.hpp"
+#include "abut/model/model.hpp"
 
 namespace abut {
 

@@ -12,7 +12,7 @@
 
 #include "abut/core/vec3.hpp"
 #include "abut/mesh/mesh.hpp"
-#include "abut/solver/model.hpp"
+#include "abut/model/model.hpp"
 
 namespace abut {
 

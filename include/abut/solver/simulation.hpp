@@ -17,9 +17,9 @@
 #include "abut/element/shell_block.hpp"
 #include "abut/element/solid_block.hpp"
 #include "abut/element/solid_cell_block.hpp"
+#include "abut/model/model.hpp"
 #include "abut/solver/contact_report.hpp"
 #include "abut/solver/heat.hpp"
-#include "abut/solver/model.hpp"
 
 namespace abut {
 

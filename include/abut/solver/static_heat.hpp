@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "abut/contact/laws/thermal.hpp"
+#include "abut/model/model.hpp"
 #include "abut/solver/heat.hpp"
-#include "abut/solver/model.hpp"
 #include "abut/solver/static_solver.hpp"
 
 namespace abut {

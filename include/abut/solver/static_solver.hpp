@@ -11,7 +11,7 @@
 
 #include "abut/contact/static_contact.hpp"
 #include "abut/core/error.hpp"
-#include "abut/solver/model.hpp"
+#include "abut/model/model.hpp"
 
 namespace abut {
 

@@ -14,7 +14,7 @@
 #include <span>
 #include <vector>
 
-#include "abut/solver/model_static.hpp"
+#include "abut/model/model_static.hpp"
 
 namespace abut::detail {
 

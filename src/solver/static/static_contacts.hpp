@@ -9,7 +9,7 @@
 
 #include "abut/contact/removed_nodes.hpp"
 #include "abut/contact/static_contact.hpp"
-#include "abut/solver/model.hpp"
+#include "abut/model/model.hpp"
 
 namespace abut::detail {
 

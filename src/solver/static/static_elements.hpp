@@ -16,7 +16,7 @@
 #include "abut/element/hex8_full.hpp"
 #include "abut/material/j2_strain_point.hpp"
 #include "abut/mesh/shape_functions.hpp"
-#include "abut/solver/model.hpp"
+#include "abut/model/model.hpp"
 
 namespace abut::detail {
 

@@ -6,7 +6,7 @@
 // residuals, plus whatever the conduction or a contact would create (nothing, to round-off).
 #include <span>
 
-#include "abut/solver/model.hpp"
+#include "abut/model/model.hpp"
 #include "abut/solver/static_heat.hpp"
 
 namespace abut {

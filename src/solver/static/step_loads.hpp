@@ -11,7 +11,7 @@
 #include <span>
 #include <vector>
 
-#include "abut/solver/model.hpp"
+#include "abut/model/model.hpp"
 
 namespace abut::detail {
 

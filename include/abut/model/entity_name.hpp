@@ -3,7 +3,7 @@
 // "part 3", "node set 12", "the region of geometry 5", "the model" for ALL.
 #include <string>
 
-#include "abut/solver/model.hpp"
+#include "abut/model/model.hpp"
 
 namespace abut {
 

@@ -1,4 +1,4 @@
-#include "abut/solver/model.hpp"
+#include "abut/model/model.hpp"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "abut/solver/entity_name.hpp"
+#include "abut/model/entity_name.hpp"
 
 namespace abut {
 

@@ -17,8 +17,8 @@
 #include "abut/material/material.hpp"
 #include "abut/mesh/geometry.hpp"
 #include "abut/mesh/mesh.hpp"
-#include "abut/solver/model_static.hpp"
-#include "abut/solver/model_thermal.hpp"
+#include "abut/model/model_static.hpp"
+#include "abut/model/model_thermal.hpp"
 
 namespace abut {
 
@@ -156,23 +156,23 @@ struct Sensor {
 struct ContactSpec {
   std::int64_t id = 0;
   std::string title;
-  int accuracy_level = 2;
+  int accuracy_level = contact_defaults::kAccuracyLevel;
   bool accuracy_edge = false;
   EntityRef surface1, surface2;
   double friction = 0.0;          // used when friction_function is invalid
   FunctionRef friction_function;  // mu = fcn(fid)
   std::optional<double> penalty;  // pfac; automatic when empty
-  double begin_time = 0.0;
-  double end_time = 1e20;
+  double begin_time = contact_defaults::kBeginTime;
+  double end_time = contact_defaults::kEndTime;
   bool merge = false;
-  double damping = 0.1;                          // fraction of critical damping
-  std::optional<std::int64_t> initial_geometry;  // gid_0
-  std::optional<std::int64_t> moving_geometry;   // gid_1
-  double initial_offset = 0.0;                   // delta0_offset
-  std::optional<double> initial_max;             // delta0_max (default 4% of element thickness)
-  double edge_tolerance = 0.0;                   // delta_edge
-  FunctionRef wear1, wear2, thermal;             // fid_wear1, fid_wear2, fid_thermal
-  double edge_angle = 20.0;                      // alpha_edge [degrees]
+  double damping = contact_defaults::kDamping;       // fraction of critical damping
+  std::optional<std::int64_t> initial_geometry;      // gid_0
+  std::optional<std::int64_t> moving_geometry;       // gid_1
+  double initial_offset = 0.0;                       // delta0_offset
+  std::optional<double> initial_max;                 // delta0_max (default 4% of element thickness)
+  double edge_tolerance = 0.0;                       // delta_edge
+  FunctionRef wear1, wear2, thermal;                 // fid_wear1, fid_wear2, fid_thermal
+  double edge_angle = contact_defaults::kEdgeAngle;  // alpha_edge [degrees]
   bool one_way = false;
   bool no_internal = false;
   std::optional<double> stick_stress;  // sigma_stick
@@ -345,7 +345,7 @@ struct TieSpec {
   EntityRef surface1, surface2;
   bool merge = false;
   std::optional<double> detection_depth;  // *CONTACT_NORMAL depth (empty: the contact default)
-  double edge_tolerance = 0.0, edge_angle = 20.0;
+  double edge_tolerance = 0.0, edge_angle = contact_defaults::kEdgeAngle;
   SourceLocation where;        // the *CONTACT
   SourceLocation exact_where;  // the field that asks for the exact tie
 };
