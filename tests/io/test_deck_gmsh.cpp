@@ -3,16 +3,15 @@
 // geometry, and the errors, each located.
 #include <gmsh.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "abut/mesh/shape_functions.hpp"
 #include "abut/mesh/skin.hpp"
 #include "test_deck_helpers.hpp"
+#include "test_files.hpp"
 
 namespace abut {
 namespace {
@@ -22,14 +21,14 @@ namespace fs = std::filesystem;
 class DeckGmsh : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("abut_deck_gmsh_" + std::to_string(::getpid()));
+    dir_ = testing::fresh_dir("abut_deck_gmsh");
     fs::create_directories(dir_);
     fs::copy_file(std::string(ABUT_SOURCE_DIR) + "/tests/io/decks/cube.msh", dir_ / "cube.msh");
   }
   void TearDown() override { fs::remove_all(dir_); }
 
   std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(dir_ / name) << text;
+    testing::write_text(dir_ / name, text);
     return (dir_ / name).string();
   }
   DeckResult read(const std::string& deck) const {
@@ -264,8 +263,7 @@ TEST_F(DeckGmsh, ErrorsAreLocated) {
   e = error("*TIME\n1.0\n*INCLUDE_GMSH\nnone.msh\n");
   EXPECT_NE(e.message().find("cannot open"), std::string::npos) << e.what();
   // An error inside the .msh file: its own file and line.
-  std::ifstream in(dir_ / "cube.msh");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text = testing::file_text(dir_ / "cube.msh");
   text.replace(text.find("2 1 4 3 2"), 9, "2 1 4 3 9");
   write("bad.msh", text);
   e = error("*TIME\n1.0\n*INCLUDE_GMSH\nbad.msh\n");

@@ -4,13 +4,12 @@
 // the .msh, node for node and element for element.
 #include <gmsh.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "abut/io/deck.hpp"
+#include "test_files.hpp"
 
 namespace abut {
 namespace {
@@ -20,12 +19,12 @@ namespace fs = std::filesystem;
 class InpGmsh : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("abut_inp_gmsh_" + std::to_string(::getpid()));
+    dir_ = testing::fresh_dir("abut_inp_gmsh");
     fs::create_directories(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
   std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(dir_ / name) << text;
+    testing::write_text(dir_ / name, text);
     return (dir_ / name).string();
   }
   // Meshes `geo` with Gmsh's library and saves the mesh as each of `outputs` (by extension).

@@ -8,12 +8,12 @@
 
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
 #include "abut/core/error.hpp"
 #include "abut/io/gmsh_mesh.hpp"
+#include "test_files.hpp"
 
 namespace abut {
 namespace {
@@ -198,16 +198,15 @@ TEST(MshReader, NodeOrdersMatchGmshsReferenceCoordinates) {
 class GmshWritten : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("abut_msh_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-    std::ofstream(dir_ / "can.geo") << R"(SetFactory("OpenCASCADE");
+    dir_ = testing::fresh_dir("abut_msh");
+    testing::write_text(dir_ / "can.geo", R"(SetFactory("OpenCASCADE");
 Cylinder(1) = {0, 0, 0, 0, 0, 0.02, 0.01};
 Physical Volume("can", 7) = {1};
 Physical Surface("bottom", 8) = {3};
 Physical Curve("rim", 9) = {3};
 Mesh.MeshSizeMax = 0.005;
 Mesh.ElementOrder = 2;
-)";
+)");
   }
   void TearDown() override { fs::remove_all(dir_); }
 
@@ -291,8 +290,7 @@ TEST_F(GmshWritten, AsciiAndBinaryFilesReadBackToGmshsMesh) {
 
 TEST_F(GmshWritten, DamageToABinaryFileIsLocatedByByte) {
   const std::string path = write(true);
-  std::ifstream in(path, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string bytes = testing::file_text(path);
   // The integer 1 after the version line, written in the other byte order.
   const std::size_t one = bytes.find("4.1 1 8\n") + 8;
   std::string swapped = bytes;

@@ -192,11 +192,9 @@ class Cursor {
   std::size_t line_ = 0;  // line breaks passed: the cursor is on line line_ + 1
 };
 
-MshPlace here(Cursor& c) { return c.next_place(); }
-
 void read_format(Cursor& c) {
   c.section = "$MeshFormat";
-  const MshPlace at = here(c);
+  const MshPlace at = c.next_place();
   const std::string version(c.token("the version"));
   if (version != "4.1") {
     c.fail(at, "this file is of MSH version " + Cursor::excerpt(version) +
@@ -204,7 +202,7 @@ void read_format(Cursor& c) {
                    "Mesh.MshFileVersion = 4.1, or gmsh FILE -save -format msh41)");
   }
   const int file_type = c.int_value("the file type (0 ASCII, 1 binary)", 0, 1);
-  const MshPlace size_at = here(c);
+  const MshPlace size_at = c.next_place();
   const int data_size = c.int_value("the data size");
   if (data_size != 8)
     c.fail(size_at, "data size " + std::to_string(data_size) +
@@ -228,7 +226,7 @@ void read_physical_names(Cursor& c, MshMesh& m) {
   c.binary = false;  // always ASCII
   const std::int64_t n = c.int_value("the number of physical names", 0);
   for (std::int64_t k = 0; k < n; ++k) {
-    const MshPlace at = here(c);
+    const MshPlace at = c.next_place();
     const int dim = c.int_value("a dimension", 0, 3);
     const int tag = c.int_value("a physical tag");
     std::string name(c.line());
@@ -250,13 +248,13 @@ void read_entities(Cursor& c, MshMesh& m, std::set<std::pair<int, int>>& entitie
   for (std::size_t& n : counts) n = c.count("the number of entities", 1);
   for (int dim = 0; dim < 4; ++dim) {
     for (std::size_t k = 0; k < counts[dim]; ++k) {
-      const MshPlace at = here(c);
+      const MshPlace at = c.next_place();
       const int tag = c.int_value("an entity tag");
       for (int j = 0; j < (dim == 0 ? 3 : 6); ++j) c.real("a coordinate of the bounding box");
       const std::size_t groups = c.count("the number of physical tags", 1);
       std::vector<int> tags;
       for (std::size_t g = 0; g < groups; ++g) {
-        const MshPlace group_at = here(c);
+        const MshPlace group_at = c.next_place();
         tags.push_back(c.int_value("a physical tag"));
         m.group_places.emplace(std::make_pair(dim, tags.back()), group_at);
       }
@@ -275,7 +273,7 @@ void read_entities(Cursor& c, MshMesh& m, std::set<std::pair<int, int>>& entitie
 
 void read_nodes(Cursor& c, MshMesh& m, std::unordered_map<std::int64_t, std::size_t>& index) {
   c.section = "$Nodes";
-  const MshPlace header = here(c);
+  const MshPlace header = c.next_place();
   const std::size_t blocks = c.count("the number of entity blocks", 4);
   const std::size_t total = c.count("the number of nodes", 4);
   c.size_value("the smallest node tag");
@@ -285,13 +283,13 @@ void read_nodes(Cursor& c, MshMesh& m, std::unordered_map<std::int64_t, std::siz
   for (std::size_t b = 0; b < blocks; ++b) {
     const int dim = c.int_value("an entity dimension", 0, 3);
     c.int_value("an entity tag");
-    const MshPlace parametric_at = here(c);
+    const MshPlace parametric_at = c.next_place();
     const int parametric = c.int_value("the parametric flag (0 or 1)", 0, 1);
     if (parametric == 1 && dim == 0)
       c.fail(parametric_at, "a point entity has no parametric coordinates");
     const std::size_t n = c.count("the number of nodes in the block", 4);
     for (std::size_t k = 0; k < n; ++k) {
-      const MshPlace at = here(c);
+      const MshPlace at = c.next_place();
       const std::int64_t tag = c.size_value("a node tag", 1);
       if (!index.emplace(tag, m.node_tags.size()).second)
         c.fail(at, "node " + std::to_string(tag) + " is given twice");
@@ -315,7 +313,7 @@ void read_elements(Cursor& c, MshMesh& m,
                    const std::unordered_map<std::int64_t, std::size_t>& node_index,
                    bool have_entities, const std::set<std::pair<int, int>>& entities) {
   c.section = "$Elements";
-  const MshPlace header = here(c);
+  const MshPlace header = c.next_place();
   const std::size_t blocks = c.count("the number of entity blocks", 4);
   const std::size_t total = c.count("the number of elements", 2);
   c.size_value("the smallest element tag");
@@ -324,10 +322,10 @@ void read_elements(Cursor& c, MshMesh& m,
   std::size_t read = 0;
   for (std::size_t b = 0; b < blocks; ++b) {
     MshElementBlock block;
-    block.where = here(c);
+    block.where = c.next_place();
     block.dim = c.int_value("an entity dimension", 0, 3);
     block.entity = c.int_value("an entity tag");
-    const MshPlace type_at = here(c);
+    const MshPlace type_at = c.next_place();
     block.type = c.int_value("an element type");
     const GmshElementType* type = element_type(block.type);
     if (!type)
@@ -345,12 +343,12 @@ void read_elements(Cursor& c, MshMesh& m,
     block.tags.reserve(n);
     block.nodes.reserve(n * per);
     for (std::size_t k = 0; k < n; ++k) {
-      const MshPlace at = here(c);
+      const MshPlace at = c.next_place();
       const std::int64_t tag = c.size_value("an element tag", 1);
       if (!seen.insert(tag).second)
         c.fail(at, "element " + std::to_string(tag) + " is given twice");
       for (std::size_t j = 0; j < per; ++j) {
-        const MshPlace node_at = here(c);
+        const MshPlace node_at = c.next_place();
         const std::int64_t node = c.size_value("a node tag", 1);
         if (!node_index.count(node))
           c.fail(node_at, "element " + std::to_string(tag) + ": node " + std::to_string(node) +
@@ -393,7 +391,7 @@ MshMesh read_msh(std::string_view bytes, const std::string& file) {
   bool have_format = false, have_entities = false, have_nodes = false, have_elements = false;
   while (!c.at_end()) {
     c.section.clear();
-    const MshPlace at = here(c);
+    const MshPlace at = c.next_place();
     const std::string name(c.next_line());
     if (name.empty() || name[0] != '$')
       c.fail(at, "expected a section such as $Nodes, got '" + Cursor::excerpt(name) + "'");
