@@ -23,17 +23,17 @@ void ToolContact::validate() const {
     throw ContactSetupError(setting, what + " with an analytic tool is not supported yet");
   };
   if (s.freeze) refuse("freeze", "law FREEZE");
-  if (s.stick_stress) refuse("stick_stress", "sticking contact (sigma_stick)");
+  if (s.stick_stress) refuse("stick_stress", "sticking up to a failure stress");
   if (s.adhesion) refuse("adhesion", "adhesion");
   if (s.thermal.any()) refuse("thermal", "heat exchange");
   if (s.wear_rate1 || s.wear_rate2) refuse("wear", "wear");
-  if (s.initial_region || s.moving_region) refuse("regions", "a gid region (gid_0, gid_1)");
+  if (s.initial_region || s.moving_region) refuse("regions", "a contact region");
   if (s.initial_penetration != InitialPenetration::Offset || s.initial_offset != 0.0 ||
       s.initial_max)
     refuse("initial_offset",
-           "an initial-penetration option (delta0_offset, delta0_max, *CONTACT_INITIAL)");
+           "an initial-penetration option (an offset, a maximum, or another treatment)");
   if (s.clearance) refuse("clearance", "a clearance");
-  if (s.edge_tolerance != 0.0) refuse("edge_tolerance", "delta_edge");
+  if (s.edge_tolerance != 0.0) refuse("edge_tolerance", "an edge tolerance");
   if (s.edges.selection != EdgeSelection::None) refuse("edges", "edge-to-edge contact");
   if (s.stiffness.rule != StiffnessRule::FacetPenalty)
     refuse("stiffness", "a Radioss stiffness rule (the tool has no elements)");
@@ -41,9 +41,11 @@ void ToolContact::validate() const {
   if (!s.pair_frictions.empty()) refuse("pair_frictions", "a per-part-pair friction");
   if (s.gaps.mesh_fraction || s.gaps.skip_close || s.gaps.zero_at_free_edges ||
       std::isfinite(s.gaps.max_main) || s.gaps.border != GapSettings::Border::Cut)
-    refuse("gaps", "igap 2 or 3, Igap0, Gap_max_m or Ishape");
+    refuse("gaps",
+           "a variable gap (a mesh-size cap, skipping initially close points, no gap at free "
+           "edges, a main-side maximum or a shell border shape)");
   if (s.sense == ContactSense::Negative)
-    refuse("normal_law", "sense NEGATIVE (choose the tool's side INSIDE instead)");
+    refuse("normal_law", "a negative contact sense (choose the tool's inside instead)");
   if (std::holds_alternative<ExponentialOverclosure>(s.normal_law))
     refuse("normal_law", "the exponential pressure-overclosure law");
   const AnalyticTool& t = tool_;

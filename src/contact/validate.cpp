@@ -92,8 +92,7 @@ void InterfaceImpl::validate(const ContactSurface& s1, const ContactSurface& s2,
   if (!(g.padding >= 0.0) || !std::isfinite(g.padding))
     fail("gaps", "the padding must be >= 0 and finite");
   if (g.padding > 0.0 && g.mesh_fraction)
-    fail("gaps",
-         "a padding cannot be combined with the mesh-size cap (Igap 3), which would cap it");
+    fail("gaps", "a padding cannot be combined with the mesh-size cap, which would cap it");
   if (s1.size() == 0) fail("surface1", "surface 1 has no facets");
   if (s2.size() == 0) fail("surface2", "surface 2 has no facets");
   const bool radioss = k.rule != StiffnessRule::FacetPenalty;

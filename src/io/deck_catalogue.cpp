@@ -19,6 +19,7 @@ const std::map<std::string, KeywordReader, std::less<>>& supported() {
       {"*UNIT_SYSTEM", read_unit_system},
       {"*TIME", read_time},
       {"*OUTPUT", read_output},
+      {"*OUTPUT_FIELDS", read_output_fields},                    // abut's own
       {"*CONTROL_BULK_VISCOSITY", read_control_bulk_viscosity},  // abut's own (LS-DYNA's name)
       {"*NODE", read_node},
       {"*ELEMENT_SOLID", read_element_solid},

@@ -73,7 +73,7 @@ void merge_contact_keywords(Model& model, const std::vector<PendingContactKeywor
     k.apply(*spec);
   }
   for (const ContactSpec& c : model.contacts) {
-    check_contact_options(c);
+    check_contact_options(model, c);
     check_tool_contact(model, c);
     if (c.surface1.type == EntityType::NodeSet &&
         c.discretisation != Discretisation::NodeToSurface) {
@@ -88,6 +88,7 @@ void merge_contact_keywords(Model& model, const std::vector<PendingContactKeywor
 }  // namespace
 
 DeckResult DeckReader::finish() {
+  name_keyword_words(model.sources);
   if (!time_where && static_step_ends.empty()) {
     throw InputError(SourceLocation{files.front(), std::max<std::size_t>(end_line, 1), "", ""},
                      "the deck ends without *TIME: abut needs the termination time t_term (or "

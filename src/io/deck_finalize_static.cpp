@@ -126,12 +126,12 @@ void DeckReader::finish_static_steps() {
   }
   for (const ContactSpec& c : model.contacts) {
     if (c.sensor)
-      throw InputError(c.sensor_where,
+      throw InputError(model.place_of(c, "sensor"),
                        "a contact switched by a sensor (*CONTACT_SENSOR) is not supported in "
                        "static steps" +
                            static_at);
     if (c.release_bc)
-      throw InputError(c.release_bc_where,
+      throw InputError(model.place_of(c, "release_bc"),
                        "releasing boundary conditions at impact (*CONTACT_RELEASE_BC) is not "
                        "supported in static steps" +
                            static_at);

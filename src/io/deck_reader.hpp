@@ -371,6 +371,7 @@ void read_parameter_default(DeckReader&, Block&);
 void read_unit_system(DeckReader&, Block&);
 void read_time(DeckReader&, Block&);
 void read_output(DeckReader&, Block&);
+void read_output_fields(DeckReader&, Block&);  // keyword_control.cpp (abut's own)
 void read_control_bulk_viscosity(DeckReader&, Block&);
 void read_node(DeckReader&, Block&);
 void read_element_solid(DeckReader&, Block&);
@@ -455,10 +456,14 @@ void refine_contact(DeckReader& d, const Row& r, std::function<void(ContactSpec&
                     bool repeatable = false);
 // Options of different keywords that the contact library does not combine (one of them would do
 // nothing): an InputError at the *CONTACT_* field. Run once every keyword is merged.
-void check_contact_options(const ContactSpec& c);
+void check_contact_options(const Model& model, const ContactSpec& c);
+// Records where row r (first field coid) gives `setting` of its contact: field `column` (Sources).
+void contact_place(DeckReader& d, const Row& r, std::string_view setting, std::size_t column);
 // keyword_contact_tie.cpp: moves the contacts with an exact tie (FREEZE, tie = EXACT) from
 // model.contacts to model.ties; InputError at any option of theirs a tie would not use.
 void extract_exact_ties(Model& model);
+// keyword_words.cpp: the dialect's words for the concepts the solvers' messages ask for.
+void name_keyword_words(Sources& sources);
 // "*CONTACT <id> at <file>:<line>", for messages that point at the contact a keyword refines.
 std::string contact_at(const ContactSpec& c);
 

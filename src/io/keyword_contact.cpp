@@ -10,6 +10,12 @@ void read_contact(DeckReader& d, Block& b) {
   c.id = d.other_id(r1, 0);
   d.claim_id("contact", c.id, r1.where(0));
   c.where = r1.where();
+  // Where each setting of the card is, for the errors found once the contact is built (Sources).
+  const auto place = [&d, id = c.id](std::string_view setting, const Row& r, std::size_t column) {
+    d.model.sources.set(SourceEntity::Contact, id, setting, r.where(column));
+  };
+  place("accuracy_level", r1, 1);
+  place("accuracy_edge", r1, 2);
   const std::int64_t level = r1.integer_or(1, c.accuracy_level);
   r1.require(level >= 1, 1, "expected an accuracy level >= 1 (1 low, 2 standard, > 2 high)");
   c.accuracy_level = static_cast<int>(level);
@@ -48,12 +54,23 @@ void read_contact(DeckReader& d, Block& b) {
     c.penalty = r2.number(5);
     r2.require(*c.penalty > 0.0, 5, "expected a penalty stiffness > 0 (empty: automatic)");
   }
+  place("surface1", r2, 1);
+  place("secondary_nodes", r2, 1);
+  place("surface2", r2, 3);
+  place("penalty", r2, 5);
+  place("begin_time", r2, 6);
+  place("end_time", r2, 7);
   c.begin_time = r2.number_or(6, c.begin_time);
   c.end_time = r2.number_or(7, c.end_time);
   r2.require(c.end_time > c.begin_time, 7, "expected t_end > t_beg");
 
   if (auto r3 = b.optional_row(
           {"merge", "xi", "gid_0", "gid_1", "delta0_offset", "delta0_max", "delta_edge"})) {
+    place("damping", *r3, 1);
+    place("regions", *r3, 2);
+    place("initial_offset", *r3, 4);
+    place("initial_max", *r3, 5);
+    place("edge_tolerance", *r3, 6);
     c.merge = r3->flag(0);
     c.damping = r3->number_or(1, c.damping);
     r3->require(c.damping >= 0.0, 1, "expected a fraction of critical damping >= 0");
@@ -74,6 +91,12 @@ void read_contact(DeckReader& d, Block& b) {
 
   if (auto r4 = b.optional_row({"fid_wear1", "fid_wear2", "fid_thermal", "alpha_edge", "one_way",
                                 "no_internal", "sigma_stick", "fric_heat"})) {
+    place("wear", *r4, 0);
+    place("thermal", *r4, 2);
+    place("edge_angle", *r4, 3);
+    place("one_way", *r4, 4);
+    place("stick_stress", *r4, 6);
+    place("friction_heat", *r4, 7);
     if (const auto fid = d.optional_other_id(*r4, 0)) bind(*fid, r4->where(0), &ContactSpec::wear1);
     if (const auto fid = d.optional_other_id(*r4, 1)) bind(*fid, r4->where(1), &ContactSpec::wear2);
     if (const auto fid = d.optional_other_id(*r4, 2))

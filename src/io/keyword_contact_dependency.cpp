@@ -82,10 +82,8 @@ void read_contact_dependency(DeckReader& d, Block& b) {
     });
     entries.push_back({p, gap, row->where(0)});
   }
-  refine_contact(d, r, [entries, where = r.where()](ContactSpec& c) {
-    c.dependencies = entries;
-    c.dependency_where = where;
-  });
+  d.model.sources.set(SourceEntity::Contact, d.other_id(r, 0), "dependencies", r.where());
+  refine_contact(d, r, [entries](ContactSpec& c) { c.dependencies = entries; });
 }
 
 // Once every keyword of the contact is in: a dependency must have a parameter to act on.

@@ -218,6 +218,11 @@ void read_contact_friction(DeckReader& d, Block& b) {
     }
   }
 
+  contact_place(d, r, "tangential_law", 1);
+  contact_place(d, r, "freeze", 1);
+  contact_place(d, r, "tangential_penalty", 4);
+  contact_place(d, r, "friction_filter", 5);
+  if (exact) d.model.sources.set(SourceEntity::Tie, d.other_id(r, 0), "exact", r.where(7));
   refine_contact(d, r, [r, card, pen_t, exact](ContactSpec& spec) {
     if (spec.friction != 0.0 || spec.friction_function.valid()) {
       r.fail(1, "give friction either as mu on *CONTACT or with *CONTACT_FRICTION, not both (" +
@@ -236,7 +241,6 @@ void read_contact_friction(DeckReader& d, Block& b) {
     spec.friction_c = card.c;
     spec.tangential_penalty = pen_t;
     spec.friction_filter = card.filter;
-    spec.friction_where = r.where();
   });
 }
 

@@ -19,12 +19,13 @@ void refine_contact(DeckReader& d, const Row& r, std::function<void(ContactSpec&
   d.contact_keywords.push_back({d.other_id(r, 0), r.where(0), repeatable, std::move(apply)});
 }
 
-void check_contact_options(const ContactSpec& c) {
+void contact_place(DeckReader& d, const Row& r, std::string_view setting, std::size_t column) {
+  d.model.sources.set(SourceEntity::Contact, d.other_id(r, 0), setting, r.where(column));
+}
+
+void check_contact_options(const Model& model, const ContactSpec& c) {
   check_contact_dependency(c);
-  const auto at = [](SourceLocation where, const char* field) {
-    where.field = field;
-    return where;
-  };
+  const auto at = [&model, &c](std::string_view setting) { return model.place_of(c, setting); };
   const bool initial = c.initial_penetration != InitialPenetration::Offset ||
                        c.initial_offset != 0.0 || c.initial_max.has_value();
   const std::string initial_options =
@@ -39,7 +40,7 @@ void check_contact_options(const ContactSpec& c) {
                      "one of them");
   }
   if (c.friction_law == ContactSpec::FrictionLaw::Freeze && (c.clearance || initial)) {
-    throw InputError(at(c.friction_where, "law"),
+    throw InputError(at("tangential_law"),
                      "law FREEZE ties every point at its initial distance, so " +
                          std::string(c.clearance ? "the clearance of *CONTACT_NORMAL would do "
                                                    "nothing"
@@ -47,23 +48,22 @@ void check_contact_options(const ContactSpec& c) {
                          ": remove one of them");
   }
   if (c.clearance && initial) {
-    throw InputError(at(c.normal_where, "clearance"),
-                     "the clearance replaces the initial gap of every point, so " +
-                         initial_options + ": remove one of them");
+    throw InputError(at("clearance"), "the clearance replaces the initial gap of every point, so " +
+                                          initial_options + ": remove one of them");
   }
   if (c.sense == ContactSense::Bilateral && initial) {
-    throw InputError(at(c.normal_where, "sense"),
+    throw InputError(at("sense"),
                      "a BILATERAL contact holds every point on the surface from the start, so " +
                          initial_options + ": remove one of them");
   }
   if (c.main_shell_sides != ContactSpec::ShellSides::Both) {
     if (c.surface1.type == c.surface2.type && c.surface1.id == c.surface2.id) {
-      throw InputError(at(c.gap_where, "shell_side"),
+      throw InputError(at("shell_sides"),
                        "one-sided shells act on surface 2 only, which in self contact is surface "
                        "1 as well: not supported yet (use two surfaces, or BOTH)");
     }
     if (c.stiffness.rule != StiffnessRule::FacetPenalty) {
-      throw InputError(at(c.gap_where, "shell_side"),
+      throw InputError(at("shell_sides"),
                        "one-sided shells take the PFAC rule only, not a Radioss stiffness rule of "
                        "*CONTACT_STIFFNESS: not supported yet");
     }
@@ -87,6 +87,9 @@ void read_contact_discretization(DeckReader& d, Block& b) {
   const bool remove_tied = word_choice(
       r, 4, false, {{"KEEP", false}, {"REMOVE", true}, {"3", false}, {"1", true}},
       "KEEP (tied nodes stay secondary points, Radioss Irem_i2 = 3) or REMOVE (Irem_i2 = 1)");
+  contact_place(d, r, "discretisation", 1);
+  contact_place(d, r, "symmetric", 2);
+  contact_place(d, r, "small_sliding", 3);
   refine_contact(d, r, [r, method, symmetric, small_sliding, remove_tied](ContactSpec& c) {
     const bool node_set = c.surface1.type == EntityType::NodeSet;
     if (node_set && method == Discretisation::SurfaceToSurface) {
@@ -107,7 +110,6 @@ void read_contact_discretization(DeckReader& d, Block& b) {
     c.symmetric = symmetric;
     c.small_sliding = small_sliding;
     c.remove_tied_nodes = remove_tied;
-    c.discretisation_where = r.where();
   });
 }
 
@@ -147,6 +149,10 @@ void read_contact_normal(DeckReader& d, Block& b) {
               "expected a detection depth > 0 (empty: half the element thickness)");
   }
   if (r.given(5)) clearance = r.number(5);
+  contact_place(d, r, "normal_law", 1);
+  contact_place(d, r, "sense", 3);
+  contact_place(d, r, "detection_depth", 4);
+  contact_place(d, r, "clearance", 5);
   refine_contact(d, r, [r, sense, depth, clearance](ContactSpec& c) {
     if (sense != ContactSense::Positive && c.stick_stress) {
       r.fail(3, "sense " + r.word(3) +
@@ -156,7 +162,6 @@ void read_contact_normal(DeckReader& d, Block& b) {
     c.sense = sense;
     c.detection_depth = depth;
     c.clearance = clearance;
-    c.normal_where = r.where();
   });
 }
 
@@ -171,6 +176,7 @@ void read_contact_adhesion(DeckReader& d, Block& b) {
   r.require(a.fluid_viscosity >= 0.0, 3, "expected a fluid viscosity >= 0");
   a.viscous_factor = r.number_or(4, 1.0);
   r.require(a.viscous_factor >= 0.0, 4, "expected a viscous force scale factor >= 0");
+  contact_place(d, r, "adhesion", 1);
   refine_contact(d, r, [a](ContactSpec& c) { c.adhesion = a; });
 }
 
@@ -223,6 +229,7 @@ void read_contact_stiffness(DeckReader& d, Block& b) {
     r.require(s.maximum > s.minimum, 4, "expected a maximum stiffness > st_min");
   }
   const bool element = rule == Rule::Element;
+  contact_place(d, r, "stiffness", 1);
   refine_contact(d, r, [r, s, element, radioss](ContactSpec& c) {
     if ((element || radioss) && c.penalty) {
       r.fail(1, "rule " + r.word(1) + " replaces the penalty pfac given on line 2 of " +
@@ -230,7 +237,6 @@ void read_contact_stiffness(DeckReader& d, Block& b) {
     }
     c.stiffness = s;
     c.element_penalty = element;
-    c.stiffness_where = r.where();
   });
 }
 
@@ -299,6 +305,8 @@ void read_contact_initial(DeckReader& d, Block& b) {
     adjust_nodes = EntityRef{EntityType::NodeSet, id, r.where(3)};
     if (!adjust) adjust = 0.0;  // the search depth
   }
+  contact_place(d, r, "initial_penetration", 1);
+  contact_place(d, r, "adjust", 2);
   refine_contact(d, r, [r, penetration, adjust, adjust_nodes](ContactSpec& c) {
     if (penetration != InitialPenetration::Offset && (c.initial_offset != 0.0 || c.initial_max)) {
       r.fail(1, "penetration " + r.word(1) +
@@ -309,7 +317,6 @@ void read_contact_initial(DeckReader& d, Block& b) {
     c.initial_penetration = penetration;
     c.adjust_depth = adjust;
     c.adjust_nodes = adjust_nodes;
-    c.initial_where = r.where();
   });
 }
 

@@ -54,10 +54,11 @@ void read_contact_gap(DeckReader& d, Block& b) {
                                    {"OVERLAP", Sides::Overlap}},
                                   "BOTH (or OPENGAP), NORM, REVNORM or OVERLAP (OptiStruct "
                                   "MORIENT)");
-  refine_contact(d, r, [r, g, sides](ContactSpec& c) {
+  contact_place(d, r, "gaps", 1);
+  contact_place(d, r, "shell_sides", 8);
+  refine_contact(d, r, [g, sides](ContactSpec& c) {
     c.gaps = g;
     c.main_shell_sides = sides;
-    c.gap_where = r.where();
   });
 }
 
@@ -83,10 +84,8 @@ void read_contact_edge(DeckReader& d, Block& b) {
     r.fail(2, "edge_angle selects sharp solid edges for iedge SHARP and SHARP_ALL_SHELLS only");
   e.angle = r.number_or(2, 135.0);
   r.require(e.angle > 0.0 && e.angle <= 180.0, 2, "expected an angle in (0, 180] degrees");
-  refine_contact(d, r, [r, e](ContactSpec& c) {
-    c.edges = e;
-    c.edge_where = r.where();
-  });
+  contact_place(d, r, "edges", 1);
+  refine_contact(d, r, [e](ContactSpec& c) { c.edges = e; });
 }
 
 void read_contact_erosion(DeckReader& d, Block& b) {
@@ -100,10 +99,8 @@ void read_contact_erosion(DeckReader& d, Block& b) {
   e.keep_free_nodes = word_choice(r, 2, !idel, {{"KEEP", true}, {"REMOVE", false}},
                                   "KEEP (free nodes stay as point masses) or REMOVE (Abaqus "
                                   "nodal erosion)");
-  refine_contact(d, r, [r, e](ContactSpec& c) {
-    c.erosion = e;
-    c.erosion_where = r.where();
-  });
+  contact_place(d, r, "erosion", 1);
+  refine_contact(d, r, [e](ContactSpec& c) { c.erosion = e; });
 }
 
 }  // namespace abut::deck

@@ -56,11 +56,10 @@ void read_contact_thermal(DeckReader& d, Block& b) {
   const double share = r.number_or(5, 0.5);
   r.require(share >= 0.0 && share <= 1.0, 5,
             "expected the share of the friction heat going to surface 1 in [0, 1]");
-  const SourceLocation where = r.where();
-  refine_contact(d, r, [conductance, share, where](ContactSpec& c) {
+  contact_place(d, r, "conductance", 1);
+  refine_contact(d, r, [conductance, share](ContactSpec& c) {
     c.conductance = conductance;
     c.friction_heat_to_surface1 = share;
-    c.thermal_where = where;
   });
 }
 

@@ -117,32 +117,30 @@ namespace abut::deck {
 void check_tool_contact(const Model& model, const ContactSpec& c) {
   if (c.surface2.type != EntityType::Tool) return;
   model.tool(c.surface2);  // the tool exists
-  const auto at = [&c](SourceLocation where, const char* field) {
-    if (where.file.empty()) where = c.where;
-    where.field = field;
-    return where;
-  };
+  const auto at = [&model, &c](std::string_view setting) { return model.place_of(c, setting); };
+  const auto given = [&model, &c](std::string_view setting) { return model.gives(c, setting); };
   const std::string tool = " with an analytic tool (surface 2 TOOL) is not supported yet";
   if (c.symmetric.value_or(false))
-    throw InputError(at(c.discretisation_where, "symmetric"),
-                     "symmetric contact" + tool +
-                         ": the tool has no points of its own (one-way "
-                         "node to surface)");
-  if (!c.discretisation_where.file.empty() && c.discretisation != Discretisation::NodeToSurface)
+    throw InputError(at("symmetric"), "symmetric contact" + tool +
+                                          ": the tool has no points of its own (one-way "
+                                          "node to surface)");
+  if (given("discretisation") && c.discretisation != Discretisation::NodeToSurface)
     throw InputError(
-        at(c.discretisation_where, "method"),
+        at("discretisation"),
         "surface-to-surface contact" + tool + ": the nodes of surface 1 touch the tool (give N2S)");
-  if (c.adjust_depth) throw InputError(at(c.initial_where, "adjust"), "ADJUST" + tool);
-  if (!c.erosion_where.file.empty())
-    throw InputError(at(c.erosion_where, "facets"), "*CONTACT_EROSION" + tool);
+  if (c.adjust_depth) throw InputError(at("adjust"), "ADJUST" + tool);
+  if (given("erosion")) throw InputError(at("erosion"), "*CONTACT_EROSION" + tool);
   if (c.element_penalty)
-    throw InputError(at(c.stiffness_where, "rule"),
+    throw InputError(at("stiffness"),
                      "the ELEMENT penalty rule" + tool + " (give pfac or the automatic rule)");
   if (c.exchanges_heat())
-    throw InputError(at(c.thermal_where, "fid_thermal"), "heat exchange" + tool);
-  if (c.wear1.valid() || c.wear2.valid()) throw InputError(at(c.where, "fid_wear1"), "wear" + tool);
+    throw InputError(at(c.conductance       ? "conductance"
+                        : c.thermal.valid() ? "thermal"
+                                            : "friction_heat"),
+                     "heat exchange" + tool);
+  if (c.wear1.valid() || c.wear2.valid()) throw InputError(at("wear"), "wear" + tool);
   if (c.gaps.border != GapSettings::Border::Cut)
-    throw InputError(at(c.gap_where, "ishape"),
+    throw InputError(with_field(at("gaps"), "ishape"),
                      "ishape" + tool + " (the tool has no shell border)");
 }
 

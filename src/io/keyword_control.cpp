@@ -1,5 +1,8 @@
-// *TITLE, *PARAMETER, *PARAMETER_DEFAULT, *UNIT_SYSTEM, *TIME, *OUTPUT, *CONTROL_BULK_VISCOSITY,
-// *CONTROL_P-ORDER.
+// *TITLE, *PARAMETER, *PARAMETER_DEFAULT, *UNIT_SYSTEM, *TIME, *OUTPUT, *OUTPUT_FIELDS,
+// *CONTROL_BULK_VISCOSITY, *CONTROL_P-ORDER.
+#include <algorithm>
+#include <cctype>
+
 #include "abut/core/functions.hpp"
 #include "deck_reader.hpp"
 
@@ -93,7 +96,8 @@ void read_time(DeckReader& d, Block& b) {
       r.fail(i, "a time-step limit given by fcn is not supported yet by abut");
   }
   t.min_step = r.number_or(2, t.min_step);
-  t.min_step_where = r.where(2);
+  d.model.sources.set(SourceEntity::Time, 0, "min_step", r.where(2));
+  d.model.sources.set(SourceEntity::Time, 0, "max_step", r.where(3));
   r.require(t.min_step >= 0.0, 2, "expected a minimum time step >= 0");
   t.max_step = r.number_or(3, t.max_step);
   r.require(t.max_step > 0.0, 3, "expected a maximum time step > 0");
@@ -107,7 +111,7 @@ void read_time(DeckReader& d, Block& b) {
 void read_output(DeckReader& d, Block& b) {
   if (!d.output_where) d.output_where = b.where();
   const Row r = b.row({"dt_imp", "dt_ascii", "dt_db", "fragment"});
-  OutputControl& o = d.model.output;
+  OutputRequests& o = d.model.output;
   o.state_interval = r.number_or(0, 0.0);
   r.require(o.state_interval >= 0.0, 0, "expected an interval >= 0 (0 or empty: t_term/100)");
   o.history_interval = r.number_or(1, 0.0);
@@ -119,6 +123,35 @@ void read_output(DeckReader& d, Block& b) {
     r2->unsupported_unless(1, 0.0, "element output filtering (efilter)");
     for (std::size_t i : {2, 3, 4}) r2->unsupported(i, "state-file output");
   }
+}
+
+// *OUTPUT_FIELDS (abut's own): the fields of the states, by their names in ParaView (kStateFields
+// of abut/model/output.hpp), up to eight per row and as many rows as needed. Without it the states
+// carry every field the run has; part_id is always written.
+void read_output_fields(DeckReader& d, Block& b) {
+  OutputRequests& o = d.model.output;
+  if (o.state_fields)
+    throw InputError(b.where(), "*OUTPUT_FIELDS is given twice (first at line " +
+                                    std::to_string(o.fields_where.line) +
+                                    "): list every field in one");
+  std::vector<std::string> names;
+  for (int i = 1; i <= 8; ++i) names.push_back("field_" + std::to_string(i));
+  o.state_fields.emplace();
+  std::string known;
+  for (const std::string_view f : kStateFields)
+    known += (known.empty() ? "" : ", ") + std::string(f);
+  for (std::optional<Row> r = b.row(names); r; r = b.optional_row(names)) {
+    for (std::size_t i = 0; i < r->size(); ++i) {
+      if (!r->given(i)) continue;
+      std::string field = r->text(i);
+      std::transform(field.begin(), field.end(), field.begin(),
+                     [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+      r->require(is_state_field(field), i, "expected a field of the states (" + known + ")");
+      if (std::find(o.state_fields->begin(), o.state_fields->end(), field) == o.state_fields->end())
+        o.state_fields->push_back(field);
+    }
+  }
+  o.fields_where = b.where();
 }
 
 // *CONTROL_BULK_VISCOSITY (abut's own; IMPETUS has no such command): LS-DYNA's keyword of the

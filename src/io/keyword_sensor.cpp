@@ -67,10 +67,10 @@ void read_contact_sensor(DeckReader& d, Block& b) {
   const bool off = word_choice(r, 2, false, {{"ON", false}, {"OFF", true}},
                                "ON (the contact acts from the time the sensor is on; Radioss) or "
                                "OFF (the contact acts until then)");
-  refine_contact(d, r, [r, sid, off](ContactSpec& c) {
+  contact_place(d, r, "sensor", 1);
+  refine_contact(d, r, [sid, off](ContactSpec& c) {
     c.sensor = sid;
     c.sensor_switches_off = off;
-    c.sensor_where = r.where(1);
   });
 }
 
@@ -79,10 +79,9 @@ void read_contact_release_bc(DeckReader& d, Block& b) {
   const std::uint8_t mask = static_cast<std::uint8_t>(
       (r.flag(1) ? kFixX : 0) | (r.flag(2) ? kFixY : 0) | (r.flag(3) ? kFixZ : 0));
   if (mask == 0) r.fail(1, "expected at least one of ibcx, ibcy, ibcz to be 1");
-  refine_contact(d, r, [r, mask](ContactSpec& c) {
-    c.release_bc = mask;
-    c.release_bc_where = r.where();
-  });
+  // The row as a whole: any of the three asks for the release.
+  d.model.sources.set(SourceEntity::Contact, d.other_id(r, 0), "release_bc", r.where());
+  refine_contact(d, r, [mask](ContactSpec& c) { c.release_bc = mask; });
 }
 
 // Once every *CONTACT is merged: the contact of each CONTACT_FORCE sensor and the sensor of each
@@ -100,7 +99,7 @@ void check_sensors(const Model& model) {
                            joined(contact_ids) + ")");
   for (const ContactSpec& c : model.contacts)
     if (c.sensor && !sensor_ids.count(*c.sensor))
-      throw InputError(c.sensor_where,
+      throw InputError(model.place_of(c, "sensor"),
                        "sensor " + std::to_string(*c.sensor) +
                            " does not exist (defined sensors: " + joined(sensor_ids) + ")");
 }

@@ -95,6 +95,10 @@ class StateWriter {
       cell_fields.push_back({"plastic_strain", 1, plastic_strain_});
       cell_fields.push_back({"plastic_strain_rate", 1, plastic_strain_rate_});
     }
+    // The fields the input asked for (OutputRequests; part_id always).
+    const auto unwanted = [this](const FieldView& f) { return !model_.output.writes(f.name); };
+    std::erase_if(point_fields, unwanted);
+    std::erase_if(cell_fields, unwanted);
     // Eroded elements disappear from the states.
     std::span<const Hex8> hexes = model_.mesh.hexes;
     std::span<const Quad4> shells = model_.mesh.shells;

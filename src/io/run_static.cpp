@@ -1,5 +1,6 @@
 // Runs the static steps of a model and writes what a user opens afterwards:
-//   results.pvd + states/state_NNNN.vtu   one state per converged increment
+//   results.pvd + states/state_NNNN.vtu   one state per converged increment (OutputRequests:
+//                                         every n-th and each step's last; the fields asked)
 //   increments.csv                        step, increment, attempts, iterations, times, residual
 //   energy.csv, contact.csv               energies (and the steady heat balance with heat); per
 //                                         contact forces, energy, penetration (and the heat flow
@@ -77,11 +78,15 @@ void write_state(const fs::path& dir, PvdSeries& series, const Model& model,
     points.push_back({"temperature", 1, heat.temperature()});
     points.push_back({"heat_flow", 1, heat.heat_flow()});
   }
-  const std::vector<FieldView> cells{{"part_id", 1, part},
-                                     {"stress", 6, stress},
-                                     {"von_mises_stress", 1, mises},
-                                     {"plastic_strain", 1, plastic},
-                                     {"strain_energy", 1, energy}};
+  std::vector<FieldView> cells{{"part_id", 1, part},
+                               {"stress", 6, stress},
+                               {"von_mises_stress", 1, mises},
+                               {"plastic_strain", 1, plastic},
+                               {"strain_energy", 1, energy}};
+  // The fields the input asked for (OutputRequests; part_id always).
+  const auto unwanted = [&model](const FieldView& f) { return !model.output.writes(f.name); };
+  std::erase_if(points, unwanted);
+  std::erase_if(cells, unwanted);
   const std::string name = fmt::format("states/state_{:04d}.vtu", series.size());
   write_vtu(dir / name, {x, y, z, mesh.hexes, mesh.shells, mesh.cells}, points, cells);
   series.add(time, name);
@@ -202,7 +207,9 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
            static_cast<std::int64_t>(inc.attempts), static_cast<std::int64_t>(inc.iterations),
            inc.step_time, inc.residual});
       heat.solve(solver, inc.total_time);
-      write_state(dir, series, model, solver, inc.total_time, heat);
+      // Every n-th increment of a step (the input's output frequency), and each step's last.
+      if (inc.step_end || inc.increment % model.output.state_frequency == 0)
+        write_state(dir, series, model, solver, inc.total_time, heat);
       write_energy_row(energy, solver, heat, stabilized, inc.total_time);
       if (contact) write_contact_rows(*contact, model, solver, heat, contact_heat, inc.total_time);
       print_static_results(printed, model, model.static_steps[inc.step], solver, inc);

@@ -256,11 +256,11 @@ const CellTopology kTable[] = {
 const CellTopology& topology(CellType type) { return kTable[static_cast<int>(type)]; }
 
 std::span<const std::array<std::int8_t, 4>> linear_facets(FaceType type) {
-  using F = std::array<std::int8_t, 4>;
-  static constexpr F kTri3[] = {{0, 1, 2, 2}};
-  static constexpr F kQuad4[] = {{0, 1, 2, 3}};
-  static constexpr F kTri6[] = {{0, 3, 5, 5}, {3, 1, 4, 4}, {5, 4, 2, 2}, {3, 4, 5, 5}};
-  static constexpr F kQuad8[] = {
+  using Facet = std::array<std::int8_t, 4>;
+  static constexpr Facet kTri3[] = {{0, 1, 2, 2}};
+  static constexpr Facet kQuad4[] = {{0, 1, 2, 3}};
+  static constexpr Facet kTri6[] = {{0, 3, 5, 5}, {3, 1, 4, 4}, {5, 4, 2, 2}, {3, 4, 5, 5}};
+  static constexpr Facet kQuad8[] = {
       {0, 4, 7, 7}, {4, 1, 5, 5}, {5, 2, 6, 6}, {6, 3, 7, 7}, {4, 5, 6, 7}};
   switch (type) {
     case FaceType::tri3:

@@ -165,13 +165,21 @@ std::vector<std::int32_t> Model::nodes_of(const EntityRef& entity) const {
   return nodes;
 }
 
+SourceLocation Model::place_of(const ContactSpec& c, std::string_view setting) const {
+  return sources.of(SourceEntity::Contact, c.id, setting, c.where);
+}
+
+bool Model::gives(const ContactSpec& c, std::string_view setting) const {
+  return sources.given(SourceEntity::Contact, c.id, setting);
+}
+
 const RigidTool& Model::tool(const EntityRef& entity) const {
   const RigidTool* t = find_by_id(tools, entity.id);
   if (!t || entity.type != EntityType::Tool)
-    throw InputError(entity.where, "tool " + std::to_string(entity.id) +
-                                       " does not exist (defined tools: " +
-                                       id_list(tools, [](const RigidTool& r) { return r.id; }) +
-                                       "; expected a *CONTACT_TOOL with this tid)");
+    throw InputError(entity.where,
+                     "tool " + std::to_string(entity.id) + " does not exist (defined tools: " +
+                         id_list(tools, [](const RigidTool& r) { return r.id; }) + "; expected " +
+                         sources.words("analytic_tool") + " with this id)");
   return *t;
 }
 

@@ -38,7 +38,8 @@ BoundaryConditions resolve_boundary_conditions(
         if (rigid_body_of_node[n] >= 0)
           throw InputError(m.where, "node " + std::to_string(model.mesh.nodes.id[n]) +
                                         " belongs to a rigid part; constrain or move a rigid part "
-                                        "as a whole with entype P");
+                                        "as a whole (" +
+                                        model.sources.words("rigid_motion") + ")");
         deformable_nodes.push_back(n);
       }
     }

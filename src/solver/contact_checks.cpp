@@ -37,27 +37,26 @@ std::vector<std::string> penalty_warnings(const Model& model, const ContactRepor
     out.push_back(fmt::format(
         "contact {}: parts {} and {} touch with part {}'s automatic penalty {:.3g}, {:.3g} times "
         "below part {}'s ({:.3g}; the pair takes the smaller, seed 000): part {}'s larger or "
-        "softer elements let part {} penetrate deeper than its own penalty would. Give pfac, a "
-        "pair scale factor (*CONTACT_SCALE_PENALTY) or refine part {} near the contact if that "
-        "matters",
+        "softer elements let part {} penetrate deeper than its own penalty would. Give {}, {} "
+        "or refine part {} near the contact if that matters",
         report.id, key.first, key.second, soft.part_id, soft.penalty, ratio, stiff.part_id,
-        stiff.penalty, soft.part_id, stiff.part_id, soft.part_id));
+        stiff.penalty, soft.part_id, stiff.part_id, model.sources.words("penalty"),
+        model.sources.words("pair_penalty_scale"), soft.part_id));
   }
   return out;
 }
 
-std::vector<std::string> deep_start_warnings(std::int64_t contact_id,
+std::vector<std::string> deep_start_warnings(const Model& model, std::int64_t contact_id,
                                              std::span<const DeepStart> deep) {
   std::vector<std::string> out;
   for (const DeepStart& d : deep)
     out.push_back(fmt::format(
         "contact {}: {} contact point{} of part {} start{} inside part {}, up to {:.3g} deep, "
         "below the detection depth {:.3g}: the contact search does not reach {}, so nothing "
-        "pushes {} out. Move the parts apart, or give a larger detection depth (depth of "
-        "*CONTACT_NORMAL)",
+        "pushes {} out. Move the parts apart, or give a larger detection depth ({})",
         contact_id, d.points, d.points == 1 ? "" : "s", d.part, d.points == 1 ? "s" : "",
         d.other_part, d.deepest, d.detection_depth, d.points == 1 ? "it" : "them",
-        d.points == 1 ? "it" : "them"));
+        d.points == 1 ? "it" : "them", model.sources.words("detection_depth")));
   return out;
 }
 

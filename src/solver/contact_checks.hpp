@@ -21,7 +21,7 @@ std::vector<std::string> penalty_warnings(const Model& model, const ContactRepor
 
 // One warning per pair of parts with points that start deeper inside the other than the
 // detection depth (ContactInterface::deep_initial_points).
-std::vector<std::string> deep_start_warnings(std::int64_t contact_id,
+std::vector<std::string> deep_start_warnings(const Model& model, std::int64_t contact_id,
                                              std::span<const DeepStart> deep);
 
 }  // namespace abut

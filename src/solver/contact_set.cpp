@@ -49,10 +49,11 @@ std::map<std::int64_t, PartPenalty> part_penalties(const Model& model, const Con
     if (spec.element_penalty && !is_rigid(material))
       continue;  // per facet, filled in by the caller
     if (!model.units)
-      throw InputError(spec.where,
-                       "neither pfac nor *UNIT_SYSTEM is given: the automatic penalty "
-                       "stiffness is defined in SI units (seed 000), so state the unit "
-                       "system with *UNIT_SYSTEM or give pfac on line 2");
+      throw InputError(model.place_of(spec, "penalty"),
+                       "neither " + model.sources.words("penalty") + " nor " +
+                           model.sources.words("unit_system") +
+                           " is given: the automatic penalty stiffness is defined in SI units "
+                           "(seed 000), so state the unit system or give the penalty");
     p.penalty =
         is_rigid(material)
             ? rigid_penalty(v_max, *model.units)
@@ -174,17 +175,17 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
   for (const ContactSpec& spec : model.contacts) {
     if (spec.small_sliding)
       throw InputError(
-          spec.discretisation_where.file.empty() ? spec.where : spec.discretisation_where,
-          "small sliding (TRACK = SMALL) is an option of static steps: the explicit "
-          "solver searches partners as the bodies move (give FINITE)");
+          model.place_of(spec, "small_sliding"),
+          "small sliding is an option of static steps: the explicit solver searches partners "
+          "as the bodies move (ask for finite sliding)");
     if (spec.smoothing)
       throw InputError(spec.smoothing->where,
-                       "*CONTACT_SMOOTHING acts in static steps only (OptiStruct's S2S smoothing "
+                       "surface smoothing acts in static steps only (OptiStruct's S2S smoothing "
                        "belongs to its implicit analyses, seed 003): explicit contact meets the "
                        "facets as they are");
     if (spec.stabilization)
       throw InputError(spec.stabilization->where,
-                       "*CONTACT_STABILIZATION acts in static steps only (OptiStruct CNTSTB): the "
+                       "contact stabilization acts in static steps only (OptiStruct CNTSTB): the "
                        "explicit solver's parts have their mass to hold them");
     // Node-to-surface of a node group: its nodes on the model's exterior faces that hold them.
     const auto [secondary_nodes, faces1] =
@@ -234,7 +235,7 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
                                                spec.main_shell_sides, {}, overlap_reversed),
                                node_mass, initial, secondary_nodes);
     } catch (const ContactSetupError& e) {
-      throw InputError(location_of(spec, e.setting()), e.what());
+      throw InputError(location_of(model, spec, e.setting()), e.what());
     }
     if (spec.element_penalty)  // the softest facet of each part
       for (PartPenalty& part : report.parts)
@@ -249,7 +250,7 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
     report.released_points = interfaces_.back().released_points();
     report.warnings = penalty_warnings(model, report);
     for (std::string& w :
-         deep_start_warnings(spec.id, interfaces_.back().deep_initial_points(initial)))
+         deep_start_warnings(model, spec.id, interfaces_.back().deep_initial_points(initial)))
       report.warnings.push_back(std::move(w));
     reports_.push_back(std::move(report));
     slots_.push_back({false, interfaces_.size() - 1});
@@ -302,7 +303,8 @@ void ContactSet::add_tool_contact(const ContactSpec& spec, const std::vector<Ski
                         [&penalties](const SkinFace& f) { return penalties.at(f.part).penalty; }),
         node_mass, initial, secondary_nodes);
   } catch (const ContactSetupError& e) {
-    throw InputError(e.setting() == "tool" ? tool.where : location_of(spec, e.setting()), e.what());
+    throw InputError(e.setting() == "tool" ? tool.where : location_of(model, spec, e.setting()),
+                     e.what());
   }
   motions_.emplace_back(model, tool);
   report.points = tools_.back().point_count();

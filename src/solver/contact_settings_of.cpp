@@ -88,9 +88,10 @@ TangentialLaw tangential_law_of(const ContactSpec& spec, const FunctionTable* ta
 ThermalContactSettings thermal_of(const Model& model, const ContactSpec& spec) {
   ThermalContactSettings s;
   if (spec.thermal.valid() && spec.conductance)
-    throw InputError(spec.thermal_where,
-                     "*CONTACT " + std::to_string(spec.id) +
-                         " has a conductance function (fid_thermal) already: give one of them");
+    throw InputError(model.place_of(spec, "conductance"),
+                     "contact " + std::to_string(spec.id) + " has a conductance function (" +
+                         model.sources.words("conductance_function") +
+                         ") already: give one of them");
   const FunctionTable* table = &model.functions;
   const double term = model.time.end_time;
   if (spec.thermal.valid()) {
@@ -213,48 +214,11 @@ ContactSettings settings_of(const Model& model, const ContactSpec& spec) {
 }
 
 // The deck field behind a contact-library setting, for error messages.
-SourceLocation location_of(const ContactSpec& spec, const std::string& setting) {
-  struct Field {
-    const char* setting;
-    const SourceLocation ContactSpec::*where;
-    const char* field;
-  };
-  static const Field fields[] = {
-      {"accuracy_level", &ContactSpec::where, "accuracy_level"},
-      {"damping", &ContactSpec::where, "xi"},
-      {"end_time", &ContactSpec::where, "t_end"},
-      {"initial_offset", &ContactSpec::where, "delta0_offset"},
-      {"initial_max", &ContactSpec::where, "delta0_max"},
-      {"edge_tolerance", &ContactSpec::where, "delta_edge"},
-      {"edge_angle", &ContactSpec::where, "alpha_edge"},
-      {"stick_stress", &ContactSpec::where, "sigma_stick"},
-      {"one_way", &ContactSpec::where, "one_way"},
-      {"surface1", &ContactSpec::where, "enid_1"},
-      {"surface2", &ContactSpec::where, "enid_2"},
-      {"secondary_nodes", &ContactSpec::where, "enid_1"},
-      {"detection_depth", &ContactSpec::normal_where, "depth"},
-      {"clearance", &ContactSpec::normal_where, "clearance"},
-      {"normal_law", &ContactSpec::normal_where, "law"},
-      {"tangential_law", &ContactSpec::friction_where, "law"},
-      {"tangential_penalty", &ContactSpec::friction_where, "pen_t"},
-      {"friction_filter", &ContactSpec::friction_where, "filter"},
-      {"freeze", &ContactSpec::friction_where, "law"},
-      {"stiffness", &ContactSpec::stiffness_where, "rule"},
-      {"discretisation", &ContactSpec::discretisation_where, "method"},
-      {"gaps", &ContactSpec::gap_where, "igap"},
-      {"erosion", &ContactSpec::erosion_where, "facets"},
-      {"edges", &ContactSpec::edge_where, "iedge"},
-  };
+SourceLocation location_of(const Model& model, const ContactSpec& spec,
+                           const std::string& setting) {
   if (setting == "pair_frictions" && !spec.friction_pairs.empty())
     return spec.friction_pairs.front().where;
-  for (const Field& f : fields)
-    if (setting == f.setting) {
-      SourceLocation where = spec.*f.where;
-      if (where.file.empty()) where = spec.where;
-      where.field = f.field;
-      return where;
-    }
-  return spec.where;
+  return model.place_of(spec, setting);
 }
 
 // The laws of a contact in the deck's words, for the log and summary.json.

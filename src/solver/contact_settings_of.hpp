@@ -28,8 +28,9 @@ ContactSettings settings_of(const Model& model, const ContactSpec& spec);
 // Whether the contact is one-way (*CONTACT one_way, *CONTACT_DISCRETIZATION, a node group).
 bool one_way_of(const ContactSpec& spec);
 
-// The deck field behind a contact-library setting (the setting() of its error), for errors.
-SourceLocation location_of(const ContactSpec& spec, const std::string& setting);
+// Where the input gave a contact-library setting (the setting() of its error; Sources), for
+// errors: the contact's own place when the input did not give it.
+SourceLocation location_of(const Model& model, const ContactSpec& spec, const std::string& setting);
 
 // The laws of a contact in the deck's words, for the log and summary.json.
 void describe(const ContactSpec& spec, ContactReport& r);

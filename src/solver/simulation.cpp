@@ -185,21 +185,22 @@ void Simulation::Impl::kick() {
   dt_next = std::min({scaled, model.time.max_step, model.time.end_time - t});
   // At the start it is the deck's dt_min that cannot be: no step of the run would be allowed.
   if (n == 0 && scaled < model.time.min_step)
-    throw InputError(model.time.min_step_where,
-                     fmt::format("dt_min = {:.4g} is above the initial stable time step {:.4g} "
-                                 "(limited by {}): the run could not take its first step",
+    throw InputError(model.sources.of(SourceEntity::Time, 0, "min_step"),
+                     fmt::format("the minimum time step {:.4g} is above the initial stable time "
+                                 "step {:.4g} (limited by {}): the run could not take its first "
+                                 "step",
                                  model.time.min_step, scaled, limit_description()));
   if (scaled < model.time.min_step)
     throw InstabilityError(fmt::format(
-        "the stable time step {:.4g} fell below dt_min = {:.4g} of *TIME (limited by {})", scaled,
-        model.time.min_step, limit_description()));
+        "the stable time step {:.4g} fell below the minimum {:.4g} ({}; limited by {})", scaled,
+        model.time.min_step, model.sources.words("min_step"), limit_description()));
   // Without dt_min a collapsing step would let the run crawl on forever (an element crushed
   // flat shortens its own step in proportion): stop it, and say what limits the step.
   if (model.time.min_step <= 0.0 && n > 0 && scaled < kStepCollapse * dt_initial)
-    throw InstabilityError(
-        fmt::format("the stable time step collapsed to {:.4g}, below {} of the initial {:.4g} "
-                    "(limited by {}); set dt_min of *TIME to choose this limit yourself",
-                    scaled, kStepCollapse, dt_initial, limit_description()));
+    throw InstabilityError(fmt::format(
+        "the stable time step collapsed to {:.4g}, below {} of the initial {:.4g} "
+        "(limited by {}); set a minimum time step ({}) to choose this limit yourself",
+        scaled, kStepCollapse, dt_initial, limit_description(), model.sources.words("min_step")));
   // At the end time (dt^{n+1/2} = 0) the kick still uses a notional step dt^{n-1/2}: nothing
   // moves with it, but v^n and the kinetic energy at t^n are then defined as at every other t^n,
   // with the boundary motions prescribed over it (kick_step()).
@@ -679,7 +680,7 @@ std::string Simulation::Impl::limit_description() const {
   if (limiting_cell_block >= 0)
     return std::string(element_label(cell_blocks[limiting_cell_block].type())) +
            " elements of part " + std::to_string(cell_blocks[limiting_cell_block].part_id());
-  if (limiting_block < 0) return "dt_max of *TIME";
+  if (limiting_block < 0) return model.sources.words("max_step");
   return "elements of part " + std::to_string(blocks[limiting_block].part_id());
 }
 

@@ -43,7 +43,8 @@ void Simulation::Impl::couple_heat() {
                          material_name(material) +
                              ": thermal softening (m, T0, Tm) and the failure strain's thermal "
                              "factor (d5) need a temperature field; give the material thermal "
-                             "properties (thpid)");
+                             "properties (" +
+                             model.sources.words("thermal_properties") + ")");
       continue;
     }
     if (info.block < 0) continue;

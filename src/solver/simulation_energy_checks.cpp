@@ -43,16 +43,16 @@ void Simulation::Impl::check_initial_energies() const {
     }
     if (std::isfinite(kinetic)) continue;
     const Part* part = model.find_part(p.part_id);
-    throw InputError(part ? part->where : SourceLocation{},
-                     fmt::format("part {} has kinetic energy {} at the start (mass {:.4g}, "
-                                 "fastest node {:.4g}); expected a finite number: check the "
-                                 "density and *INITIAL_VELOCITY",
-                                 p.part_id, kinetic, p.mass, speed));
+    throw InputError(
+        part ? part->where : SourceLocation{},
+        fmt::format("part {} has kinetic energy {} at the start (mass {:.4g}, "
+                    "fastest node {:.4g}); expected a finite number: check the "
+                    "density and {}",
+                    p.part_id, kinetic, p.mass, speed, model.sources.words("initial_velocity")));
   }
   if (const std::string fault = energy_fault(); !fault.empty())
-    throw InputError(fault +
-                     " at the start; check the densities, *INITIAL_VELOCITY and the "
-                     "contact stiffness");
+    throw InputError(fault + " at the start; check the densities, " +
+                     model.sources.words("initial_velocity") + " and the contact stiffness");
 }
 
 }  // namespace abut

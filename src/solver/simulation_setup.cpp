@@ -140,9 +140,10 @@ void Simulation::Impl::setup() {
                   std::to_string(part.id) + " share nodes; give each rigid part its own nodes");
         if (node_fixed[node] != 0)
           throw InputError(part.where, "node " + std::to_string(mesh.nodes.id[node]) +
-                                           " of rigid part " + std::to_string(part.id) +
-                                           " has a *NODE bc; constrain a rigid "
-                                           "part as a whole with *BC_MOTION (entype P)");
+                                           " of rigid part " + std::to_string(part.id) + " has " +
+                                           model.sources.words("boundary_condition") +
+                                           " of its own; constrain a rigid part with " +
+                                           model.sources.words("rigid_motion"));
         rigid_body_of_node[node] = static_cast<std::int32_t>(bodies.size());
       }
       bodies.push_back(std::move(body));
@@ -239,7 +240,8 @@ void Simulation::Impl::setup() {
                          "part " + std::to_string(cell.part) + ": heat conduction in " +
                              std::string(element_label(cell.type)) +
                              " elements is not supported yet (8-node hexahedra and shells "
-                             "conduct heat); give its material no thermal properties (thpid)");
+                             "conduct heat); give its material no thermal properties (" +
+                             model.sources.words("thermal_properties") + ")");
     }
     heat.emplace(model);
     if (!heat->active()) heat.reset();

@@ -38,8 +38,10 @@ std::vector<ContactInterface::NodeTie> search(const Model& model, const TieSpec&
                                   secondary);
     return search.node_ties();
   } catch (const ContactSetupError& e) {
-    SourceLocation where = tie.where;
-    if (e.setting() == "detection_depth") where.field = "depth";
+    const bool own = e.setting() == "detection_depth" || e.setting() == "edge_tolerance" ||
+                     e.setting() == "edge_angle";
+    const SourceLocation where =
+        own ? model.sources.of(SourceEntity::Tie, tie.id, e.setting(), tie.where) : tie.where;
     throw InputError(where, std::string("exact tie ") + std::to_string(tie.id) + ": " + e.what());
   }
 }
@@ -54,18 +56,19 @@ std::vector<TiedNode> find_tied_nodes(const Model& model) {
     const TieSpec& spec = model.ties[t];
     const std::vector<ContactInterface::NodeTie> found = search(model, spec);
     if (found.empty())
-      throw InputError(spec.exact_where,
+      throw InputError(exact_tie_place(model, spec),
                        "exact tie " + std::to_string(spec.id) +
                            " binds no node: no node of surface 1 lies within the detection depth "
-                           "of a facet of surface 2 at t = 0 (set depth of *CONTACT_NORMAL)");
+                           "of a facet of surface 2 at t = 0 (set " +
+                           model.sources.words("detection_depth") + ")");
     for (const ContactInterface::NodeTie& f : found) {
       const auto s = static_cast<std::size_t>(f.node);
       if (tie_of[s] >= 0)
-        throw InputError(spec.exact_where, node_name(model, f.node) + " is tied by exact tie " +
-                                               std::to_string(model.ties[tie_of[s]].id) +
-                                               " already (at line " +
-                                               std::to_string(model.ties[tie_of[s]].where.line) +
-                                               "): a node can follow one facet only");
+        throw InputError(exact_tie_place(model, spec),
+                         node_name(model, f.node) + " is tied by exact tie " +
+                             std::to_string(model.ties[tie_of[s]].id) + " already (at line " +
+                             std::to_string(model.ties[tie_of[s]].where.line) +
+                             "): a node can follow one facet only");
       tie_of[s] = static_cast<std::int32_t>(t);
       TiedNode n;
       n.node = f.node;
@@ -91,7 +94,7 @@ std::vector<TiedNode> find_tied_nodes(const Model& model) {
     for (int k = 0; k < n.count; ++k)
       if (const std::int32_t other = tie_of[static_cast<std::size_t>(n.main[k])]; other >= 0) {
         const TieSpec& spec = model.ties[n.tie];
-        throw InputError(spec.exact_where,
+        throw InputError(exact_tie_place(model, spec),
                          node_name(model, n.main[k]) + " of a facet that exact tie " +
                              std::to_string(spec.id) + " binds " + node_name(model, n.node) +
                              " to is itself tied (by exact tie " +
@@ -114,7 +117,7 @@ std::vector<LinearConstraint> tie_constraints(const Model& model,
   for (const TiedNode& n : tied)
     for (int d = 0; d < 3; ++d) {
       LinearConstraint c;
-      c.where = model.ties[n.tie].exact_where;
+      c.where = exact_tie_place(model, model.ties[n.tie]);
       c.terms.push_back({n.node, d, 1.0});
       for (int k = 0; k < n.count; ++k) c.terms.push_back({n.main[k], d, -n.weight[k]});
       out.push_back(std::move(c));

@@ -26,6 +26,11 @@ struct TiedNode {
   Vec3 offset;
 };
 
+// Where the input asks for the exact tie (Sources "exact"), for its errors.
+inline SourceLocation exact_tie_place(const Model& model, const TieSpec& tie) {
+  return model.sources.of(SourceEntity::Tie, tie.id, "exact", tie.where);
+}
+
 // Every tied node of the model's exact ties, by tie then node. InputError at the tie for a tie that
 // binds no node, a node tied by two ties (at the second), and a node that is both tied and a main
 // node of a tie (chains are not resolved).

@@ -42,23 +42,23 @@ KinematicTies::KinematicTies(const Model& model, std::vector<TiedNode> tied,
     const std::string who = node_name(model, t.node) + ", tied by exact tie " +
                             std::to_string(spec.id) + " to a facet,";
     if (rigid_body_of_node[s] >= 0)
-      throw InputError(spec.exact_where,
+      throw InputError(exact_tie_place(model, spec),
                        who +
                            " is a node of a rigid part: tie the rigid part's facets as surface 2 "
                            "instead (not supported yet either)");
     if ((node_fixed[s] & 7u) != 0 || moved[s])
-      throw InputError(spec.exact_where,
-                       who +
-                           " has a boundary condition (*NODE bc or *BC_MOTION): it moves with "
-                           "its facet only; constrain the facet's nodes instead");
+      throw InputError(exact_tie_place(model, spec),
+                       who + " has " + model.sources.words("boundary_condition") +
+                           ": it moves with its facet only; constrain the facet's nodes instead");
     Vec3 v_facet;
     for (int k = 0; k < t.count; ++k) {
       const auto a = static_cast<std::size_t>(t.main[k]);
       if (rigid_body_of_node[a] >= 0)
-        throw InputError(spec.exact_where,
+        throw InputError(exact_tie_place(model, spec),
                          who + " would follow " + node_name(model, t.main[k]) +
                              " of a rigid part: exact ties to rigid parts are not supported yet "
-                             "(tie with the penalty, tie = PENALTY)");
+                             "(tie with the penalty instead: " +
+                             model.sources.words("tie_by_penalty") + ")");
       if (role_[a] == kFree) role_[a] = kMain;
       added_mass_[a] += t.weight[k] * mass[s];
       v_facet += Vec3{vx[a], vy[a], vz[a]} * t.weight[k];
@@ -68,10 +68,11 @@ KinematicTies::KinematicTies(const Model& model, std::vector<TiedNode> tied,
     const Vec3 v{vx[s], vy[s], vz[s]};
     const double scale = std::max({norm(v), norm(v_facet), 1e-300});
     if (norm(v - v_facet) > 1e-9 * scale)
-      throw InputError(spec.exact_where,
+      throw InputError(exact_tie_place(model, spec),
                        who +
                            " starts with a velocity other than its facet point's: give the tied "
-                           "bodies the same initial velocity (*INITIAL_VELOCITY)");
+                           "bodies the same initial velocity (" +
+                           model.sources.words("initial_velocity") + ")");
   }
   for (std::size_t i = 0; i < n; ++i)
     if (role_[i] == kMain) main_nodes_.push_back(static_cast<std::int32_t>(i));

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <string>
 
+#include "abut/solver/simulation.hpp"
 #include "test_deck_helpers.hpp"
 
 namespace abut {
@@ -56,6 +57,11 @@ ContactSpec contact_of(const std::string& extra) {
   return m.contacts.at(0);
 }
 
+// Where the deck with `extra` gives `setting` of contact 3 (Sources; empty: not given).
+SourceLocation place_of(const std::string& extra, std::string_view setting) {
+  return model_of(kContact + extra).sources.of(SourceEntity::Contact, 3, setting);
+}
+
 // The error of `extra` appended to the two blocks with *CONTACT 3: its message, checked to be at
 // line kLine + row_offset (the keyword's first row is kLine + 1) and in field `field`.
 std::string error_at(const std::string& extra, std::size_t line, const std::string& field) {
@@ -70,12 +76,15 @@ TEST(DeckContactDiscretization, NodeToSurfaceAndSymmetry) {
   const ContactSpec c = contact_of("*CONTACT_DISCRETIZATION\n3, N2S, 0\n");
   EXPECT_EQ(c.discretisation, Discretisation::NodeToSurface);
   EXPECT_EQ(c.symmetric, false);
-  EXPECT_EQ(c.discretisation_where.line, kLine + 1);
+  const SourceLocation method = place_of("*CONTACT_DISCRETIZATION\n3, N2S, 0\n", "discretisation");
+  EXPECT_EQ(method.line, kLine + 1);
+  EXPECT_EQ(method.keyword, "*CONTACT_DISCRETIZATION");
+  EXPECT_EQ(method.field, "method");
 
   const ContactSpec d = contact_of("*CONTACT_DISCRETIZATION\n3\n");
   EXPECT_EQ(d.discretisation, Discretisation::SurfaceToSurface);
   EXPECT_FALSE(d.symmetric.has_value());
-  EXPECT_EQ(d.discretisation_where.line, kLine + 1);
+  EXPECT_EQ(place_of("*CONTACT_DISCRETIZATION\n3\n", "symmetric").field, "symmetric");
   EXPECT_EQ(contact_of("*CONTACT_DISCRETIZATION\n3, s2s, 1\n").symmetric, true);
   EXPECT_FALSE(d.small_sliding);  // OptiStruct TRACK: FINITE by default in abut
   EXPECT_TRUE(contact_of("*CONTACT_DISCRETIZATION\n3, S2S, , small\n").small_sliding);
@@ -86,7 +95,7 @@ TEST(DeckContactDiscretization, NodeToSurfaceAndSymmetry) {
   const ContactSpec e = contact_of("");
   EXPECT_EQ(e.discretisation, Discretisation::SurfaceToSurface);
   EXPECT_FALSE(e.symmetric.has_value());
-  EXPECT_TRUE(e.discretisation_where.file.empty());
+  EXPECT_TRUE(place_of("", "discretisation").file.empty());
 }
 
 TEST(DeckContactDiscretization, NodeSetIsSurfaceOneOfNodeToSurfaceOnly) {
@@ -174,7 +183,9 @@ TEST(DeckContactNormal, CurveSenseDepthClearance) {
   EXPECT_EQ(c.sense, ContactSense::Bilateral);
   EXPECT_EQ(c.detection_depth, 0.05);
   EXPECT_EQ(c.clearance, -0.001);
-  EXPECT_EQ(c.normal_where.line, kLine + 1);
+  const SourceLocation depth = m.sources.of(SourceEntity::Contact, 3, "detection_depth");
+  EXPECT_EQ(depth.line, kLine + 1);
+  EXPECT_EQ(depth.field, "depth");
 
   const ContactSpec d = contact_of("*CONTACT_NORMAL\n3\n");
   EXPECT_FALSE(d.penalty_curve.valid());
@@ -213,7 +224,7 @@ TEST(DeckContactFriction, CoulombTrescaAndFilter) {
   EXPECT_EQ(c.tangential_penalty, 1.0e12);
   EXPECT_EQ(c.friction_filter.kind, FrictionFilter::Kind::Simple);
   EXPECT_DOUBLE_EQ(c.friction_filter.xfreq, 0.5);
-  EXPECT_EQ(c.friction_where.line, kLine + 1);
+  EXPECT_EQ(place_of("*CONTACT_FRICTION\n3, coulomb, 0.3\n", "tangential_law").line, kLine + 1);
 
   c = contact_of("*CONTACT_FRICTION\n3, coulomb, 0.3\n");
   EXPECT_DOUBLE_EQ(c.mu_dynamic, 0.3);
@@ -344,7 +355,7 @@ TEST(DeckContactStiffness, RulesAndBounds) {
   EXPECT_DOUBLE_EQ(c.stiffness.minimum, 1.0e3);
   EXPECT_DOUBLE_EQ(c.stiffness.maximum, 1.0e9);
   EXPECT_FALSE(c.element_penalty);
-  EXPECT_EQ(c.stiffness_where.line, kLine + 1);
+  EXPECT_EQ(place_of("*CONTACT_STIFFNESS\n3, 1000\n", "stiffness").field, "rule");
   c = contact_of("*CONTACT_STIFFNESS\n3, 1000\n");
   EXPECT_EQ(c.stiffness.rule, StiffnessRule::Main);
   EXPECT_DOUBLE_EQ(c.stiffness.scale, 1.0);
@@ -502,7 +513,7 @@ TEST(DeckContactInitial, PenetrationAndAdjust) {
   ContactSpec c = contact_of("*CONTACT_INITIAL\n3, SHIFT, 0.001\n");
   EXPECT_EQ(c.initial_penetration, InitialPenetration::Shift);
   EXPECT_EQ(c.adjust_depth, 0.001);
-  EXPECT_EQ(c.initial_where.line, kLine + 1);
+  EXPECT_EQ(place_of("*CONTACT_INITIAL\n3, -1, auto\n", "adjust").line, kLine + 1);
   c = contact_of("*CONTACT_INITIAL\n3, -1, auto\n");
   EXPECT_EQ(c.initial_penetration, InitialPenetration::Force);
   EXPECT_EQ(c.adjust_depth, -1.0);
@@ -534,6 +545,88 @@ TEST(DeckContactInitial, Errors) {
     EXPECT_EQ(e.where().line, lines_of(deck) + 2);
     EXPECT_EQ(e.where().field, "penetration");
     EXPECT_THAT(e.message(), HasSubstr("replaces delta0_offset and delta0_max"));
+  }
+}
+
+// Where each setting of a contact is (Sources): the field of the deck reference for every setting
+// the contact library or the solvers may report, so that their errors point at it.
+TEST(DeckContactSources, EverySettingIsAtItsField) {
+  const std::string deck = kTwoBlocks +
+                           "*CONTACT\n3, 2\nP, 1, P, 2, 0.0, , 0.0, 1.0\n0, 0.1, , , 0.0, , 0.0\n"
+                           ", , , 20.0, 0, 0, , 0\n"
+                           "*CONTACT_NORMAL\n3, LINEAR, , POSITIVE, 0.05\n"
+                           "*CONTACT_FRICTION\n3, COULOMB, 0.3, 0.2, 1e9\n"
+                           "*CONTACT_DISCRETIZATION\n3, S2S, 1\n"
+                           "*CONTACT_GAP\n3\n"
+                           "*CONTACT_EDGE\n3, SHARP_ALL_SHELLS\n"
+                           "*CONTACT_EROSION\n3, KEEP\n"
+                           "*CONTACT_ADHESION\n3, 0.001, 1e5\n"
+                           "*CONTACT_STIFFNESS\n3, 1000\n"
+                           "*CONTACT_INITIAL\n3, -1\n";
+  const Model m = model_of(deck);
+  struct Expected {
+    const char *setting, *keyword, *field;
+    std::size_t line;  // after the line of *CONTACT
+  };
+  // The fields of docs/deck-reference.md, chosen before the run.
+  const Expected expected[] = {
+      {"accuracy_level", "*CONTACT", "accuracy_level", 1},
+      {"surface1", "*CONTACT", "enid_1", 2},
+      {"surface2", "*CONTACT", "enid_2", 2},
+      {"penalty", "*CONTACT", "pfac", 2},
+      {"begin_time", "*CONTACT", "t_beg", 2},
+      {"end_time", "*CONTACT", "t_end", 2},
+      {"damping", "*CONTACT", "xi", 3},
+      {"regions", "*CONTACT", "gid_0", 3},
+      {"initial_offset", "*CONTACT", "delta0_offset", 3},
+      {"initial_max", "*CONTACT", "delta0_max", 3},
+      {"edge_tolerance", "*CONTACT", "delta_edge", 3},
+      {"thermal", "*CONTACT", "fid_thermal", 4},
+      {"edge_angle", "*CONTACT", "alpha_edge", 4},
+      {"one_way", "*CONTACT", "one_way", 4},
+      {"stick_stress", "*CONTACT", "sigma_stick", 4},
+      {"friction_heat", "*CONTACT", "fric_heat", 4},
+      {"normal_law", "*CONTACT_NORMAL", "law", 6},
+      {"sense", "*CONTACT_NORMAL", "sense", 6},
+      {"detection_depth", "*CONTACT_NORMAL", "depth", 6},
+      {"clearance", "*CONTACT_NORMAL", "clearance", 6},
+      {"tangential_law", "*CONTACT_FRICTION", "law", 8},
+      {"tangential_penalty", "*CONTACT_FRICTION", "pen_t", 8},
+      {"friction_filter", "*CONTACT_FRICTION", "filter", 8},
+      {"discretisation", "*CONTACT_DISCRETIZATION", "method", 10},
+      {"symmetric", "*CONTACT_DISCRETIZATION", "symmetric", 10},
+      {"small_sliding", "*CONTACT_DISCRETIZATION", "sliding", 10},
+      {"gaps", "*CONTACT_GAP", "igap", 12},
+      {"shell_sides", "*CONTACT_GAP", "shell_side", 12},
+      {"edges", "*CONTACT_EDGE", "iedge", 14},
+      {"erosion", "*CONTACT_EROSION", "facets", 16},
+      {"adhesion", "*CONTACT_ADHESION", "gap", 18},
+      {"stiffness", "*CONTACT_STIFFNESS", "rule", 20},
+      {"initial_penetration", "*CONTACT_INITIAL", "penetration", 22},
+      {"adjust", "*CONTACT_INITIAL", "adjust", 22},
+  };
+  for (const Expected& e : expected) {
+    const SourceLocation at = m.sources.of(SourceEntity::Contact, 3, e.setting);
+    EXPECT_EQ(at.file, "t.k") << e.setting;
+    EXPECT_EQ(at.keyword, e.keyword) << e.setting;
+    EXPECT_EQ(at.field, e.field) << e.setting;
+    EXPECT_EQ(at.line, lines_of(kTwoBlocks) + 1 + e.line) << e.setting;
+  }
+}
+
+// A solver's error about a setting is at that setting's field, and asks for what to give in the
+// dialect's words: here the automatic penalty, which needs units (seed 000) or pfac.
+TEST(DeckContactSources, TheSolverAsksInTheDecksWords) {
+  std::string deck = kTwoBlocks + "*CONTACT\n3\nP, 1, P, 2\n";
+  deck.erase(0, std::string("*UNIT_SYSTEM\nSI\n").size());
+  const Model m = model_of(deck);
+  try {
+    const Simulation sim(m);
+    ADD_FAILURE() << "expected an error for the missing penalty";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().field, "pfac") << e.what();
+    EXPECT_EQ(e.where().line, lines_of(deck)) << e.what();  // the row of the surfaces and pfac
+    EXPECT_THAT(e.what(), HasSubstr("neither pfac of *CONTACT nor *UNIT_SYSTEM is given"));
   }
 }
 

@@ -56,6 +56,11 @@ ContactSpec contact_of(const std::string& extra) {
   return m.contacts.at(0);
 }
 
+// Where the deck with `extra` gives `setting` of contact 3 (Sources; empty: not given).
+SourceLocation place_of(const std::string& extra, std::string_view setting) {
+  return model_of(kContact + extra).sources.of(SourceEntity::Contact, 3, setting);
+}
+
 // The error of `extra` appended to the two blocks with *CONTACT 3: its message, checked to be at
 // line kLine + row_offset (the keyword's first row is kLine + 1) and in field `field`.
 std::string error_at(const std::string& extra, std::size_t line, const std::string& field) {
@@ -72,7 +77,8 @@ TEST(DeckContactGap, RadiossVariableGaps) {
   EXPECT_FALSE(c.gaps.mesh_fraction.has_value());
   EXPECT_FALSE(c.gaps.skip_close);
   EXPECT_FALSE(c.gaps.zero_at_free_edges);
-  EXPECT_EQ(c.gap_where.line, kLine + 1);
+  EXPECT_EQ(place_of("*CONTACT_GAP\n3\n", "gaps").line, kLine + 1);
+  EXPECT_EQ(place_of("*CONTACT_GAP\n3\n", "shell_sides").field, "shell_side");
   c = contact_of("*CONTACT_GAP\n3, 3, 0.8, , 2.0e-3, 1.0e-3, 1\n");
   ASSERT_TRUE(c.gaps.mesh_fraction.has_value());
   EXPECT_DOUBLE_EQ(*c.gaps.mesh_fraction, 0.4);  // the Radioss default %mesh_size
@@ -119,7 +125,7 @@ TEST(DeckContactEdge, RadiossEdgeOptions) {
   ContactSpec c = contact_of("*CONTACT_EDGE\n3, 11, 120\n");
   EXPECT_EQ(c.edges.selection, EdgeSelection::SharpSolidEdges);
   EXPECT_DOUBLE_EQ(c.edges.angle, 120.0);
-  EXPECT_EQ(c.edge_where.line, kLine + 1);
+  EXPECT_EQ(place_of("*CONTACT_EDGE\n3, SHARP_ALL_SHELLS\n", "edges").line, kLine + 1);
   c = contact_of("*CONTACT_EDGE\n3, SHARP_ALL_SHELLS\n");
   EXPECT_EQ(c.edges.selection, EdgeSelection::SharpSolidAllShells);
   EXPECT_DOUBLE_EQ(c.edges.angle, 135.0);  // the Radioss default

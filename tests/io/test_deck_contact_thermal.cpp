@@ -40,7 +40,8 @@ TEST(DeckContactThermal, EachLawOfContactThermal) {
     EXPECT_EQ(c.conductance->nominal, 1e4);
     EXPECT_EQ(c.conductance->hardness, 2e9);
     EXPECT_EQ(c.conductance->exponent, 0.8);
-    EXPECT_EQ(c.thermal_where.line, 17u);  // the row of *CONTACT_THERMAL
+    // The row of *CONTACT_THERMAL.
+    EXPECT_EQ(m.sources.of(SourceEntity::Contact, c.id, "conductance").line, 17u);
   }
   {
     const Model m = model_of(with_contact("*CONTACT_THERMAL\n5, OPEN_CLOSED, 500, 5, , 0.25\n"));
@@ -90,8 +91,10 @@ TEST(DeckContactThermal, NeedsThermalPropertiesToRun) {
     Simulation sim(m);
     ADD_FAILURE() << "expected an InputError";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.where().line, 14u);  // the ctid row of *CONTACT
-    EXPECT_THAT(e.message(), HasSubstr("thermal properties (thpid)"));
+    EXPECT_EQ(e.where().line, 17u);  // the row of *CONTACT_THERMAL
+    EXPECT_EQ(e.where().field, "law");
+    EXPECT_THAT(e.message(),
+                HasSubstr("thermal properties (thpid of the material and its *PROP_THERMAL)"));
   }
   const Model both = model_of(std::string(kBoxModel) +
                               "*FUNCTION\n7\n100\n*CONTACT\n5\nP, 1, P, 1\n0\n0, 0, 7\n"

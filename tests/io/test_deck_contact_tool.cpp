@@ -104,7 +104,7 @@ TEST(DeckContactTool, MistakesNameTheirFileLineAndField) {
   expect_error(with_tool(plane, "*CONTACT_EROSION\n5, KEEP\n"), "5, KEEP", "facets",
                "*CONTACT_EROSION with an analytic tool");
   expect_error(with_tool(plane, "*CONTACT_FRICTION\n5, FREEZE, , , , , , EXACT\n", "P, 1, TOOL, 7"),
-               "5\nP, 1, TOOL, 7", "enid_2", "an analytic tool (*CONTACT_TOOL) cannot be tied");
+               "P, 1, TOOL, 7", "enid_2", "an analytic tool (*CONTACT_TOOL) cannot be tied");
   expect_error(with_tool(plane, "*CONTACT_GAP\n5, , , , , , , , , ROUND\n"), "5, , , , ,", "ishape",
                "ishape with an analytic tool");
 }

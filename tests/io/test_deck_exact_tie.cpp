@@ -60,8 +60,9 @@ TEST(DeckExactTie, BecomesATie) {
   EXPECT_EQ(t.id, 3);
   EXPECT_EQ(t.surface1.id, 2);
   EXPECT_EQ(t.surface2.id, 1);
-  EXPECT_EQ(t.exact_where.line, lines_of(kBlocks) + 5);
-  EXPECT_EQ(t.exact_where.field, "tie");
+  const SourceLocation exact = m.sources.of(SourceEntity::Tie, t.id, "exact");
+  EXPECT_EQ(exact.line, lines_of(kBlocks) + 5);
+  EXPECT_EQ(exact.field, "tie");
   // PENALTY (or nothing) keeps the penalty FREEZE contact.
   const Model p = model_of(kBlocks +
                            "*CONTACT\n3\nP, 2, P, 1\n*CONTACT_FRICTION\n3, FREEZE, , , , "

@@ -2,7 +2,12 @@
 #include <gmock/gmock.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
 
+#include "abut/io/run.hpp"
 #include "test_deck_helpers.hpp"
 
 namespace abut {
@@ -59,6 +64,36 @@ TEST(DeckControl, RangesAndUnsupportedOptions) {
   EXPECT_THAT(error_of("*TIME\n1\n*OUTPUT\n1e-3, 1e-4, 1e-2\n").message(), HasSubstr("dt_db"));
   EXPECT_THAT(error_of("*TIME\n1\n*OUTPUT\n1e-3\n0, 0, P, 1\n").message(),
               HasSubstr("state-file output"));
+}
+
+// *OUTPUT_FIELDS (abut's own) chooses the fields of the states; an explicit run then writes those
+// and part_id only.
+TEST(DeckControl, OutputFieldsChooseTheStatesFields) {
+  const Model m =
+      model_of(with_box("*OUTPUT\n1.0e-3\n*OUTPUT_FIELDS\nDisplacement, velocity\n"
+                        "von_mises_stress, velocity\n"));
+  ASSERT_TRUE(m.output.state_fields.has_value());
+  EXPECT_EQ(*m.output.state_fields,
+            (std::vector<std::string>{"displacement", "velocity", "von_mises_stress"}));
+  EXPECT_FALSE(model_of(kBoxModel).output.state_fields.has_value());  // every field
+  const InputError unknown = error_of(with_box("*OUTPUT_FIELDS\ndisplacement, strain\n"));
+  EXPECT_EQ(unknown.where().line, 14u);  // kBoxModel has 12 lines, then the keyword
+  EXPECT_EQ(unknown.where().field, "field_2");
+  EXPECT_THAT(unknown.message(), HasSubstr("expected a field of the states"));
+  EXPECT_THAT(error_of(with_box("*OUTPUT_FIELDS\nvelocity\n*OUTPUT_FIELDS\nwear\n")).message(),
+              HasSubstr("*OUTPUT_FIELDS is given twice"));
+
+  const auto dir = std::filesystem::temp_directory_path() / "abut_test_output_fields";
+  std::filesystem::remove_all(dir);
+  std::ostringstream log;
+  ASSERT_TRUE(run_simulation(m, {dir, 1, false}, log).stable) << log.str();
+  std::ifstream vtu(dir / "states" / "state_0001.vtu");
+  const std::string text((std::istreambuf_iterator<char>(vtu)), std::istreambuf_iterator<char>());
+  for (const char* field : {"displacement", "velocity", "von_mises_stress", "part_id"})
+    EXPECT_NE(text.find("Name=\"" + std::string(field) + "\""), std::string::npos) << field;
+  for (const char* field : {"pressure", "plastic_strain", "thickness"})
+    EXPECT_EQ(text.find("Name=\"" + std::string(field) + "\""), std::string::npos) << field;
+  std::filesystem::remove_all(dir);
 }
 
 // A dt_min above the model's first stable step is the deck's error (the run could not take a

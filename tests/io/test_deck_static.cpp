@@ -434,7 +434,7 @@ D, Z, 1, -0.002
 "press"
 1.0, 0.5, , , 0
 )";
-  const Model k = model_of(deck);
+  Model k = model_of(deck);
   StaticSolver solver(k);
   solver.run();
   const auto u = solver.displacement();
@@ -494,7 +494,7 @@ Z0, 3, 3
 TOP, 3, 3, -0.002
 *END STEP
 )";
-  const Model a = read_inp_string_with_notes(inp.str(), "block.inp").model;
+  Model a = read_inp_string_with_notes(inp.str(), "block.inp").model;
   ASSERT_EQ(a.mesh.nodes.size(), k.mesh.nodes.size());
   EXPECT_EQ(a.parts.at(0).solid_integration, Part::SolidIntegration::Full);
   StaticSolver inp_solver(a);
@@ -506,6 +506,20 @@ TOP, 3, 3, -0.002
     const std::size_t j = index.at(k.mesh.nodes.id[i]);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(u[3 * i + c], v[3 * j + c], 1e-9 * kDelta);
   }
+
+  // Two increments of 0.5 with room for one: the solver's message asks for the field of each
+  // dialect in its own words (Sources::words), not for both.
+  const auto too_few = [](Model& m) {
+    m.static_steps.at(0).max_increments = 1;
+    try {
+      StaticSolver(m).run();
+    } catch (const StaticConvergenceError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_THAT(too_few(k), HasSubstr("more than 1 increments needed (n_inc of *STATIC)"));
+  EXPECT_THAT(too_few(a), HasSubstr("more than 1 increments needed (INC of *STEP)"));
 }
 
 // The step's Newton controls reach the solver: a large-displacement step (20% compression in one

@@ -138,6 +138,16 @@ TEST_F(InpGmsh, ErrorsAreLocated) {
     EXPECT_EQ(e.where().line, 1u);
     EXPECT_NE(e.message().find("cannot open"), std::string::npos) << e.what();
   }
+  // A mesh too large for the memory: refused at SIZE before Gmsh meshes (as *INCLUDE_GMSH h).
+  write("big.geo", "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\n");
+  try {
+    read_inp_with_notes(write("d.inp", "*INCLUDE, INPUT=big.geo, SIZE=1.0e-5\n" + kModel));
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, 1u);
+    EXPECT_EQ(e.where().field, "SIZE");
+    EXPECT_NE(e.message().find("memory"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

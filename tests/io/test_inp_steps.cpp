@@ -309,7 +309,7 @@ SDV
   EXPECT_EQ(r.notes[1].rfind("t.inp:32: *EL PRINT: SDV left out", 0), 0u) << r.notes[1];
 }
 
-TEST(InpSteps, OutputOnlyCardsAndControlsAreNotedWithTheirLine) {
+TEST(InpSteps, ControlsAreNotedAndFileOutputChoosesTheStates) {
   const DeckResult r = read_inp_string_with_notes(kModel + R"(*STEP
 *STATIC
 *CONTROLS, PARAMETERS=LINE SEARCH
@@ -319,10 +319,13 @@ U
 *END STEP
 )",
                                                   "t.inp");
-  ASSERT_EQ(r.notes.size(), 2u);
+  ASSERT_EQ(r.notes.size(), 1u);
   EXPECT_EQ(r.notes[0].rfind("t.inp:25: *CONTROLS skipped", 0), 0u) << r.notes[0];
-  EXPECT_EQ(r.notes[1].rfind("t.inp:27: *NODE FILE is output only", 0), 0u) << r.notes[1];
   EXPECT_TRUE(r.model.static_steps.at(0).prints.empty());
+  // *NODE FILE chooses the states' fields and frequency (OutputRequests).
+  EXPECT_EQ(r.model.output.state_frequency, 2);
+  ASSERT_TRUE(r.model.output.state_fields.has_value());
+  EXPECT_EQ(*r.model.output.state_fields, (std::vector<std::string>{"displacement"}));
 }
 
 // *CONTROLS, PARAMETERS=FIELD sets R_n and C_n of the displacement field for this step and the

@@ -142,5 +142,35 @@ TEST(RunStatic, SteadyTemperatureInEveryState) {
   std::filesystem::remove_all(dir);
 }
 
+// The output cards choose the states' fields and how often they are written (CalculiX *NODE FILE
+// and *EL FILE, FREQUENCY: every n-th increment; abut adds each step's last). Four fixed
+// increments with FREQUENCY=3: the initial state, increment 3 and increment 4 (the step's end).
+TEST(RunStatic, OutputCardsChooseTheStatesFieldsAndFrequency) {
+  std::string deck = kDeck;
+  const std::string step = "*STEP\n*STATIC\n0.5, 1.\n";
+  deck.replace(deck.find(step), step.size(),
+               "*STEP\n*STATIC, DIRECT\n0.25, 1.\n*NODE FILE, FREQUENCY=3\nU\n*EL FILE\nS, E\n");
+  const DeckResult read = read_inp_string_with_notes(deck, "t.inp");
+  ASSERT_EQ(read.notes.size(), 1u);
+  EXPECT_NE(read.notes[0].find("*EL FILE: E not written"), std::string::npos) << read.notes[0];
+  const auto dir = std::filesystem::temp_directory_path() / "abut_test_run_static_output";
+  std::filesystem::remove_all(dir);
+  std::ostringstream log;
+  const RunReport report = run_static_analysis(read.model, {dir, 1, false}, log);
+  ASSERT_TRUE(report.stable) << log.str();
+  EXPECT_TRUE(std::filesystem::exists(dir / "states" / "state_0002.vtu"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "states" / "state_0003.vtu"));
+  std::ifstream vtu(dir / "states" / "state_0002.vtu");
+  const std::string text((std::istreambuf_iterator<char>(vtu)), std::istreambuf_iterator<char>());
+  for (const char* field : {"displacement", "stress", "von_mises_stress", "part_id"})
+    EXPECT_NE(text.find("Name=\"" + std::string(field) + "\""), std::string::npos) << field;
+  for (const char* field : {"force", "plastic_strain", "strain_energy"})
+    EXPECT_EQ(text.find("Name=\"" + std::string(field) + "\""), std::string::npos) << field;
+  // The histories keep every increment.
+  std::string header;
+  EXPECT_EQ(csv_rows(dir / "energy.csv", header).size(), 4u);
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace abut

@@ -63,7 +63,7 @@ TEST(ContactSetup, ThermalOptionsNeedThermalProperties) {
   EXPECT_NE(message_of(two_blocks(units, "P, 1, P, 2\n0\n0, 0, 5\n")).find("thpid"),
             std::string::npos);
   EXPECT_NE(message_of(two_blocks(units, "P, 1, P, 2\n0\n0, 0, , 20.0, 0, 0, , 1\n"))
-                .find("fric_heat needs a temperature field"),
+                .find("friction heat needs a temperature field"),
             std::string::npos);
 }
 

@@ -51,10 +51,11 @@ TEST(StaticContactSetup, SymmetricContactsRunBothWays) {
 }
 
 TEST(StaticContactSetup, ExplicitOnlyFeaturesAreErrorsAtTheirCard) {
-  const auto expect_error = [](const std::function<void(ContactSpec&)>& change,
+  // `change` alters the contact and may say where the input gave the setting (Sources).
+  const auto expect_error = [](const std::function<void(ContactSpec&, Sources&)>& change,
                                const std::string& message) {
     Model m = stacked();
-    change(m.contacts[0]);
+    change(m.contacts[0], m.sources);
     try {
       const StaticSolver s(m);
       ADD_FAILURE() << "expected an error containing '" << message << "'";
@@ -63,23 +64,24 @@ TEST(StaticContactSetup, ExplicitOnlyFeaturesAreErrorsAtTheirCard) {
       EXPECT_EQ(e.where().file, "t.k") << e.what();
     }
   };
-  expect_error([](ContactSpec& c) { c.begin_time = 0.5; }, "activation window");
-  expect_error([](ContactSpec& c) { c.stick_stress = 10.0; }, "sigma_stick");
+  expect_error([](ContactSpec& c, Sources&) { c.begin_time = 0.5; }, "activation window");
+  expect_error([](ContactSpec& c, Sources&) { c.stick_stress = 10.0; },
+               "sticking up to a failure stress");
   expect_error(
-      [](ContactSpec& c) {
+      [](ContactSpec& c, Sources& s) {
         c.friction_filter.kind = FrictionFilter::Kind::Simple;
-        c.friction_where = {"t.k", 9, "", ""};
+        s.set(SourceEntity::Contact, c.id, "friction_filter", {"t.k", 9, "", ""});
       },
       "friction filtering is not supported in static steps");
   expect_error(
-      [](ContactSpec& c) {
+      [](ContactSpec& c, Sources& s) {
         c.sense = ContactSense::Bilateral;
-        c.normal_where = {"t.k", 11, "", ""};
+        s.set(SourceEntity::Contact, c.id, "sense", {"t.k", 11, "", ""});
       },
       "contact sense");
-  expect_error([](ContactSpec& c) { c.surface1 = c.surface2; }, "self contact");
+  expect_error([](ContactSpec& c, Sources&) { c.surface1 = c.surface2; }, "self contact");
   expect_error(
-      [](ContactSpec& c) {
+      [](ContactSpec& c, Sources&) {
         ContactSpec::FrictionPair& pair = c.friction_pairs.emplace_back();
         pair.law = ContactSpec::FrictionLaw::Coulomb;
         pair.mu_static = pair.mu_dynamic = 0.2;

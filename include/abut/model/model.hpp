@@ -19,6 +19,8 @@
 #include "abut/mesh/mesh.hpp"
 #include "abut/model/model_static.hpp"
 #include "abut/model/model_thermal.hpp"
+#include "abut/model/output.hpp"
+#include "abut/model/sources.hpp"
 
 namespace abut {
 
@@ -27,15 +29,8 @@ struct TimeControl {
   double end_time = 0.0;          // t_term
   double step_scale = 0.9;        // sf_dt
   double min_step = 0.0;          // dt_min: the run stops if the stable step falls below it
-  SourceLocation min_step_where;  // the dt_min field (a dt_min above the first step is its error)
   double max_step = 1e10;         // dt_max
   double start_time = 0.0;        // t_start
-};
-
-// *OUTPUT (0 = the reference default: t_term/100 for states, t_term/1000 for histories)
-struct OutputControl {
-  double state_interval = 0.0;
-  double history_interval = 0.0;
 };
 
 // *CONTROL_BULK_VISCOSITY: the artificial bulk viscosity of every deformable hexahedron
@@ -189,7 +184,6 @@ struct ContactSpec {
   std::optional<Conductance> conductance;
   FunctionRef distance_conductance;        // Distance: h(gap) (Radioss)
   double friction_heat_to_surface1 = 0.5;  // share of the friction heat going to surface 1
-  SourceLocation thermal_where;            // *CONTACT_THERMAL, empty when absent
   bool exchanges_heat() const { return thermal.valid() || conductance || friction_heat; }
 
   // *CONTACT_DISCRETIZATION
@@ -251,7 +245,6 @@ struct ContactSpec {
     }
   };
   std::vector<Dependency> dependencies;
-  SourceLocation dependency_where;
   // *CONTACT_STIFFNESS
   StiffnessSettings stiffness;
   bool element_penalty = false;  // rule ELEMENT: automatic penalty from the element step
@@ -270,8 +263,6 @@ struct ContactSpec {
   std::optional<double> adjust_depth;
   // ADJUST = SET of GRID (seed 003): only the secondary nodes in this node set are adjusted.
   std::optional<EntityRef> adjust_nodes;
-  // Where each contact keyword was given (for errors), empty when absent.
-  SourceLocation normal_where, friction_where, stiffness_where, initial_where, discretisation_where;
   GapSettings gaps;  // *CONTACT_GAP
   // *CONTACT_GAP shell_side (OptiStruct MORIENT, seed 003): which sides of surface 2's shells act.
   // Both: two-sided shells (OPENGAP); Normal / Reverse: one side on the mid-surface (NORM,
@@ -280,7 +271,6 @@ struct ContactSpec {
   enum class ShellSides { Both, Normal, Reverse, Overlap } main_shell_sides = ShellSides::Both;
   ErosionSettings erosion;  // *CONTACT_EROSION
   EdgeSettings edges;       // *CONTACT_EDGE
-  SourceLocation gap_where, erosion_where, edge_where;
   // Abaqus/CalculiX *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL (CalculiX form): the
   // pressure is p0 at zero distance and falls exponentially to 1% of p0 at the clearance c0.
   struct Exponential {
@@ -314,11 +304,9 @@ struct ContactSpec {
   // until it is on); t_beg and t_end are then not used (seed 004, comment 10). Explicit runs.
   std::optional<std::int64_t> sensor;
   bool sensor_switches_off = false;
-  SourceLocation sensor_where;
   // *CONTACT_RELEASE_BC (Radioss IBCX, IBCY, IBCZ): DofMask bits of the fixed directions released
   // on every node of surface 1 from its first contact. Explicit runs.
   std::uint8_t release_bc = 0;
-  SourceLocation release_bc_where;
 };
 
 // *CONTACT_TOOL (abut's own, after Metafor's analytic rigid contact matrices, seed 002): a plane,
@@ -346,8 +334,7 @@ struct TieSpec {
   bool merge = false;
   std::optional<double> detection_depth;  // *CONTACT_NORMAL depth (empty: the contact default)
   double edge_tolerance = 0.0, edge_angle = contact_defaults::kEdgeAngle;
-  SourceLocation where;        // the *CONTACT
-  SourceLocation exact_where;  // the field that asks for the exact tie
+  SourceLocation where;  // the contact (Sources: "exact", the field that asks for the tie)
 };
 
 // A geometry of *GEOMETRY_* with its id.
@@ -362,7 +349,7 @@ struct Model {
   std::string deck_path;
   std::optional<UnitSystem> units;  // set by *UNIT_SYSTEM
   TimeControl time;
-  OutputControl output;
+  OutputRequests output;  // output.hpp
   BulkViscosity bulk_viscosity;
 
   Mesh mesh;
@@ -391,6 +378,8 @@ struct Model {
   std::vector<LinearConstraint> equations;
   // Heat (model_thermal.hpp): empty properties = no temperature field.
   ThermalModel thermal;
+  // Where the input gave the settings, and its words for them (sources.hpp): the reader fills it.
+  Sources sources;
 
   // Look-ups by user id; nullptr when absent.
   const Part* find_part(std::int64_t id) const;
@@ -399,6 +388,10 @@ struct Model {
   // The *CONTACT_TOOL of an entity of type Tool; InputError at its location if it does not exist.
   const RigidTool& tool(const EntityRef& entity) const;
   const MaterialParams& material_of_part(std::int64_t part_id) const;
+  // Where the input gave `setting` of contact c (sources), else the contact's own place; and
+  // whether it gave it.
+  SourceLocation place_of(const ContactSpec& c, std::string_view setting) const;
+  bool gives(const ContactSpec& c, std::string_view setting) const;
 
   // Node indices of an entity (sorted, unique); InputError at the entity's location if the
   // id does not exist.

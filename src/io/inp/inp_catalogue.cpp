@@ -48,6 +48,13 @@ const std::map<std::string, KeywordEntry>& supported() {
         {"*EL PRINT", read_el_print, Scope::Step},
         {"*CONTACT PRINT", read_contact_print, Scope::Step},
         {"*CONTROLS", read_controls, Scope::Either},
+        {"*NODE FILE", read_node_file, Scope::Either},
+        {"*NODE OUTPUT", read_node_file, Scope::Either},
+        {"*EL FILE", read_el_file, Scope::Either},
+        {"*ELEMENT OUTPUT", read_el_file, Scope::Either},
+        {"*CONTACT FILE", read_contact_file, Scope::Either},
+        {"*CONTACT OUTPUT", read_contact_file, Scope::Either},
+        {"*OUTPUT", read_output, Scope::Either},
     };
     std::map<std::string, KeywordEntry> m;
     for (const KeywordEntry& e : entries) m.emplace(lookup_key(e.name), e);
@@ -62,16 +69,10 @@ struct Described {
 
 constexpr std::string_view kOutput =
     "is output only: skipped (abut writes its own results; *NODE PRINT, *EL PRINT and *CONTACT "
-    "PRINT requests are kept in the model)";
+    "PRINT requests are kept in the model, and *NODE FILE, *EL FILE and *OUTPUT choose the "
+    "states' fields and frequency)";
 
 const Described kOutputOnly[] = {
-    {"*NODE FILE", kOutput},
-    {"*EL FILE", kOutput},
-    {"*CONTACT FILE", kOutput},
-    {"*NODE OUTPUT", kOutput},
-    {"*ELEMENT OUTPUT", kOutput},
-    {"*CONTACT OUTPUT", kOutput},
-    {"*OUTPUT", kOutput},
     {"*SECTION PRINT", kOutput},
     {"*FACE PRINT", kOutput},
     {"*ENERGY PRINT", kOutput},

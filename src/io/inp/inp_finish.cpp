@@ -321,6 +321,7 @@ void Reader::note_unattached_nodes() {
 }
 
 DeckResult Reader::finish() {
+  name_inp_words(model.sources);
   if (change_behaviour) {
     throw InputError(where(step().changes.back().where, "*CHANGE SURFACE BEHAVIOR"),
                      "*CHANGE SURFACE BEHAVIOR must be followed by a *SURFACE BEHAVIOR card with "

@@ -212,8 +212,22 @@ void finish_contacts(Reader& r) {
     c.initial_penetration = InitialPenetration::Force;
     c.adjust_depth = p.adjust;
     c.small_sliding = p.small_sliding;
+    // Where each setting is, for the errors found once the contact is built (Sources).
+    Sources& sources = r.model.sources;
+    const auto place = [&sources, id = c.id](std::string_view setting, SourceLocation where) {
+      sources.set(SourceEntity::Contact, id, setting, std::move(where));
+    };
+    place("surface1", c.surface1.where);
+    place("secondary_nodes", c.surface1.where);
+    place("surface2", c.surface2.where);
+    place("discretisation", r.where(p.where, "*CONTACT PAIR", "TYPE"));
+    place("small_sliding", r.where(p.where, "*CONTACT PAIR", "SMALL SLIDING"));
+    place("adjust", r.where(p.where, "*CONTACT PAIR", "ADJUST"));
     const Behaviour& b = *in.behaviour;
-    c.normal_where = r.where(b.where, "*SURFACE BEHAVIOR");
+    const SourceLocation normal_where =
+        r.where(b.where, "*SURFACE BEHAVIOR", "PRESSURE-OVERCLOSURE");
+    place("normal_law", normal_where);
+    place("penalty", normal_where);
     switch (b.kind) {
       case Behaviour::Kind::Linear:
       case Behaviour::Kind::Tied:
@@ -226,17 +240,20 @@ void finish_contacts(Reader& r) {
         auto [it, inserted] = tables.emplace(i, FunctionRef{});
         if (inserted) {
           const std::int64_t id = r.next_function_id++;
-          r.model.functions.add_curve(id, Curve{b.overclosure, b.pressure}, c.normal_where);
-          it->second = r.model.functions.find(id, c.normal_where);
+          r.model.functions.add_curve(id, Curve{b.overclosure, b.pressure}, normal_where);
+          it->second = r.model.functions.find(id, normal_where);
         }
         c.penalty_curve = it->second;
         break;
       }
     }
-    if (in.friction) c.friction_where = r.where(in.friction->where, "*FRICTION");
+    if (in.friction) {
+      place("tangential_law", r.where(in.friction->where, "*FRICTION"));
+      place("tangential_penalty", r.where(in.friction->where, "*FRICTION"));
+    }
     if (b.kind == Behaviour::Kind::Tied) {
       if (!in.friction || !in.friction->stick_slope) {
-        throw InputError(c.normal_where,
+        throw InputError(normal_where,
                          "PRESSURE-OVERCLOSURE=TIED needs the stick slope of a *FRICTION card in "
                          "surface interaction " +
                              in.name + " (it ties the tangential directions with that slope)");
@@ -275,7 +292,9 @@ void finish_ties(Reader& r) {
     s.surface2.where = r.where(t.where, "*TIE", "master");
     s.detection_depth = t.tolerance;
     s.where = r.where(t.where, "*TIE");
-    s.exact_where = r.where(t.card, "*TIE", "NAME");
+    r.model.sources.set(SourceEntity::Tie, s.id, "exact", r.where(t.card, "*TIE", "NAME"));
+    r.model.sources.set(SourceEntity::Tie, s.id, "detection_depth",
+                        r.where(t.card, "*TIE", "POSITION TOLERANCE"));
     r.model.ties.push_back(std::move(s));
   }
 }

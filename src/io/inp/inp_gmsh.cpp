@@ -13,6 +13,7 @@
 #include "abut/io/gmsh_mesh.hpp"
 #include "inp_reader.hpp"
 #include "io/deck_text.hpp"
+#include "io/memory_budget.hpp"
 
 namespace abut::inp {
 namespace {
@@ -59,11 +60,19 @@ void read_gmsh_include(Reader& r, const Card& c) {
   if (kind == gmsh::GmshFile::cad && meshing.size == 0.0)
     throw InputError(r.where(c, "SIZE"),
                      "a STEP or BREP file has no mesh sizes: give SIZE=h, the element size");
+  // Before Gmsh meshes: would the deck's mesh so far and the CAD part's fit in memory (as
+  // *INCLUDE_GMSH h, keyword_gmsh.cpp)?
+  meshing.check_size = [&r, &c](double elements, double nodes) {
+    deck::require_memory({static_cast<double>(r.elements.size()) + elements,
+                          static_cast<double>(r.node_where.size()) + nodes},
+                         deck::available_memory(), r.where(c, "SIZE"));
+  };
   gmsh::MshMesh m;
   try {
     m = kind == gmsh::GmshFile::mesh ? gmsh::read_msh_file(path) : gmsh::mesh_cad(path, meshing);
   } catch (const InputError& e) {
-    if (kind == gmsh::GmshFile::mesh) throw;
+    // A .msh error is at its line, a memory refusal at SIZE; Gmsh's own at the file's name.
+    if (kind == gmsh::GmshFile::mesh || !e.where().file.empty()) throw;
     throw InputError(r.where(c, "INPUT"), e.message());
   }
   // The mesh's file is the last one read (InpLines::include added it).

@@ -340,6 +340,11 @@ void read_node_print(Reader&, const Card&);
 void read_el_print(Reader&, const Card&);
 void read_contact_print(Reader&, const Card&);
 void read_controls(Reader&, const Card&);
+// inp_output.cpp: the output cards that choose the states' fields and frequency.
+void read_node_file(Reader&, const Card&);     // *NODE FILE, *NODE OUTPUT
+void read_el_file(Reader&, const Card&);       // *EL FILE, *ELEMENT OUTPUT
+void read_contact_file(Reader&, const Card&);  // *CONTACT FILE, *CONTACT OUTPUT
+void read_output(Reader&, const Card&);        // *OUTPUT
 // inp_gmsh.cpp: *INCLUDE of a Gmsh mesh or of a file Gmsh meshes (InpLines hands it on).
 void read_gmsh_include(Reader&, const Card&);
 
@@ -366,6 +371,8 @@ void finish_contacts(Reader& r);
 void finish_ties(
     Reader& r);  // *TIE -> Model::ties  // amplitudes' curves are made first (finish_steps)
 void finish_steps(Reader& r);     // amplitudes, equations, static steps
+// inp_words.cpp: the dialect's words for the concepts the solvers' messages ask for.
+void name_inp_words(Sources& sources);
 // The indices of a node / element item (an id or a set name); InputError at the item. Element
 // indices are the mesh's solid numbering (Mesh::solid).
 std::vector<std::int32_t> nodes_of(const Reader& r, const Item& item, const std::string& keyword);

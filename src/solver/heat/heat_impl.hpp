@@ -99,7 +99,8 @@ struct HeatSolver::Impl {
       for (const std::int32_t node : nodes)
         if (!thermal[static_cast<std::size_t>(node)])
           throw InputError(where, "node " + std::to_string(mesh.nodes.id[node]) +
-                                      " is not in a part with thermal properties (thpid)");
+                                      " is not in a part with thermal properties (" +
+                                      m.sources.words("thermal_properties") + ")");
     };
     for (const PrescribedTemperature& p : m.thermal.prescribed) {
       check_nodes(p.nodes, p.where);
@@ -131,8 +132,10 @@ struct HeatSolver::Impl {
     if (!mat || mat->thermal_id == 0) return nullptr;
     const ThermalProperties* p = model.thermal.find(mat->thermal_id);
     if (!p)
-      throw InputError(mat->where, "thpid " + std::to_string(mat->thermal_id) + " of material " +
-                                       std::to_string(mat->id) + " has no *PROP_THERMAL");
+      throw InputError(mat->where, "material " + std::to_string(mat->id) +
+                                       ": its thermal properties " +
+                                       std::to_string(mat->thermal_id) + " are not defined (give " +
+                                       model.sources.words("thermal_properties") + ")");
     return p;
   }
 

@@ -31,11 +31,15 @@ void check_thermal_contacts(const Model& model) {
   for (const ContactSpec& spec : model.contacts) {
     if (!spec.exchanges_heat()) continue;
     if (thermal.empty()) thermal = thermal_node_flags(model);
-    const std::string what = spec.friction_heat ? "fric_heat" : "the contact conductance";
+    const std::string what = spec.friction_heat ? "friction heat" : "the contact conductance";
     if (std::find(thermal.begin(), thermal.end(), 1) == thermal.end())
-      throw InputError(spec.where, what +
-                                       " needs a temperature field: give the materials of the "
-                                       "contacting parts thermal properties (thpid)");
+      throw InputError(model.place_of(spec, spec.friction_heat ? "friction_heat"
+                                            : spec.conductance ? "conductance"
+                                                               : "thermal"),
+                       what +
+                           " needs a temperature field: give the materials of the "
+                           "contacting parts thermal properties (" +
+                           model.sources.words("thermal_properties") + ")");
     for (const EntityRef& surface : {spec.surface1, spec.surface2})
       for (const std::int32_t i : model.nodes_of(surface))
         if (!thermal[static_cast<std::size_t>(i)])

@@ -27,21 +27,24 @@ DofMap::DofMap(std::size_t nodes, std::span<const std::uint8_t> prescribed,
   std::vector<std::int32_t> owner(n, -1);  // constraint whose dependent dof this is
   for (std::size_t c = 0; c < constraints.size(); ++c) {
     const LinearConstraint& eq = constraints[c];
-    if (eq.terms.size() < 2) throw InputError(eq.where, "an *EQUATION needs at least two terms");
+    if (eq.terms.size() < 2)
+      throw InputError(eq.where, "a linear constraint needs at least two terms");
     const auto& first = eq.terms.front();
     const std::size_t d = 3 * static_cast<std::size_t>(first.node) + first.dof;
     if (first.coefficient == 0.0)
       throw InputError(eq.where,
-                       "the first term of an *EQUATION (its dependent dof) needs a "
+                       "the first term of a linear constraint (its dependent dof) needs a "
                        "nonzero coefficient");
     if (prescribed_[d])
-      throw InputError(eq.where, "the dependent " + dof_name(d) +
-                                     " of this *EQUATION also has a boundary condition in this "
-                                     "step: put another dof first or remove the condition");
+      throw InputError(eq.where,
+                       "the dependent " + dof_name(d) +
+                           " of this linear constraint also has a boundary condition in this "
+                           "step: put another dof first or remove the condition");
     if (owner[d] >= 0)
-      throw InputError(eq.where, "this " + dof_name(d) +
-                                     " is already the dependent dof of another *EQUATION (line " +
-                                     std::to_string(constraints[owner[d]].where.line) + ")");
+      throw InputError(eq.where,
+                       "this " + dof_name(d) +
+                           " is already the dependent dof of another linear constraint (line " +
+                           std::to_string(constraints[owner[d]].where.line) + ")");
     owner[d] = static_cast<std::int32_t>(c);
   }
   // Substitute dependent dofs within expansions (depth-first, cycles are an error).
@@ -51,7 +54,7 @@ DofMap::DofMap(std::size_t nodes, std::span<const std::uint8_t> prescribed,
     if (state[c] == 2) return resolved[c];
     if (state[c] == 1)
       throw InputError(constraints[c].where,
-                       "the *EQUATION cards depend on each other in a cycle through this one");
+                       "the linear constraints depend on each other in a cycle through this one");
     state[c] = 1;
     const LinearConstraint& eq = constraints[c];
     const double c1 = eq.terms.front().coefficient;

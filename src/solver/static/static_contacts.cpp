@@ -26,43 +26,47 @@ constexpr double kDefaultInitialMaxFraction = 0.04;
   throw InputError(where, what + " is not supported in static steps yet");
 }
 
-// Everything of the spec the static contact does not do: an error at the card that asks for it.
-void check_static(const ContactSpec& spec) {
-  if (spec.begin_time != 0.0 || spec.end_time < 1e20)
-    not_static(spec.where, "an activation window (t_start, t_end)");
+// Everything of the contact the static contact does not do: an error where the input asks for it.
+void check_static(const Model& model, const ContactSpec& spec) {
+  const auto at = [&model, &spec](std::string_view setting) {
+    return model.place_of(spec, setting);
+  };
+  const auto given = [&model, &spec](std::string_view setting) {
+    return model.gives(spec, setting);
+  };
+  if (spec.begin_time != contact_defaults::kBeginTime)
+    not_static(at("begin_time"), "an activation window (a begin and end time)");
+  if (spec.end_time < contact_defaults::kEndTime)
+    not_static(at("end_time"), "an activation window (a begin and end time)");
   if (spec.initial_geometry || spec.moving_geometry)
-    not_static(spec.where, "a contact region (gid_0, gid_1)");
-  if (spec.wear1.valid() || spec.wear2.valid()) not_static(spec.where, "wear");
+    not_static(at("regions"), "a contact region (a geometry that limits the contact)");
+  if (spec.wear1.valid() || spec.wear2.valid()) not_static(at("wear"), "wear");
   // Conductance acts in the steady heat of each state (static_heat.hpp); friction heat is a power
   // over time, which a steady state has not.
-  if (spec.friction_heat) not_static(spec.where, "friction heat (fric_heat)");
-  if (spec.stick_stress) not_static(spec.where, "sticking by sigma_stick");
-  if (spec.accuracy_edge) not_static(spec.where, "edge contact (accuracy level with E)");
+  if (spec.friction_heat) not_static(at("friction_heat"), "friction heat");
+  if (spec.stick_stress) not_static(at("stick_stress"), "sticking up to a failure stress");
+  if (spec.accuracy_edge) not_static(at("accuracy_edge"), "extra points along sharp edges");
   if (spec.sense != ContactSense::Positive)
-    not_static(spec.normal_where, "a contact sense other than POSITIVE");
+    not_static(at("sense"), "a contact sense other than positive (one-sided from outside)");
   if (!spec.pair_scales.empty())
-    not_static(spec.pair_scales.front().where, "*CONTACT_SCALE_PENALTY");
+    not_static(spec.pair_scales.front().where, "a penalty scale factor of a part pair");
   for (const ContactSpec::FrictionPair& fp : spec.friction_pairs)
     if (fp.filter.kind != FrictionFilter::Kind::None) not_static(fp.where, "friction filtering");
-  if (!spec.stiffness_where.file.empty())
-    not_static(spec.stiffness_where,
-               "*CONTACT_STIFFNESS (the static penalty is pfac of *CONTACT, or 10 E / L)");
+  if (given("stiffness"))
+    not_static(at("stiffness"), "a stiffness rule (the static penalty is " +
+                                    model.sources.words("penalty") + ", or 10 E / L)");
   // A padding alone (OptiStruct GPAD) acts in static steps; the shell gaps do not.
   GapSettings padding_only;
   padding_only.padding = spec.gaps.padding;
-  const bool only_padding = spec.gaps == padding_only;
-  if (!spec.gap_where.file.empty() && !only_padding)
-    not_static(spec.gap_where, "*CONTACT_GAP other than gpad");
-  if (!spec.erosion_where.file.empty()) not_static(spec.erosion_where, "*CONTACT_EROSION");
-  if (!spec.edge_where.file.empty()) not_static(spec.edge_where, "*CONTACT_EDGE");
+  if (given("gaps") && !(spec.gaps == padding_only))
+    not_static(at("gaps"), "a contact gap other than a padding");
+  if (given("erosion")) not_static(at("erosion"), "the contact's handling of eroded elements");
+  if (given("edges")) not_static(at("edges"), "edge-to-edge contact");
   if (spec.friction_filter.kind != FrictionFilter::Kind::None)
-    not_static(spec.friction_where, "friction filtering");
+    not_static(at("friction_filter"), "friction filtering");
   // Sensors and impact watch the run in time; a static step has no impact to release at.
-  if (spec.sensor)
-    not_static(spec.sensor_where, "a contact switched by a sensor (*CONTACT_SENSOR)");
-  if (spec.release_bc)
-    not_static(spec.release_bc_where,
-               "releasing boundary conditions at impact (*CONTACT_RELEASE_BC, Radioss IBC)");
+  if (spec.sensor) not_static(at("sensor"), "a contact switched by a sensor");
+  if (spec.release_bc) not_static(at("release_bc"), "releasing boundary conditions at impact");
 }
 
 // The damping coefficient of *CONTACT_STABILIZATION at scale 1, as a fraction of the contact's
@@ -254,7 +258,7 @@ StaticContacts make_static_contacts(const Model& model, const RemovedNodes& tied
   StaticContacts out;
   for (std::size_t i = 0; i < model.contacts.size(); ++i) {
     const ContactSpec& spec = model.contacts[i];
-    check_static(spec);
+    check_static(model, spec);
     if (spec.surface1.type == spec.surface2.type && spec.surface1.id == spec.surface2.id)
       not_static(spec.where, "self contact (the same entity on both sides)");
     if (spec.surface2.type == EntityType::NodeSet)

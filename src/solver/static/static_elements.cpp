@@ -24,12 +24,12 @@ StaticElements::StaticElements(const Model& model) : model_(model) {
     const MaterialParams& m = model.material_of_part(part.id);
     if (!std::holds_alternative<ElasticParams>(m) && !std::holds_alternative<MetalParams>(m))
       throw InputError(part.where, "part " + std::to_string(part.id) + " (" + part.title +
-                                       "): the static solver supports linear elastic and J2 "
-                                       "plastic materials (*ELASTIC, *PLASTIC, *MAT_ELASTIC, "
-                                       "*MAT_METAL, *MAT_JC) only yet");
+                                       "): the static solver supports " +
+                                       model.sources.words("static_materials") + " only yet");
     if (const auto* metal = std::get_if<MetalParams>(&m); metal && metal->failure.active)
       throw InputError(part.where, "part " + std::to_string(part.id) + " (" + part.title +
-                                       "): ductile failure (*PROP_DAMAGE_JC) is not supported in "
+                                       "): " + model.sources.words("ductile_failure") +
+                                       " is not supported in "
                                        "static steps yet");
     if (const auto* metal = std::get_if<MetalParams>(&m); metal && metal->softens())
       throw InputError(part.where, "part " + std::to_string(part.id) + " (" + part.title +

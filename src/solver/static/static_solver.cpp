@@ -136,7 +136,8 @@ struct StaticSolver::Impl {
       const auto& first = eq.terms.front();
       for (const TiedNode& n : tied)
         if (n.node == first.node)
-          throw InputError(eq.where, "the dependent dof of this *EQUATION is on node " +
+          throw InputError(eq.where, "the dependent dof of this " +
+                                         m.sources.words("linear_constraint") + " is on node " +
                                          std::to_string(m.mesh.nodes.id[first.node]) +
                                          ", which exact tie " + std::to_string(m.ties[n.tie].id) +
                                          " binds to its facet: put another dof first");
@@ -379,8 +380,9 @@ struct StaticSolver::Impl {
           }
           if (!change.friction && !change.stick_slope) continue;
           if (c.settings().tied || c.settings().stick)
-            throw InputError(change.where,
-                             "*CHANGE FRICTION on a tied or sticking contact is not supported");
+            throw InputError(
+                change.where,
+                "changing the friction of a tied or sticking contact is not supported");
           c.change_friction(change.friction, change.stick_slope.value_or(c.settings().stick_slope));
         }
       }
@@ -388,7 +390,7 @@ struct StaticSolver::Impl {
       for (const TiedNode& n : tied)
         for (int d = 0; d < 3; ++d)
           if (loads.prescribed()[3 * static_cast<std::size_t>(n.node) + d])
-            throw InputError(model.ties[n.tie].exact_where,
+            throw InputError(exact_tie_place(model, model.ties[n.tie]),
                              "node " + std::to_string(model.mesh.nodes.id[n.node]) +
                                  " follows its facet by exact tie " +
                                  std::to_string(model.ties[n.tie].id) +
@@ -419,7 +421,8 @@ struct StaticSolver::Impl {
         if (++increment > step.max_increments)
           throw StaticConvergenceError("step " + std::to_string(s + 1) + ": more than " +
                                        std::to_string(step.max_increments) +
-                                       " increments (INC of *STEP, n_inc of *STATIC) needed");
+                                       " increments needed (" +
+                                       model.sources.words("max_increments") + ")");
         for (int attempt = 1;; ++attempt) {
           std::vector<double> trial = u;
           double residual = 0.0;
