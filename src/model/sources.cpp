@@ -84,13 +84,13 @@ void Sources::set(SourceEntity entity, std::int64_t id, std::string_view setting
 
 bool Sources::given(SourceEntity entity, std::int64_t id, std::string_view setting) const {
   check_setting(entity, setting);
-  return places_.find(std::tuple{entity, id, setting}) != places_.end();
+  return places_.find(std::tuple{entity, id, std::string(setting)}) != places_.end();
 }
 
 SourceLocation Sources::of(SourceEntity entity, std::int64_t id, std::string_view setting,
                            const SourceLocation& otherwise) const {
   check_setting(entity, setting);
-  const auto it = places_.find(std::tuple{entity, id, setting});
+  const auto it = places_.find(std::tuple{entity, id, std::string(setting)});
   return it == places_.end() ? otherwise : it->second;
 }
 

@@ -41,8 +41,9 @@ class Sources {
   std::string words(std::string_view concept_name) const;
 
  private:
-  std::map<std::tuple<SourceEntity, std::int64_t, std::string>, SourceLocation, std::less<>>
-      places_;
+  // Looked up on errors and while reading only: a key string per look-up costs nothing that
+  // matters (a heterogeneous look-up of tuples compiles with GCC but not with clang).
+  std::map<std::tuple<SourceEntity, std::int64_t, std::string>, SourceLocation> places_;
   std::map<std::string, std::string, std::less<>> words_;
 };
 
