@@ -223,9 +223,9 @@ void read_contact_stiffness(DeckReader& d, Block& b) {
                  "and SERIES (Istf 2 to 5) only: leave it empty with MAIN");
       }
     }
-    s.minimum = r.number_or(3, 0.0);
+    s.minimum = r.number_or(3, StiffnessSettings{}.minimum);
     r.require(s.minimum >= 0.0, 3, "expected a minimum stiffness >= 0");
-    s.maximum = r.number_or(4, 1e30);
+    s.maximum = r.number_or(4, StiffnessSettings{}.maximum);
     r.require(s.maximum > s.minimum, 4, "expected a maximum stiffness > st_min");
   }
   const bool element = rule == Rule::Element;

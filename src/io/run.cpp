@@ -83,10 +83,11 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
   for (const ContactReport& c : sim.contact_reports()) {
     json.begin_object();
     json.member("id", c.id).member("title", c.title);
-    json.member("discretisation", c.discretisation).member("normal_law", c.normal_law);
-    json.member("tangential_law", c.tangential_law).member("stiffness_rule", c.stiffness_rule);
-    json.member("gap_rule", c.gap_rule).member("erosion", c.erosion_rule);
-    json.member("edge_contact", c.edge_rule);
+    const ContactDescription& laws = c.laws;
+    json.member("discretisation", laws.discretisation).member("normal_law", laws.normal_law);
+    json.member("tangential_law", laws.tangential_law);
+    json.member("stiffness_rule", laws.stiffness_rule).member("gap_rule", laws.gap_rule);
+    json.member("erosion", laws.erosion_rule).member("edge_contact", laws.edge_rule);
     json.member("contact_points", static_cast<std::int64_t>(c.points));
     json.member("released_points", static_cast<std::int64_t>(c.released_points));
     json.key("warnings").begin_array();
@@ -96,7 +97,7 @@ void write_summary(const fs::path& path, const Simulation& sim, const RunReport&
     for (const PartPenalty& p : c.parts) {
       json.begin_object()
           .member("part", p.part_id)
-          .member("pfac", p.penalty)
+          .member("penalty", p.penalty)
           .member("automatic", p.automatic);
       json.end_object();
     }
@@ -174,12 +175,12 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
   const std::string initial_limit = sim.time_step_limit();
   for (const ContactReport& c : sim.contact_reports()) {
     log << fmt::format("abut: contact {}", c.id) << (c.title.empty() ? "" : " \"" + c.title + "\"")
-        << ": pfac";
+        << ": penalty";
     for (const PartPenalty& p : c.parts)
       log << fmt::format(" part {} = {:.4g}{}", p.part_id, p.penalty,
                          p.automatic ? " (automatic)" : "");
-    log << fmt::format(", {} contact points ({}; {}; {}; {})\n", c.points, c.discretisation,
-                       c.normal_law, c.tangential_law, c.stiffness_rule);
+    log << fmt::format(", {} contact points ({}; {}; {}; {})\n", c.points, c.laws.discretisation,
+                       c.laws.normal_law, c.laws.tangential_law, c.laws.stiffness_rule);
     for (const std::string& w : c.warnings) log << "warning: " << w << "\n";
   }
   if (thermal_output::active(sim)) log << thermal_output::start_line(sim);

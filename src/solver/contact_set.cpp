@@ -218,9 +218,9 @@ ContactSet::ContactSet(const Model& model, std::span<const double> node_mass,
     report.id = spec.id;
     report.title = spec.title;
     for (const auto& [part, p] : penalties) report.parts.push_back(p);
-    describe(spec, report);
     ContactSettings settings = settings_of(model, spec);
     if (spec.remove_tied_nodes) settings.removed_nodes = tied_nodes;
+    report.laws = describe(spec, settings);
     const std::vector<std::uint8_t> overlap_reversed =
         spec.main_shell_sides == ContactSpec::ShellSides::Overlap
             ? overlap_sides(model.mesh, faces1, secondary_nodes, faces2)
@@ -293,9 +293,9 @@ void ContactSet::add_tool_contact(const ContactSpec& spec, const std::vector<Ski
   report.id = spec.id;
   report.title = spec.title;
   for (const auto& [part, p] : penalties) report.parts.push_back(p);
-  describe(spec, report);
-  report.discretisation = "N2S one-way, tool " + std::to_string(tool.id);
   ContactSettings settings = settings_of(model, spec);
+  report.laws = describe(spec, settings);
+  report.laws.discretisation = "node-to-surface, one-way, against tool " + std::to_string(tool.id);
   try {
     tools_.emplace_back(
         std::move(settings), tool.tool,

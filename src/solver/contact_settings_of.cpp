@@ -2,13 +2,12 @@
 // the deck field behind each setting for error messages, and its description for the log.
 #include "contact_settings_of.hpp"
 
-#include <fmt/format.h>
-
 #include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 
+#include "abut/contact/describe.hpp"
 #include "abut/solver/contact_surfaces.hpp"
 #include "contact_checks.hpp"
 
@@ -221,101 +220,14 @@ SourceLocation location_of(const Model& model, const ContactSpec& spec,
   return model.place_of(spec, setting);
 }
 
-// The laws of a contact in the deck's words, for the log and summary.json.
-void describe(const ContactSpec& spec, ContactReport& r) {
-  r.discretisation = spec.discretisation == Discretisation::NodeToSurface ? "N2S" : "S2S";
-  r.discretisation += one_way_of(spec) ? " one-way" : " symmetric";
-  if (spec.remove_tied_nodes) r.discretisation += ", tied nodes REMOVE";
-  r.normal_law = spec.penalty_curve.valid() ? "CURVE" : "LINEAR";
-  r.normal_law += spec.sense == ContactSense::Positive   ? " POSITIVE"
-                  : spec.sense == ContactSense::Negative ? " NEGATIVE"
-                                                         : " BILATERAL";
-  if (spec.adhesion)
-    r.normal_law += fmt::format(", adhesion sig_max = {:.4g}", spec.adhesion->max_stress);
-  using Law = ContactSpec::FrictionLaw;
-  const auto& c = spec.friction_c;
-  switch (spec.friction_law) {
-    case Law::Impetus:
-      r.tangential_law = spec.friction_function.valid() ? "COULOMB mu = fcn"
-                         : spec.friction > 0.0 ? fmt::format("COULOMB mu = {:.4g}", spec.friction)
-                                               : "NONE";
-      break;
-    case Law::None:
-      r.tangential_law = "NONE";
-      break;
-    case Law::Coulomb:
-      r.tangential_law =
-          fmt::format("COULOMB mu_s = {:.4g}, mu_d = {:.4g}", spec.mu_static, spec.mu_dynamic);
-      break;
-    case Law::Tresca:
-      r.tangential_law =
-          fmt::format("TRESCA m_s = {:.4g}, m_d = {:.4g}, k = {:.4g}", c[0], c[1], c[2]);
-      break;
-    case Law::Stick:
-      r.tangential_law = "STICK";
-      break;
-    case Law::Freeze:
-      r.tangential_law = "FREEZE";
-      break;
-    case Law::Viscous:
-      r.tangential_law = "VISCOUS (Ifric 1)";
-      break;
-    case Law::Darmstad:
-      r.tangential_law = "DARMSTAD (Ifric 2)";
-      break;
-    case Law::Renard:
-      r.tangential_law = "RENARD (Ifric 3)";
-      break;
-  }
-  if (spec.stick_stress)
-    r.tangential_law += fmt::format(", sticking until {:.4g}", *spec.stick_stress);
-  if (!spec.friction_pairs.empty())
-    r.tangential_law += fmt::format(", {} part-pair laws", spec.friction_pairs.size());
-  // *CONTACT_DEPENDENCY: "x f(t)" / "x g(d)" after the law its parameter belongs to.
-  for (const ContactSpec::Dependency& d : spec.dependencies) {
-    const std::string note = std::string(", ") + d.name() + (d.gap ? " x g(d)" : " x f(t)");
-    (d.parameter == ContactSpec::Dependency::Parameter::Pfac ? r.normal_law : r.tangential_law) +=
-        note;
-  }
-  switch (spec.stiffness.rule) {
-    case StiffnessRule::FacetPenalty:
-      r.stiffness_rule = spec.element_penalty ? "ELEMENT" : "PFAC";
-      break;
-    case StiffnessRule::Main:
-      r.stiffness_rule = "MAIN (Istf 1000)";
-      break;
-    case StiffnessRule::Mean:
-      r.stiffness_rule = "MEAN (Istf 2)";
-      break;
-    case StiffnessRule::Maximum:
-      r.stiffness_rule = "MAX (Istf 3)";
-      break;
-    case StiffnessRule::Minimum:
-      r.stiffness_rule = "MIN (Istf 4)";
-      break;
-    case StiffnessRule::Series:
-      r.stiffness_rule = "SERIES (Istf 5)";
-      break;
-  }
-  if (spec.stiffness.rule != StiffnessRule::FacetPenalty)
-    r.stiffness_rule += fmt::format(", stfac = {:.4g}", spec.stiffness.scale);
-  if (!spec.pair_scales.empty()) r.stiffness_rule += ", pair scale factors";
-  const GapSettings& g = spec.gaps;
-  r.gap_rule =
-      fmt::format("Igap {}, scale {:.4g}", g.mesh_fraction ? 3 : (g.skip_close ? 2 : 1), g.scale);
-  if (g.mesh_fraction) r.gap_rule += fmt::format(", {:.4g} of the mesh size", *g.mesh_fraction);
-  if (std::isfinite(g.max_secondary)) r.gap_rule += fmt::format(", max_s {:.4g}", g.max_secondary);
-  if (std::isfinite(g.max_main)) r.gap_rule += fmt::format(", max_m {:.4g}", g.max_main);
-  if (g.zero_at_free_edges) r.gap_rule += ", Igap0";
-  if (g.padding > 0.0) r.gap_rule += fmt::format(", padding {:.4g}", g.padding);
-  if (g.border != GapSettings::Border::Cut)
-    r.gap_rule += g.border == GapSettings::Border::Square ? ", Ishape 1" : ", Ishape 2";
-  static const char* const edge_words[] = {"NONE", "BORDERS (Iedge 1)", "SHARP (Iedge 11)",
-                                           "SHARP_ALL_SHELLS (Iedge 13)", "ALL (Iedge 22)"};
-  r.edge_rule = edge_words[static_cast<int>(spec.edges.selection)];
-  r.erosion_rule = std::string(spec.erosion.remove_facets ? "facets REMOVE" : "facets KEEP") +
-                   (spec.erosion.keep_free_nodes ? ", free nodes KEEP" : ", free nodes REMOVE") +
-                   (spec.no_internal ? ", no internal faces" : ", exposed faces join");
+// The laws of a contact in the model's words: the contact library's description of its settings,
+// with what the model adds around them (the element penalty, the faces erosion exposes).
+ContactDescription describe(const ContactSpec& spec, const ContactSettings& settings) {
+  ContactDescription d = describe(settings);
+  if (spec.element_penalty) d.stiffness_rule = "facet penalty from each element's stable step";
+  d.erosion_rule +=
+      spec.no_internal ? ", faces inside a part never join" : ", faces that erosion exposes join";
+  return d;
 }
 
 }  // namespace abut

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "abut/contact/describe.hpp"
 #include "abut/contact/settings.hpp"
 #include "abut/model/model.hpp"
 #include "abut/solver/contact_report.hpp"
@@ -32,7 +33,8 @@ bool one_way_of(const ContactSpec& spec);
 // errors: the contact's own place when the input did not give it.
 SourceLocation location_of(const Model& model, const ContactSpec& spec, const std::string& setting);
 
-// The laws of a contact in the deck's words, for the log and summary.json.
-void describe(const ContactSpec& spec, ContactReport& r);
+// The laws of a contact in the model's words (the contact library's describe(), contact/
+// describe.hpp, and what the model adds), for the log and summary.json.
+ContactDescription describe(const ContactSpec& spec, const ContactSettings& settings);
 
 }  // namespace abut

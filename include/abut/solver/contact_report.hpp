@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "abut/contact/describe.hpp"
 #include "abut/contact/interface.hpp"
 
 namespace abut {
@@ -20,11 +21,10 @@ struct ContactReport {
   std::string title;
   std::vector<PartPenalty> parts;
   std::vector<PairStiffness> pairs;  // after the stiffness rule and pair scaling
-  // What the contact does, in the deck's words: "S2S symmetric", "N2S one-way"; "LINEAR POSITIVE";
-  // "COULOMB mu_s = 0.3, mu_d = 0.2"; "PFAC" or "MEAN (Istf 2), stfac = 1".
-  std::string discretisation, normal_law, tangential_law, stiffness_rule;
-  // "Igap 3, scale 1, 0.4 of the mesh size"; "facets REMOVE, free nodes KEEP, exposed faces join".
-  std::string gap_rule, erosion_rule, edge_rule;
+  // What the contact does, in the model's words (contact/describe.hpp): "surface-to-surface
+  // (accuracy level 2), symmetric"; "linear penalty, positive side"; "Coulomb, mu_static = 0.3,
+  // mu_dynamic = 0.2"; "facet penalty"; ...
+  ContactDescription laws;
   std::size_t points = 0;           // contact points (integration points or nodes, all passes)
   std::size_t released_points = 0;  // initially deeper than delta0_max
   std::vector<std::string> warnings;  // start-up checks (solver/contact_checks.hpp)
