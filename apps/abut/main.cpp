@@ -98,8 +98,10 @@ void print_info(const abut::Model& model, std::ostream& out) {
                        p.title.empty() ? "-" : p.title, p.element_count, p.mass,
                        p.rigid ? "  (rigid)" : "");
   out << fmt::format("contacts:   {}\n", model.contacts.size());
-  for (const abut::ContactSpec& c : model.contacts)
-    out << fmt::format("  {:>6}  {}\n", c.id, c.title.empty() ? "-" : c.title);
+  for (const abut::ContactReport& c : sim.contact_reports())
+    out << fmt::format("  {:>6}  {}: {}; {}; {}; {}\n", c.id, c.title.empty() ? "-" : c.title,
+                       c.laws.discretisation, c.laws.normal_law, c.laws.tangential_law,
+                       c.laws.stiffness_rule);
   for (const abut::ContactReport& c : sim.contact_reports())
     for (const std::string& w : c.warnings) out << "warning: " << w << "\n";
   out << fmt::format("boundary motions: {}, gravity loads: {}\n", model.motions.size(),

@@ -20,6 +20,7 @@ const std::map<std::string, KeywordReader, std::less<>>& supported() {
       {"*TIME", read_time},
       {"*OUTPUT", read_output},
       {"*OUTPUT_FIELDS", read_output_fields},                    // abut's own
+      {"*OUTPUT_NODE_HISTORY", read_output_node_history},        // abut's own
       {"*CONTROL_BULK_VISCOSITY", read_control_bulk_viscosity},  // abut's own (LS-DYNA's name)
       {"*NODE", read_node},
       {"*ELEMENT_SOLID", read_element_solid},

@@ -153,7 +153,11 @@ void DeckReader::dispatch(Block& block, int depth) {
     return;
   }
   if (is_known_impetus_keyword(kw))
-    throw InputError(block.where(), kw + " is not supported yet by abut");
+    throw InputError(block.where(),
+                     kw + " is not supported yet by abut" +
+                         (kw == "*OUTPUT_NODE"
+                              ? " (abut's *OUTPUT_NODE_HISTORY follows chosen nodes in nodes.csv)"
+                              : ""));
   std::string message = "unknown keyword " + excerpt(kw);
   if (const auto suggestion = closest_keyword(kw)) message += "; did you mean " + *suggestion + "?";
   throw InputError(SourceLocation{block.file(), block.where().line, "", ""}, message);

@@ -372,6 +372,7 @@ void read_unit_system(DeckReader&, Block&);
 void read_time(DeckReader&, Block&);
 void read_output(DeckReader&, Block&);
 void read_output_fields(DeckReader&, Block&);  // keyword_control.cpp (abut's own)
+void read_output_node_history(DeckReader&, Block&);  // keyword_control.cpp (abut's own)
 void read_control_bulk_viscosity(DeckReader&, Block&);
 void read_node(DeckReader&, Block&);
 void read_element_solid(DeckReader&, Block&);

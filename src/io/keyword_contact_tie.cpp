@@ -80,8 +80,10 @@ void extract_exact_ties(Model& model) {
     t.edge_tolerance = c.edge_tolerance;
     t.edge_angle = c.edge_angle;
     t.where = c.where;
-    for (const std::string_view setting : {"detection_depth", "edge_tolerance", "edge_angle"})
-      if (model.sources.given(SourceEntity::Contact, c.id, setting))
+    // The places of the tie's own settings that its *CONTACT gave.
+    for (const std::string_view setting : Sources::settings(SourceEntity::Tie))
+      if (Sources::has_setting(SourceEntity::Contact, setting) &&
+          model.sources.given(SourceEntity::Contact, c.id, setting))
         model.sources.set(SourceEntity::Tie, t.id, setting,
                           model.sources.of(SourceEntity::Contact, c.id, setting));
     model.ties.push_back(std::move(t));

@@ -1,5 +1,5 @@
 // *TITLE, *PARAMETER, *PARAMETER_DEFAULT, *UNIT_SYSTEM, *TIME, *OUTPUT, *OUTPUT_FIELDS,
-// *CONTROL_BULK_VISCOSITY, *CONTROL_P-ORDER.
+// *OUTPUT_NODE_HISTORY, *CONTROL_BULK_VISCOSITY, *CONTROL_P-ORDER.
 #include <algorithm>
 #include <cctype>
 
@@ -152,6 +152,21 @@ void read_output_fields(DeckReader& d, Block& b) {
     }
   }
   o.fields_where = b.where();
+}
+
+// *OUTPUT_NODE_HISTORY (abut's own; IMPETUS follows chosen nodes in node.out with *OUTPUT_NODE,
+// whose card the seeds do not give): one `entype, enid` per row, as many rows as needed; the
+// nodes of every entity are followed in nodes.csv at each history output.
+void read_output_node_history(DeckReader& d, Block& b) {
+  const std::vector<std::string> names{"entype", "enid"};
+  for (std::optional<Row> r = b.row(names); r; r = b.optional_row(names)) {
+    const EntityRef e =
+        d.entity(*r, 0, 1,
+                 {EntityType::Node, EntityType::NodeSet, EntityType::Part, EntityType::PartSet,
+                  EntityType::All, EntityType::GeometryRegion});
+    d.model.output.history_nodes.push_back(e);
+    d.entity_references.push_back(e);
+  }
 }
 
 // *CONTROL_BULK_VISCOSITY (abut's own; IMPETUS has no such command): LS-DYNA's keyword of the

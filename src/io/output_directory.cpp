@@ -21,9 +21,9 @@ namespace fs = std::filesystem;
 constexpr const char* kLockName = ".abut.lock";
 
 // The files of a run directly in the directory (see the header); the states are matched by name.
-constexpr std::array<const char*, 8> kRunFiles{"results.pvd",    "summary.json", "results.dat",
+constexpr std::array<const char*, 9> kRunFiles{"results.pvd",    "summary.json", "results.dat",
                                                "energy.csv",     "parts.csv",    "contact.csv",
-                                               "increments.csv", "restart.abr"};
+                                               "increments.csv", "nodes.csv",    "restart.abr"};
 
 std::string unusable(const fs::path& dir, const std::string& reason) {
   return "cannot write the output directory '" + dir.string() + "': " + reason +

@@ -188,7 +188,7 @@ RunReport run_simulation(const Model& model, const RunOptions& options, std::ost
 
   StateWriter states(options.output_dir, model);
   const bool contact_heat = contacts_exchange_heat(model);
-  HistoryWriter histories(options.output_dir, sim.has_contact(), thermal_output::active(sim),
+  HistoryWriter histories(options.output_dir, model, sim.has_contact(), thermal_output::active(sim),
                           contact_heat);
   Schedule state_schedule(model.time.start_time, state_interval);
   Schedule history_schedule(model.time.start_time, history_interval);

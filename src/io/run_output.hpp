@@ -17,6 +17,7 @@
 #include "abut/io/vtu_writer.hpp"
 #include "abut/solver/simulation.hpp"
 #include "contact_history.hpp"
+#include "node_history.hpp"
 #include "run_thermal.hpp"
 
 namespace abut::run_output {
@@ -185,9 +186,10 @@ class HistoryWriter {
  public:
   // With `thermal`, energy.csv gets the heat balance columns (thermal_output::energy_columns);
   // with `contact_heat`, contact.csv the heat of the thermal contacts.
-  HistoryWriter(const std::filesystem::path& dir, bool with_contact, bool thermal,
-                bool contact_heat)
-      : contact_heat_(contact_heat),
+  HistoryWriter(const std::filesystem::path& dir, const Model& model, bool with_contact,
+                bool thermal, bool contact_heat)
+      : nodes_(dir, model, NodeHistory::Run::Explicit),
+        contact_heat_(contact_heat),
         energy_(dir / "energy.csv", energy_columns(thermal)),
         thermal_(thermal),
         parts_(dir / "parts.csv",
@@ -233,9 +235,11 @@ class HistoryWriter {
         contact_->write_row(sim.time(), row);
       }
     }
+    nodes_.write(sim);
   }
 
  private:
+  NodeHistory nodes_;
   bool contact_heat_ = false;
   static std::vector<std::string> energy_columns(bool thermal) {
     std::vector<std::string> columns{
@@ -250,7 +254,9 @@ class HistoryWriter {
   bool thermal_;
 
  public:
-  void archive(StateArchive& a) { a.values(energy_, parts_, contact_, written_, last_time_); }
+  void archive(StateArchive& a) {
+    a.values(energy_, parts_, contact_, nodes_, written_, last_time_);
+  }
 
  private:
   std::vector<CsvHistory::Value> energy_values_;

@@ -5,6 +5,8 @@
 //   energy.csv, contact.csv               energies (and the steady heat balance with heat); per
 //                                         contact forces, energy, penetration (and the heat flow
 //                                         with thermal contact)
+//   nodes.csv                             the followed nodes' position, displacement and force
+//                                         (OutputRequests::history_nodes; node_history.hpp)
 //   results.dat                           the *NODE/*EL/*CONTACT PRINT blocks (CalculiX layout)
 //   summary.json                          equations, increments, iterations, solve times (and
 //                                         the last state's heat balance with heat)
@@ -28,6 +30,7 @@
 #include "abut/solver/static_heat.hpp"
 #include "abut/solver/static_solver.hpp"
 #include "io/contact_history.hpp"
+#include "io/node_history.hpp"
 #include "io/static_print.hpp"
 #include "io/static_thermal_output.hpp"
 
@@ -176,6 +179,8 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
     log << "abut: the first state keeps the initial temperature (" << e.what() << ")\n";
   }
   write_state(dir, series, model, solver, 0.0, heat);
+  NodeHistory nodes(dir, model, NodeHistory::Run::Static);
+  nodes.write(0.0, solver.displacement(), solver.nodal_force());
   CsvHistory increments(dir / "increments.csv",
                         {"step", "increment", "attempts", "iterations", "step_time", "residual"});
   std::vector<std::string> energy_columns{"internal", "contact", "friction"};
@@ -211,6 +216,7 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
       if (inc.step_end || inc.increment % model.output.state_frequency == 0)
         write_state(dir, series, model, solver, inc.total_time, heat);
       write_energy_row(energy, solver, heat, stabilized, inc.total_time);
+      nodes.write(inc.total_time, solver.displacement(), solver.nodal_force());
       if (contact) write_contact_rows(*contact, model, solver, heat, contact_heat, inc.total_time);
       print_static_results(printed, model, model.static_steps[inc.step], solver, inc);
       printed.flush();

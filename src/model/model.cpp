@@ -165,6 +165,16 @@ std::vector<std::int32_t> Model::nodes_of(const EntityRef& entity) const {
   return nodes;
 }
 
+std::vector<std::int32_t> Model::history_nodes() const {
+  std::vector<std::int32_t> nodes;
+  for (const EntityRef& e : output.history_nodes) {
+    const std::vector<std::int32_t> some = nodes_of(e);
+    nodes.insert(nodes.end(), some.begin(), some.end());
+  }
+  sort_unique(nodes);
+  return nodes;
+}
+
 SourceLocation Model::place_of(const ContactSpec& c, std::string_view setting) const {
   return sources.of(SourceEntity::Contact, c.id, setting, c.where);
 }

@@ -50,22 +50,8 @@ constexpr std::pair<std::string_view, std::string_view> kModelWords[] = {
 };
 
 void check_setting(SourceEntity entity, std::string_view setting) {
-  const auto known = [setting](const auto& names) {
-    return std::find(std::begin(names), std::end(names), setting) != std::end(names);
-  };
-  bool ok = false;
-  switch (entity) {
-    case SourceEntity::Contact:
-      ok = known(kContactSettings);
-      break;
-    case SourceEntity::Tie:
-      ok = known(kTieSettings);
-      break;
-    case SourceEntity::Time:
-      ok = known(kTimeSettings);
-      break;
-  }
-  if (!ok) throw std::logic_error("Sources: no setting '" + std::string(setting) + "' here");
+  if (!Sources::has_setting(entity, setting))
+    throw std::logic_error("Sources: no setting '" + std::string(setting) + "' here");
 }
 
 std::string_view model_words(std::string_view concept_name) {
@@ -75,6 +61,23 @@ std::string_view model_words(std::string_view concept_name) {
 }
 
 }  // namespace
+
+std::span<const std::string_view> Sources::settings(SourceEntity entity) {
+  switch (entity) {
+    case SourceEntity::Contact:
+      return kContactSettings;
+    case SourceEntity::Tie:
+      return kTieSettings;
+    case SourceEntity::Time:
+      return kTimeSettings;
+  }
+  return {};
+}
+
+bool Sources::has_setting(SourceEntity entity, std::string_view setting) {
+  const std::span<const std::string_view> names = settings(entity);
+  return std::find(names.begin(), names.end(), setting) != names.end();
+}
 
 void Sources::set(SourceEntity entity, std::int64_t id, std::string_view setting,
                   SourceLocation where) {

@@ -38,10 +38,10 @@ std::vector<ContactInterface::NodeTie> search(const Model& model, const TieSpec&
                                   secondary);
     return search.node_ties();
   } catch (const ContactSetupError& e) {
-    const bool own = e.setting() == "detection_depth" || e.setting() == "edge_tolerance" ||
-                     e.setting() == "edge_angle";
     const SourceLocation where =
-        own ? model.sources.of(SourceEntity::Tie, tie.id, e.setting(), tie.where) : tie.where;
+        Sources::has_setting(SourceEntity::Tie, e.setting())
+            ? model.sources.of(SourceEntity::Tie, tie.id, e.setting(), tie.where)
+            : tie.where;
     throw InputError(where, std::string("exact tie ") + std::to_string(tie.id) + ": " + e.what());
   }
 }

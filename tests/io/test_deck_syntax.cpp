@@ -51,7 +51,7 @@ TEST(DeckSyntax, UnknownKeywordFarFromAnyGetsNoSuggestion) {
 
 TEST(DeckSyntax, KnownImpetusKeywordIsNotSupportedYet) {
   for (const char* kw :
-       {"*MAT_CERAMIC", "*ELEMENT_REBAR", "*BC_SYMMETRY", "*OUTPUT_NODE", "*CONTACT_ACCURACY"}) {
+       {"*MAT_CERAMIC", "*ELEMENT_REBAR", "*BC_SYMMETRY", "*OUTPUT_ELEMENT", "*CONTACT_ACCURACY"}) {
     const InputError e = error_of(std::string(kBoxModel) + kw + "\n1\n");
     EXPECT_EQ(e.message(), std::string(kw) + " is not supported yet by abut");
     EXPECT_EQ(e.where().line, 13u);

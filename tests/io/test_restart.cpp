@@ -329,7 +329,8 @@ std::string short_slide(const std::string& extra = "") {
 }
 
 TEST(Restart, AnInterruptedAndRestartedRunWritesTheSameFiles) {
-  const Model model = read_deck_string(short_slide(), "t.k");
+  // The sliding block's nodes are followed in nodes.csv, which the restart must continue too.
+  const Model model = read_deck_string(short_slide("*OUTPUT_NODE_HISTORY\nP, 2\n"), "t.k");
   std::ostringstream log;
   const fs::path whole = fresh_dir("abut_restart_whole");
   const RunReport reference = run_simulation(model, {whole, 1, false}, log);
@@ -345,8 +346,9 @@ TEST(Restart, AnInterruptedAndRestartedRunWritesTheSameFiles) {
   ASSERT_TRUE(resumed.stable);
   EXPECT_EQ(resumed.cycles, reference.cycles);
 
-  for (const char* name : {"energy.csv", "parts.csv", "contact.csv", "results.pvd"})
+  for (const char* name : {"energy.csv", "parts.csv", "contact.csv", "nodes.csv", "results.pvd"})
     EXPECT_EQ(file_text(whole / name), file_text(dir / name)) << name;
+  EXPECT_GT(file_text(whole / "nodes.csv").size(), 1000u);
   std::size_t states = 0;
   for (const auto& entry : fs::directory_iterator(whole / "states")) {
     ++states;

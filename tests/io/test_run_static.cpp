@@ -112,6 +112,52 @@ TEST(RunStatic, EnergyAndContactHistories) {
   std::filesystem::remove_all(dir);
 }
 
+// Abaqus history output of a node set (*OUTPUT, HISTORY with *NODE OUTPUT, NSET=): nodes.csv
+// follows the top face of kDeck at t = 0 and after each increment. References: the nodal force
+// there is the pressure load, -p t A (A = 1); the top moves down by p t / E over the two cubes plus
+// the contact's penetration (as EnergyAndContactHistories).
+TEST(RunStatic, AbaqusHistoryOutputFollowsANodeSet) {
+  std::string deck = kDeck;
+  deck.insert(deck.find("*MATERIAL"), "*NSET, NSET=TOPN\n15, 16, 17, 18\n");
+  deck.insert(deck.find("*END STEP"), "*OUTPUT, HISTORY\n*NODE OUTPUT, NSET=TOPN\nU, RF\n");
+  const DeckResult read = read_inp_string_with_notes(deck, "t.inp");
+  ASSERT_EQ(read.model.output.history_nodes.size(), 1u);
+  EXPECT_FALSE(read.model.output.state_fields) << "a history request chooses no state fields";
+  const auto dir = std::filesystem::temp_directory_path() / "abut_test_run_static_history";
+  std::filesystem::remove_all(dir);
+  std::ostringstream log;
+  ASSERT_TRUE(run_static_analysis(read.model, {dir, 1, false}, log).stable) << log.str();
+  std::string header;
+  const auto contact = csv_rows(dir / "contact.csv", header);
+  const auto nodes = csv_rows(dir / "nodes.csv", header);
+  EXPECT_EQ(header, "time,node,x,y,z,ux,uy,uz,force_x,force_y,force_z");
+  ASSERT_EQ(nodes.size(), 12u);  // 4 nodes at t = 0, 0.5, 1
+  ASSERT_EQ(contact.size(), 2u);
+  for (std::size_t s = 0; s < 3; ++s) {
+    const double t = 0.5 * static_cast<double>(s);
+    const double penetration = s == 0 ? 0.0 : contact[s - 1][9];
+    const double u_top = kPressure * t / 1000.0 * 2.0 + penetration;
+    double force = 0.0;
+    for (std::size_t k = 0; k < 4; ++k) {
+      const std::vector<double>& row = nodes[4 * s + k];
+      EXPECT_EQ(row[0], t);
+      EXPECT_EQ(row[1], static_cast<double>(15 + k));
+      EXPECT_NEAR(row[7], -u_top, 1e-9) << "t = " << t;
+      force += row[10];
+    }
+    EXPECT_NEAR(force, -kPressure * t, 1e-9 * kPressure) << "t = " << t;
+  }
+  // Without NSET the request is an error at the card.
+  deck.replace(deck.find(", NSET=TOPN\nU"), 11, "");
+  try {
+    static_cast<void>(read_inp_string_with_notes(deck, "t.inp"));
+    ADD_FAILURE() << "*NODE OUTPUT history without NSET";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("needs NSET="), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(dir);
+}
+
 // With thermal properties each state carries the steady temperature of its loads: the lower
 // cube held at 100 at its base (nodes 1-4), the upper one at 0 on its top (15-18); the contact
 // does not conduct in static steps, so each cube takes its held temperature (and the deck needs

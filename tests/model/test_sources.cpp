@@ -37,6 +37,17 @@ TEST(Sources, AnUnknownSettingOrConceptIsAProgrammingError) {
   EXPECT_THROW(static_cast<void>(s.words("dt_min")), std::logic_error);
 }
 
+TEST(Sources, EachEntityListsItsSettingsOnce) {
+  // A tie's own settings are those its search can refuse; the time control's are its steps.
+  EXPECT_TRUE(Sources::has_setting(SourceEntity::Tie, "edge_angle"));
+  EXPECT_TRUE(Sources::has_setting(SourceEntity::Contact, "edge_angle"));
+  EXPECT_FALSE(Sources::has_setting(SourceEntity::Contact, "exact"));
+  EXPECT_FALSE(Sources::has_setting(SourceEntity::Tie, "penalty"));
+  EXPECT_EQ(Sources::settings(SourceEntity::Time).size(), 2u);
+  for (const std::string_view name : Sources::settings(SourceEntity::Tie))
+    EXPECT_TRUE(Sources::has_setting(SourceEntity::Tie, name)) << name;
+}
+
 TEST(Sources, TheInputsWordsReplaceTheModels) {
   Sources s;
   EXPECT_EQ(s.words("min_step"), "the minimum time step");

@@ -4,7 +4,8 @@
 // its pid) for as long as it writes, and a second run stops with an error naming the first.
 // Once it owns the directory, the run removes the files a previous run wrote there, and only
 // those: results.pvd, states/state_NNNN.vtu, energy.csv, parts.csv, contact.csv,
-// increments.csv, results.dat, summary.json and restart.abr. Other files in the directory are left alone.
+// increments.csv, nodes.csv, results.dat, summary.json and restart.abr. Other files in the
+// directory are left alone.
 #include <filesystem>
 
 namespace abut {

@@ -17,6 +17,7 @@
 #include "abut/material/material.hpp"
 #include "abut/mesh/geometry.hpp"
 #include "abut/mesh/mesh.hpp"
+#include "abut/model/entity.hpp"
 #include "abut/model/model_static.hpp"
 #include "abut/model/model_thermal.hpp"
 #include "abut/model/output.hpp"
@@ -71,24 +72,6 @@ struct NodeSet {
 struct PartSet {
   std::int64_t id = 0;
   std::vector<std::int64_t> parts;  // part ids
-};
-
-// An `entype, enid` pair of the deck.
-enum class EntityType {
-  Node,
-  NodeSet,
-  Part,
-  PartSet,
-  All,
-  GeometryRegion,
-  FaceSet,
-  Tool
-};  // GeometryRegion: entype G; FaceSet: element faces (Abaqus *SURFACE, model_static.hpp);
-    // Tool: an analytic rigid tool of *CONTACT_TOOL (entype TOOL), surface 2 of a *CONTACT
-struct EntityRef {
-  EntityType type = EntityType::All;
-  std::int64_t id = 0;
-  SourceLocation where;
 };
 
 // One `pmeth, direc, cid, sf, fid` line of *BC_MOTION.
@@ -396,6 +379,8 @@ struct Model {
   // Node indices of an entity (sorted, unique); InputError at the entity's location if the
   // id does not exist.
   std::vector<std::int32_t> nodes_of(const EntityRef& entity) const;
+  // The nodes of every output.history_nodes entity (sorted, unique); InputError as nodes_of.
+  std::vector<std::int32_t> history_nodes() const;
   // Part ids of an entity of type Part, PartSet or All.
   std::vector<std::int64_t> parts_of(const EntityRef& entity) const;
   // The face set of an entity of type FaceSet; InputError at its location if it does not exist.

@@ -1,14 +1,16 @@
 #pragma once
 // What a run writes and how often, whatever the input language asked for it (IMPETUS *OUTPUT and
-// abut's *OUTPUT_FIELDS; Abaqus/CalculiX *NODE FILE, *EL FILE, *OUTPUT and their FREQUENCY). The
-// defaults are abut's outputs: every field the run has, states at 1/100 of an explicit run and at
-// every converged static increment, histories at 1/1000 of an explicit run.
+// abut's *OUTPUT_FIELDS and *OUTPUT_NODE_HISTORY; Abaqus/CalculiX *NODE FILE, *EL FILE, *OUTPUT
+// and their FREQUENCY). The defaults are abut's outputs: every field the run has, states at 1/100
+// of an explicit run and at every converged static increment, histories at 1/1000 of an explicit
+// run, no node histories.
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "abut/core/error.hpp"
+#include "abut/model/entity.hpp"
 
 namespace abut {
 
@@ -33,6 +35,10 @@ struct OutputRequests {
   // The fields of the states (kStateFields); none chosen: every field the run has.
   std::optional<std::vector<std::string>> state_fields;
   SourceLocation fields_where;  // where the input chose the fields (for its notes and errors)
+  // The nodes whose motion nodes.csv follows at every history output (explicit) or converged
+  // increment (static), in the input's order; none: no nodes.csv. Model::history_nodes resolves
+  // them to a sorted node list.
+  std::vector<EntityRef> history_nodes;
 
   // Whether the states carry `field`.
   bool writes(std::string_view field) const;

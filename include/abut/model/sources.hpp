@@ -6,6 +6,7 @@
 // solver knowing any deck field (docs/architecture.md, "The model layer").
 #include <cstdint>
 #include <map>
+#include <span>
 #include <string>
 #include <string_view>
 #include <tuple>
@@ -33,6 +34,10 @@ class Sources {
   // Where the input gave the setting; `otherwise` (usually the entity's own card) if it did not.
   SourceLocation of(SourceEntity entity, std::int64_t id, std::string_view setting,
                     const SourceLocation& otherwise = {}) const;
+
+  // The settings' names an entity has (sources.cpp lists them once), and whether `setting` is one.
+  static std::span<const std::string_view> settings(SourceEntity entity);
+  static bool has_setting(SourceEntity entity, std::string_view setting);
 
   // The input's words for a concept that a message asks for (the keys of the model's words in
   // sources.cpp), such as "min_step": "dt_min of *TIME" in the .k dialect. A reader names the

@@ -287,6 +287,19 @@ std::vector<std::int32_t> solids_of(const Reader& r, const Item& item, const std
   return {static_cast<std::int32_t>(it->second)};
 }
 
+// *NODE OUTPUT, NSET= after *OUTPUT, HISTORY: a node set of the model per request, whose nodes
+// nodes.csv follows.
+void make_history_nodes(Reader& r) {
+  for (const auto& [name, at] : r.history_node_sets) {
+    std::vector<std::int32_t> nodes = node_set_members(r, name, at, "*NODE OUTPUT");
+    sort_unique(nodes);
+    const auto id = static_cast<std::int64_t>(r.model.node_sets.size()) + 1;
+    r.model.node_sets.push_back({id, std::move(nodes)});
+    r.model.output.history_nodes.push_back(
+        EntityRef{EntityType::NodeSet, id, r.where(at, "*NODE OUTPUT", "NSET")});
+  }
+}
+
 void finish_mesh(Reader& r) {
   if (r.elements.empty()) {  // at the end of the input, like a missing *STEP
     throw InputError(r.where(r.last_card.line > 0 ? r.last_card : Loc{0, 1}, ""),
@@ -298,6 +311,7 @@ void finish_mesh(Reader& r) {
   make_materials(r);
   make_solids(r, assign_parts(r));
   make_surfaces(r);
+  make_history_nodes(r);
 }
 
 // Nodes that no element uses (CalculiX decks keep stray ones): the static solver gives them no

@@ -93,7 +93,23 @@ constexpr std::string_view kNoEffect = "no effect on abut's states: ignored";
 
 }  // namespace
 
+// Abaqus history output of a node set (after *OUTPUT, HISTORY): its nodes are followed in
+// nodes.csv (position, displacement, nodal force), whatever keys the card lists.
+void read_node_history(Reader& r, const Card& c) {
+  check_parameters(r, c, {{"NSET"}, {"VARIABLE", Kind::Ignored, kNoEffect}});
+  const auto set = parameter_value(c, "NSET");
+  if (!set)
+    throw InputError(r.where(c),
+                     "*NODE OUTPUT after *OUTPUT, HISTORY needs NSET=: the node set whose "
+                     "histories nodes.csv holds");
+  r.history_node_sets.emplace_back(*set, r.loc(c));
+  r.note(c, "*NODE OUTPUT, NSET=" + *set +
+                " (history): nodes.csv holds its nodes' position, displacement and nodal force "
+                "at every increment");
+}
+
 void read_node_file(Reader& r, const Card& c) {
+  if (r.history_output && c.key == "*NODEOUTPUT") return read_node_history(r, c);
   check_parameters(r, c,
                    {{"FREQUENCY"},
                     {"NSET", Kind::Ignored, kWholeMesh},
@@ -136,8 +152,9 @@ void read_contact_file(Reader& r, const Card& c) {
   read_keys(r, c, Results::Contact);
 }
 
-// Abaqus *OUTPUT, FIELD (or HISTORY): FREQUENCY applies to the states; a history request is noted
-// (abut writes its histories, energy.csv and contact.csv, at every increment).
+// Abaqus *OUTPUT, FIELD (or HISTORY): FREQUENCY applies to the states; after HISTORY, *NODE OUTPUT
+// asks for the histories of its node set (nodes.csv), and the other requests are noted (abut
+// writes its histories, energy.csv and contact.csv, at every increment).
 void read_output(Reader& r, const Card& c) {
   check_parameters(r, c,
                    {{"FIELD", Kind::Flag},
@@ -148,10 +165,11 @@ void read_output(Reader& r, const Card& c) {
                     {"NUMBER INTERVAL", Kind::Unsupported, "use FREQUENCY"},
                     {"TIME INTERVAL", Kind::Unsupported, "use FREQUENCY"},
                     {"TIME POINTS", Kind::Unsupported, "use FREQUENCY"}});
-  if (find_parameter(c, "HISTORY")) {
+  r.history_output = find_parameter(c, "HISTORY") != nullptr;
+  if (r.history_output) {
     r.note(c,
            "*OUTPUT, HISTORY: abut writes its histories (energy.csv, contact.csv, "
-           "increments.csv) at every increment");
+           "increments.csv, and nodes.csv for a *NODE OUTPUT, NSET=) at every increment");
     return;
   }
   read_frequency(r, c);

@@ -238,6 +238,10 @@ class Reader {
   std::optional<std::size_t> interaction;  // the *SURFACE INTERACTION block being read
   bool change_friction = false;            // a *CHANGE FRICTION waits for its *FRICTION
   bool change_behaviour = false;  // a *CHANGE SURFACE BEHAVIOR waits for its *SURFACE BEHAVIOR
+  // Abaqus *OUTPUT, HISTORY is in force: *NODE OUTPUT asks for histories of its NSET, which
+  // finish() turns into OutputRequests::history_nodes (name and place of each).
+  bool history_output = false;
+  std::vector<std::pair<std::string, Loc>> history_node_sets;
   StepRecord& step() { return steps.back(); }
 
   // The set of a name, created empty when new (for NSET=, ELSET=, *NSET, *ELSET).
