@@ -19,6 +19,7 @@
 #include <fstream>
 #include <optional>
 #include <ostream>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -136,11 +137,35 @@ double stabilization_work(const StaticSolver& solver) {
   return w;
 }
 
+// The work of the loads and reactions on the model (energy.csv's external_work): the trapezoidal
+// rule over each converged increment, W += (f_prev + f) . (u - u_prev) / 2, f the nodal force
+// (loads and reactions, which balance the elements' and contacts' forces). Exact where f is linear
+// in u over the increment (linear elastic steps); elsewhere second order in the increment.
+class ExternalWork {
+ public:
+  explicit ExternalWork(const StaticSolver& solver)
+      : u_(solver.displacement().begin(), solver.displacement().end()),
+        f_(solver.nodal_force().begin(), solver.nodal_force().end()) {}
+  double add(std::span<const double> u, std::span<const double> f) {
+    for (std::size_t i = 0; i < u.size(); ++i) {
+      work_ += 0.5 * (f_[i] + f[i]) * (u[i] - u_[i]);
+      u_[i] = u[i];
+      f_[i] = f[i];
+    }
+    return work_;
+  }
+
+ private:
+  std::vector<double> u_, f_;
+  double work_ = 0.0;
+};
+
 // energy.csv of a static run: the elements' energy (elastic, hourglass and plastic work), the
-// contact springs' energy and the friction work; with contact stabilization its work; with heat,
-// the state's heat balance.
+// contact springs' energy and the friction work; with contact stabilization its work; the work of
+// the loads and reactions and the balance, (energies - external work) / the largest of them so
+// far (`scale`, as explicit runs do); with heat, the state's heat balance.
 void write_energy_row(CsvHistory& csv, const StaticSolver& solver, const StaticHeat& heat,
-                      bool stabilized, double time) {
+                      bool stabilized, double external_work, double& scale, double time) {
   double internal = 0.0, contact = 0.0, friction = 0.0;
   for (const double e : solver.element_energy()) internal += e;
   for (const StaticContact& c : solver.contacts()) {
@@ -148,7 +173,15 @@ void write_energy_row(CsvHistory& csv, const StaticSolver& solver, const StaticH
     friction += c.friction_work();
   }
   std::vector<CsvHistory::Value> row{internal, contact, friction};
-  if (stabilized) row.emplace_back(stabilization_work(solver));
+  double books = internal + contact + friction;
+  if (stabilized) {
+    const double stabilization = stabilization_work(solver);
+    row.emplace_back(stabilization);
+    books += stabilization;
+  }
+  scale = std::max({scale, std::abs(books), std::abs(external_work)});
+  row.emplace_back(external_work);
+  row.emplace_back(scale > 0.0 ? (books - external_work) / scale : 0.0);
   if (heat.active()) static_thermal_output::append_energy_values(heat, row);
   csv.write_row(time, row);
 }
@@ -187,10 +220,13 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
   const bool stabilized = std::any_of(model.contacts.begin(), model.contacts.end(),
                                       [](const ContactSpec& c) { return c.stabilization; });
   if (stabilized) energy_columns.emplace_back("stabilization");
+  energy_columns.insert(energy_columns.end(), {"external_work", "balance_error"});
   if (heat.active())
     for (std::string& c : static_thermal_output::energy_columns())
       energy_columns.push_back(std::move(c));
   CsvHistory energy(dir / "energy.csv", energy_columns);
+  ExternalWork external_work(solver);
+  double energy_scale = 0.0;
   std::optional<CsvHistory> contact;
   if (!model.contacts.empty()) {
     std::vector<std::string> columns = contact_history_columns();
@@ -215,7 +251,8 @@ RunReport run_static_analysis(const Model& model, const RunOptions& options, std
       // Every n-th increment of a step (the input's output frequency), and each step's last.
       if (inc.step_end || inc.increment % model.output.state_frequency == 0)
         write_state(dir, series, model, solver, inc.total_time, heat);
-      write_energy_row(energy, solver, heat, stabilized, inc.total_time);
+      const double work = external_work.add(solver.displacement(), solver.nodal_force());
+      write_energy_row(energy, solver, heat, stabilized, work, energy_scale, inc.total_time);
       nodes.write(inc.total_time, solver.displacement(), solver.nodal_force());
       if (contact) write_contact_rows(*contact, model, solver, heat, contact_heat, inc.total_time);
       print_static_results(printed, model, model.static_steps[inc.step], solver, inc);

@@ -103,12 +103,16 @@ TEST(RunStatic, EnergyAndContactHistories) {
   EXPECT_EQ(contact[1][10], 4.0);                           // 2 x 2 Gauss points
 
   const auto energy = csv_rows(dir / "energy.csv", header);
-  EXPECT_EQ(header, "time,internal,contact,friction");
+  EXPECT_EQ(header, "time,internal,contact,friction,external_work,balance_error");
   ASSERT_EQ(energy.size(), 2u);
   // The top face's downward displacement from the contact penetration and the two cubes.
   const double u_top = kPressure / 1000.0 * 2.0 + contact[1][9];
   EXPECT_NEAR(energy[1][1] + energy[1][2], 0.5 * kPressure * u_top, 1e-9);
   EXPECT_EQ(energy[1][3], 0.0);
+  // The pressure, ramped with the top's displacement, works 1/2 p A u_top (A = 1): the books
+  // balance at every increment (linear steps: the trapezoidal rule is exact).
+  EXPECT_NEAR(energy[1][4], 0.5 * kPressure * u_top, 1e-9);
+  for (const std::vector<double>& row : energy) EXPECT_NEAR(row[5], 0.0, 1e-8);
   std::filesystem::remove_all(dir);
 }
 

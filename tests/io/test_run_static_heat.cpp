@@ -178,11 +178,11 @@ G, 2, 0, 20.0
 )",
                         "abut_static_heat_held");
   const double q = kK * kArea * 80.0 / kLength;  // 4 W
-  EXPECT_EQ(
-      w.energy.columns,
-      (std::vector<std::string>{"time", "internal", "contact", "friction", "heat_flow_boundary_in",
-                                "heat_flow_boundary_out", "heat_flow_prescribed_in",
-                                "heat_flow_prescribed_out", "heat_flow_balance_error"}));
+  EXPECT_EQ(w.energy.columns,
+            (std::vector<std::string>{"time", "internal", "contact", "friction", "external_work",
+                                      "balance_error", "heat_flow_boundary_in",
+                                      "heat_flow_boundary_out", "heat_flow_prescribed_in",
+                                      "heat_flow_prescribed_out", "heat_flow_balance_error"}));
   ASSERT_EQ(w.energy.rows.size(), 1u);
   expect_balance(w, 0, 0.0, 0.0, q, -q, "held ends");
   // Conduction draws Q out of the hot end's nodes and brings it to the cold end's.
