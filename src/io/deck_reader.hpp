@@ -344,7 +344,7 @@ class DeckReader {
   std::vector<EntityRef> entity_references;  // entities that must exist
   std::vector<PendingContactKeyword> contact_keywords;
   std::optional<SourceLocation> time_where, units_where, title_where, output_where,
-      bulk_viscosity_where, p_order_form_where;
+      output_fields_where, bulk_viscosity_where, p_order_form_where;
   std::size_t end_line = 0;  // the last line read of the main deck, for what it lacks
 
  private:

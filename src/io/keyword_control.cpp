@@ -130,9 +130,9 @@ void read_output(DeckReader& d, Block& b) {
 // carry every field the run has; part_id is always written.
 void read_output_fields(DeckReader& d, Block& b) {
   OutputRequests& o = d.model.output;
-  if (o.state_fields)
+  if (d.output_fields_where)
     throw InputError(b.where(), "*OUTPUT_FIELDS is given twice (first at line " +
-                                    std::to_string(o.fields_where.line) +
+                                    std::to_string(d.output_fields_where->line) +
                                     "): list every field in one");
   std::vector<std::string> names;
   for (int i = 1; i <= 8; ++i) names.push_back("field_" + std::to_string(i));
@@ -151,7 +151,7 @@ void read_output_fields(DeckReader& d, Block& b) {
         o.state_fields->push_back(field);
     }
   }
-  o.fields_where = b.where();
+  d.output_fields_where = b.where();
 }
 
 // *OUTPUT_NODE_HISTORY (abut's own; IMPETUS follows chosen nodes in node.out with *OUTPUT_NODE,

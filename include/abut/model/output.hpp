@@ -9,7 +9,6 @@
 #include <string_view>
 #include <vector>
 
-#include "abut/core/error.hpp"
 #include "abut/model/entity.hpp"
 
 namespace abut {
@@ -34,7 +33,6 @@ struct OutputRequests {
   int state_frequency = 1;        // static runs: every n-th increment of a step, and its last
   // The fields of the states (kStateFields); none chosen: every field the run has.
   std::optional<std::vector<std::string>> state_fields;
-  SourceLocation fields_where;  // where the input chose the fields (for its notes and errors)
   // The nodes whose motion nodes.csv follows at every history output (explicit) or converged
   // increment (static), in the input's order; none: no nodes.csv. Model::history_nodes resolves
   // them to a sorted node list.

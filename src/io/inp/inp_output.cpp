@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "inp_reader.hpp"
 #include "io/deck_text.hpp"
@@ -57,10 +58,7 @@ void read_frequency(Reader& r, const Card& c) {
 // The keys of the card's data lines into the state fields; keys abut's states lack are noted.
 void read_keys(Reader& r, const Card& c, Results family) {
   OutputRequests& o = r.model.output;
-  if (!o.state_fields) {
-    o.state_fields.emplace();
-    o.fields_where = r.where(c);
-  }
+  if (!o.state_fields) o.state_fields.emplace();
   std::string left_out;
   for (const DataLine& l : c.data) {
     const Fields f(r, c, l);
@@ -91,6 +89,21 @@ constexpr std::string_view kWholeMesh =
     "the states hold every node and element (select parts in ParaView): ignored";
 constexpr std::string_view kNoEffect = "no effect on abut's states: ignored";
 
+// The rules of a *NODE FILE or *EL FILE card: its own, then the parameters both take.
+std::vector<ParameterRule> file_card_rules(std::initializer_list<ParameterRule> own) {
+  std::vector<ParameterRule> rules{{"FREQUENCY"}};
+  rules.insert(rules.end(), own);
+  rules.insert(rules.end(),
+               {{"GLOBAL", Kind::Ignored, kNoEffect},
+                {"OUTPUT", Kind::Ignored, kNoEffect},
+                {"LAST ITERATIONS", Kind::Ignored, kNoEffect},
+                {"CONTACT ELEMENTS", Kind::Ignored, kNoEffect},
+                {"TIME POINTS", Kind::Unsupported, "use FREQUENCY"},
+                {"FREQUENCYF", Kind::Ignored, "applies to 3D fluid calculations: ignored"},
+                {"VARIABLE", Kind::Ignored, kNoEffect}});
+  return rules;
+}
+
 }  // namespace
 
 // Abaqus history output of a node set (after *OUTPUT, HISTORY): its nodes are followed in
@@ -110,34 +123,17 @@ void read_node_history(Reader& r, const Card& c) {
 
 void read_node_file(Reader& r, const Card& c) {
   if (r.history_output && c.key == "*NODEOUTPUT") return read_node_history(r, c);
-  check_parameters(r, c,
-                   {{"FREQUENCY"},
-                    {"NSET", Kind::Ignored, kWholeMesh},
-                    {"GLOBAL", Kind::Ignored, kNoEffect},
-                    {"OUTPUT", Kind::Ignored, kNoEffect},
-                    {"LAST ITERATIONS", Kind::Ignored, kNoEffect},
-                    {"CONTACT ELEMENTS", Kind::Ignored, kNoEffect},
-                    {"TIME POINTS", Kind::Unsupported, "use FREQUENCY"},
-                    {"FREQUENCYF", Kind::Ignored, "applies to 3D fluid calculations: ignored"},
-                    {"VARIABLE", Kind::Ignored, kNoEffect}});
+  check_parameters(r, c, file_card_rules({{"NSET", Kind::Ignored, kWholeMesh}}));
   read_frequency(r, c);
   read_keys(r, c, Results::Node);
 }
 
 void read_el_file(Reader& r, const Card& c) {
   check_parameters(r, c,
-                   {{"FREQUENCY"},
-                    {"ELSET", Kind::Ignored, kWholeMesh},
-                    {"GLOBAL", Kind::Ignored, kNoEffect},
-                    {"OUTPUT", Kind::Ignored, kNoEffect},
-                    {"SECTION FORCES", Kind::Ignored, kNoEffect},
-                    {"LAST ITERATIONS", Kind::Ignored, kNoEffect},
-                    {"CONTACT ELEMENTS", Kind::Ignored, kNoEffect},
-                    {"POSITION", Kind::Ignored, kNoEffect},
-                    {"DIRECTIONS", Kind::Ignored, kNoEffect},
-                    {"TIME POINTS", Kind::Unsupported, "use FREQUENCY"},
-                    {"FREQUENCYF", Kind::Ignored, "applies to 3D fluid calculations: ignored"},
-                    {"VARIABLE", Kind::Ignored, kNoEffect}});
+                   file_card_rules({{"ELSET", Kind::Ignored, kWholeMesh},
+                                    {"SECTION FORCES", Kind::Ignored, kNoEffect},
+                                    {"POSITION", Kind::Ignored, kNoEffect},
+                                    {"DIRECTIONS", Kind::Ignored, kNoEffect}}));
   read_frequency(r, c);
   read_keys(r, c, Results::Element);
 }

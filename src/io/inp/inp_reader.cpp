@@ -138,7 +138,7 @@ std::string required_parameter(const Reader& r, const Card& c, std::string_view 
   return p->value;
 }
 
-void check_parameters(Reader& r, const Card& c, std::initializer_list<ParameterRule> rules) {
+void check_parameters(Reader& r, const Card& c, std::span<const ParameterRule> rules) {
   using Kind = ParameterRule::Kind;
   for (const Parameter& p : c.parameters) {
     const ParameterRule* rule = nullptr;

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -268,7 +269,10 @@ struct ParameterRule {
   Kind kind = Kind::Value;
   std::string_view why = {};  // Unsupported: the reason; Ignored: the note
 };
-void check_parameters(Reader& r, const Card& c, std::initializer_list<ParameterRule> rules);
+void check_parameters(Reader& r, const Card& c, std::span<const ParameterRule> rules);
+inline void check_parameters(Reader& r, const Card& c, std::initializer_list<ParameterRule> rules) {
+  check_parameters(r, c, std::span<const ParameterRule>(rules.begin(), rules.size()));
+}
 // Parameters by name, in any case and with or without blanks ("SMALL SLIDING").
 const Parameter* find_parameter(const Card& c, std::string_view name);
 std::optional<std::string> parameter_value(const Card& c, std::string_view key);
