@@ -104,8 +104,6 @@ std::vector<ParameterRule> file_card_rules(std::initializer_list<ParameterRule> 
   return rules;
 }
 
-}  // namespace
-
 // Abaqus history output of a node set (after *OUTPUT, HISTORY): its nodes are followed in
 // nodes.csv (position, displacement, nodal force), whatever keys the card lists.
 void read_node_history(Reader& r, const Card& c) {
@@ -120,6 +118,8 @@ void read_node_history(Reader& r, const Card& c) {
                 " (history): nodes.csv holds its nodes' position, displacement and nodal force "
                 "at every increment");
 }
+
+}  // namespace
 
 void read_node_file(Reader& r, const Card& c) {
   if (r.history_output && c.key == "*NODEOUTPUT") return read_node_history(r, c);

@@ -151,6 +151,7 @@ void read_step(Reader& r, const Card& c) {
   s.displacement_tolerance = r.displacement_tolerance;
   r.steps.push_back(std::move(s));
   r.in_step = true;
+  r.history_output = false;  // a step's output requests start afresh (Abaqus)
 }
 
 void read_static(Reader& r, const Card& c) {
