@@ -2,9 +2,10 @@
 
 A run writes into its output directory (docs/python.md, "Results and plots"):
 
-- time histories, one CSV file each: ``energy.csv``, ``parts.csv``, ``contact.csv`` and, for a
-  static run, ``increments.csv``; a header line of column names, then one row per output time
-  (per part or per contact in ``parts.csv`` and ``contact.csv``), ``time`` first;
+- time histories, one CSV file each: ``energy.csv``, ``parts.csv``, ``contact.csv``, for a
+  static run ``increments.csv``, and ``nodes.csv`` when the deck follows nodes; a header line of
+  column names, then one row per output time (per part, contact or node in ``parts.csv``,
+  ``contact.csv`` and ``nodes.csv``), ``time`` first;
 - ``results.pvd``, the ParaView list of the states, and ``states/state_NNNN.vtu``, one VTK XML
   UnstructuredGrid per state;
 - ``summary.json``.
@@ -282,8 +283,8 @@ class Results:
         return sorted(p.stem for p in self.path.glob("*.csv") if p.is_file())
 
     def history(self, name):
-        """The history ``name`` (``"energy"``, ``"parts"``, ``"contact"``, ``"increments"``)
-        as a ``History``; FileNotFoundError if the run did not write it."""
+        """The history ``name`` (``"energy"``, ``"parts"``, ``"contact"``, ``"increments"``,
+        ``"nodes"``) as a ``History``; FileNotFoundError if the run did not write it."""
         path = self.path / f"{name}.csv"
         if not path.is_file():
             raise FileNotFoundError(f"history file {path} not found; {self.path} has "
