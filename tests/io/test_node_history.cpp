@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -18,42 +17,13 @@
 namespace abut {
 namespace {
 
+using testing::Csv;
 using testing::error_of;
 using testing::file_text;
 using testing::fresh_dir;
 using testing::kBoxModel;
 using testing::model_of;
-
-struct Csv {
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> rows;
-  std::size_t column(const std::string& name) const {
-    for (std::size_t i = 0; i < header.size(); ++i)
-      if (header[i] == name) return i;
-    ADD_FAILURE() << "no column " << name;
-    return 0;
-  }
-};
-
-Csv read_csv(const std::filesystem::path& path) {
-  Csv csv;
-  std::istringstream in(file_text(path));
-  std::string line;
-  const auto cells = [](const std::string& text) {
-    std::vector<std::string> out;
-    std::istringstream s(text);
-    for (std::string cell; std::getline(s, cell, ',');) out.push_back(cell);
-    return out;
-  };
-  std::getline(in, line);
-  csv.header = cells(line);
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    for (const std::string& c : cells(line)) row.push_back(std::stod(c));
-    csv.rows.push_back(row);
-  }
-  return csv;
-}
+using testing::read_csv;
 
 // A free cube moving at v = (3, -2, 1) m/s: every node follows x = X + v t.
 TEST(NodeHistory, ExplicitRunFollowsTheChosenNodes) {
@@ -82,9 +52,9 @@ P, 1
   ASSERT_TRUE(run_simulation(model, RunOptions{dir, 1, false}, log).stable);
   const Csv nodes = read_csv(dir / "nodes.csv");
   const Csv energy = read_csv(dir / "energy.csv");
-  EXPECT_EQ(nodes.header, (std::vector<std::string>{"time", "node", "x", "y", "z", "ux", "uy", "uz",
-                                                    "vx", "vy", "vz", "contact_force_x",
-                                                    "contact_force_y", "contact_force_z"}));
+  EXPECT_EQ(nodes.columns, (std::vector<std::string>{"time", "node", "x", "y", "z", "ux", "uy",
+                                                     "uz", "vx", "vy", "vz", "contact_force_x",
+                                                     "contact_force_y", "contact_force_z"}));
   // Node 1 asked twice is followed once: the cube's 8 nodes at every history output.
   ASSERT_EQ(nodes.rows.size(), 8 * energy.rows.size());
   ASSERT_GE(energy.rows.size(), 11u);
@@ -204,8 +174,8 @@ G, 4
   std::ostringstream log;
   ASSERT_TRUE(run_static_analysis(model, RunOptions{dir, 1, false}, log).stable);
   const Csv nodes = read_csv(dir / "nodes.csv");
-  EXPECT_EQ(nodes.header, (std::vector<std::string>{"time", "node", "x", "y", "z", "ux", "uy", "uz",
-                                                    "force_x", "force_y", "force_z"}));
+  EXPECT_EQ(nodes.columns, (std::vector<std::string>{"time", "node", "x", "y", "z", "ux", "uy",
+                                                     "uz", "force_x", "force_y", "force_z"}));
   // The top face has (2 + 1) x (3 + 1) nodes; states at t = 0, 0.5 and 1.
   constexpr std::size_t kTop = 12;
   ASSERT_EQ(nodes.rows.size(), 3 * kTop);

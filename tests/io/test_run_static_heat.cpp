@@ -37,10 +37,12 @@
 namespace abut {
 namespace {
 
+using testing::Csv;
 using testing::data_array;
 using testing::file_text;
 using ::testing::HasSubstr;
 using testing::model_of;
+using testing::read_csv;
 
 constexpr double kLength = 0.1, kArea = 1.0e-4, kK = 50.0;
 
@@ -67,34 +69,6 @@ G, 1, XYZ
 *BC_TEMPERATURE
 G, 1, 0, 100.0
 )";
-
-// A CSV file as its header and rows of numbers.
-struct Csv {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> rows;
-  // The value of column `name` in row `row`.
-  double at(std::size_t row, const std::string& name) const {
-    for (std::size_t c = 0; c < columns.size(); ++c)
-      if (columns[c] == name) return rows.at(row).at(c);
-    throw std::runtime_error("no column " + name);
-  }
-};
-
-Csv read_csv(const std::filesystem::path& path) {
-  std::istringstream in(file_text(path));
-  Csv csv;
-  std::string line;
-  std::getline(in, line);
-  std::stringstream header(line);
-  for (std::string f; std::getline(header, f, ',');) csv.columns.push_back(f);
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    std::stringstream fields(line);
-    for (std::string f; std::getline(fields, f, ',');) row.push_back(std::stod(f));
-    csv.rows.push_back(row);
-  }
-  return csv;
-}
 
 // The number after "key": in a JSON text (the first such key).
 double json_number(const std::string& json, const std::string& key) {

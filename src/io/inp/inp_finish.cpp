@@ -287,16 +287,13 @@ std::vector<std::int32_t> solids_of(const Reader& r, const Item& item, const std
   return {static_cast<std::int32_t>(it->second)};
 }
 
-// *NODE OUTPUT, NSET= after *OUTPUT, HISTORY: a node set of the model per request, whose nodes
-// nodes.csv follows.
+// *NODE OUTPUT, NSET= after *OUTPUT, HISTORY: nodes.csv follows the model's node set that
+// resolve_sets made of the named set.
 void make_history_nodes(Reader& r) {
   for (const auto& [name, at] : r.history_node_sets) {
-    std::vector<std::int32_t> nodes = node_set_members(r, name, at, "*NODE OUTPUT");
-    sort_unique(nodes);
-    const auto id = static_cast<std::int64_t>(r.model.node_sets.size()) + 1;
-    r.model.node_sets.push_back({id, std::move(nodes)});
+    const IdSet& set = find_set(r, r.node_sets, r.node_set_names, name, at, "*NODE OUTPUT", "node");
     r.model.output.history_nodes.push_back(
-        EntityRef{EntityType::NodeSet, id, r.where(at, "*NODE OUTPUT", "NSET")});
+        EntityRef{EntityType::NodeSet, set.model_id, r.where(at, "*NODE OUTPUT", "NSET")});
   }
 }
 
